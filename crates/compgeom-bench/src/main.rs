@@ -1,0 +1,2 @@
+//! Benchmarks against peer libraries.
+fn main() {}

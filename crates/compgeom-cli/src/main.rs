@@ -1,0 +1,2 @@
+//! The `compgeom` command-line tool.
+fn main() {}

@@ -1,0 +1,39 @@
+//! # compgeom
+//!
+//! Exact computational geometry: the algorithms, data structures and applications of
+//! de Berg, Cheong, van Kreveld & Overmars, *Computational Geometry: Algorithms and
+//! Applications* (3rd ed., Springer 2008), with every geometric decision made exactly.
+//!
+//! ## Layers
+//!
+//! - [`kernel`]: points, vectors, segments, lines, boxes, polygons; exact predicates
+//!   ([`kernel::orient2d`], [`kernel::incircle`], [`kernel::orient3d`], [`kernel::insphere`]);
+//!   exact comparisons of constructed segment crossings ([`kernel::Crossing`]).
+//! - Algorithms, one module per problem of the book (see the index below).
+//! - [`io`] (CSV, WKT, GeoJSON, OFF) and [`render`] (SVG pictures) at the edge.
+//!
+//! ## Index, in book order
+//!
+//! | chapter | problem | entry points |
+//! |---|---|---|
+//! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::verify_convex_hull`] |
+//!
+//! ## Exactness
+//!
+//! Every branch taken on geometry is decided exactly, for input points and for points an
+//! algorithm constructs. Coordinates are `f64`; non-finite input is rejected with an
+//! [`Error`] that says where it was found.
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+#![deny(rustdoc::broken_intra_doc_links)]
+
+mod error;
+pub mod hull;
+pub mod io;
+pub mod kernel;
+pub mod render;
+
+pub use error::{Error, Location, Result};
+pub use kernel::{
+    Bbox2, Line2, MultiPolygon, Orientation, Point2, Point3, Polygon, Segment2, Vector2, Vector3,
+};
