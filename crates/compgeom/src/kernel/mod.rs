@@ -19,4 +19,6 @@ pub use predicates::{
     compare_xy, compare_xyz, incircle, insphere, orient2d, orient3d, CircleSide, Orientation,
     PlaneSide, SphereSide,
 };
-pub use types::{Bbox2, Line2, MultiPolygon, Point2, Point3, Polygon, Segment2, Vector2, Vector3};
+pub use types::{
+    ensure_finite, Bbox2, Line2, MultiPolygon, Point2, Point3, Polygon, Segment2, Vector2, Vector3,
+};

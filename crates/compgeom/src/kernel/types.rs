@@ -229,3 +229,19 @@ impl Polygon {
 /// A set of polygons.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct MultiPolygon(pub Vec<Polygon>);
+
+/// `Err(NonFinite)` naming the first point with a NaN or infinite coordinate, as
+/// "`what` i" (0-based index), e.g. "point 17".
+pub fn ensure_finite(points: &[Point2], what: &str) -> crate::Result<()> {
+    match points.iter().position(|p| !p.is_finite()) {
+        None => Ok(()),
+        Some(i) => {
+            let p = points[i];
+            let value = if p.x.is_finite() { p.y } else { p.x };
+            Err(crate::Error::NonFinite {
+                what: format!("{what} {i}"),
+                value,
+            })
+        }
+    }
+}
