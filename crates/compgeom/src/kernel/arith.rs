@@ -1,8 +1,8 @@
 //! The small arithmetic interface shared by the floating-point filter
-//! ([`super::filter::Interval`]) and the exact fallback ([`super::exact::Dyadic`]).
+//! ([`super::filter::Bounded`]) and the exact fallback ([`super::exact::Dyadic`]).
 //!
 //! Every sign decision on constructed points is written once, generically over
-//! [`Arith`], and evaluated first with intervals (fast, may be undecided) and then,
+//! [`Arith`], and evaluated first in `f64` with an error bound (fast, may be undecided) and then,
 //! only if needed, with exact dyadic numbers (always decided).
 
 use std::cmp::Ordering;

@@ -10,8 +10,9 @@
 //! (degree 3 for crossing vs point, 4 for an orientation with two input points, 5 for
 //! crossing vs crossing, up to 8 for an orientation of three crossings).
 //!
-//! Each sign is first evaluated with interval arithmetic ([`super::filter`]); only when
-//! the interval contains zero is it evaluated again exactly ([`super::exact`]). The
+//! Each sign is first evaluated with a floating-point filter with a rigorous running error bound
+//! ([`super::filter`]); only when
+//! the bound does not exclude zero is it evaluated again exactly ([`super::exact`]). The
 //! number of exact evaluations is counted (`crossing_fallbacks()`, hidden from the docs).
 //!
 //! All coordinates are assumed finite. With NaN or infinite coordinates nothing panics,
@@ -21,7 +22,7 @@
 
 use super::arith::{mul_sign, Arith};
 use super::exact::{nearest_f64, Dyadic};
-use super::filter::{count, Interval, CROSSING_FALLBACKS};
+use super::filter::{count, Bounded, CROSSING_FALLBACKS};
 use super::predicates::{compare_xy as compare_input_xy, orient2d, Orientation};
 use super::types::{Point2, Segment2};
 use num_rational::BigRational;
@@ -158,16 +159,32 @@ enum Axis {
     Y,
 }
 
+/// One homogeneous coordinate `(u, w)` of a point relative to `r` (`u / w` along `axis`).
+fn hom_axis<T: Arith>(p: &ExactPoint, r: Point2, axis: Axis) -> (T, T) {
+    let pick = |q: Point2| match axis {
+        Axis::X => q.x,
+        Axis::Y => q.y,
+    };
+    match p {
+        ExactPoint::Input(q) => (T::diff(pick(*q), pick(r)), T::val(1.0)),
+        ExactPoint::Crossing(c) => {
+            let Param { dx, dy, num, den } = param::<T>(c);
+            let d = match axis {
+                Axis::X => dx,
+                Axis::Y => dy,
+            };
+            let a = T::diff(pick(c.s.a), pick(r));
+            (a.times(&den).plus(&d.times(&num)), den)
+        }
+    }
+}
+
 fn compare_coord_with<T: Arith>(p: &ExactPoint, q: &ExactPoint, axis: Axis) -> Option<Ordering> {
     let r = reference(&[p, q]);
-    let (hp, hq) = (hom::<T>(p, r), hom::<T>(q, r));
-    let (up, uq) = match axis {
-        Axis::X => (&hp.u, &hq.u),
-        Axis::Y => (&hp.v, &hq.v),
-    };
+    let ((up, wp), (uq, wq)) = (hom_axis::<T>(p, r, axis), hom_axis::<T>(q, r, axis));
     // up/wp - uq/wq has the sign of (up·wq - uq·wp)·wp·wq.
-    let n = up.times(&hq.w).minus(&uq.times(&hp.w));
-    signs(&[&n, &hp.w, &hq.w])
+    let n = up.times(&wq).minus(&uq.times(&wp));
+    signs(&[&n, &wp, &wq])
 }
 
 fn compare_coord(p: &ExactPoint, q: &ExactPoint, axis: Axis) -> Ordering {
@@ -179,7 +196,7 @@ fn compare_coord(p: &ExactPoint, q: &ExactPoint, axis: Axis) -> Ordering {
         return x.partial_cmp(&y).unwrap_or(Ordering::Equal);
     }
     decide(
-        || compare_coord_with::<Interval>(p, q, axis),
+        || compare_coord_with::<Bounded>(p, q, axis),
         || compare_coord_with::<Dyadic>(p, q, axis),
     )
 }
@@ -214,7 +231,7 @@ pub fn orient_exact(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint) -> Orientati
             return orient2d(*a, *b, *c)
         }
         _ => decide(
-            || orient_with::<Interval>(a, b, c),
+            || orient_with::<Bounded>(a, b, c),
             || orient_with::<Dyadic>(a, b, c),
         ),
     };
@@ -237,7 +254,7 @@ fn cross_sign_with<T: Arith>(s: Segment2, t: Segment2) -> Option<Ordering> {
 /// Exact sign of the cross product of the directions of `s` and `t`.
 fn cross_sign(s: Segment2, t: Segment2) -> Ordering {
     decide(
-        || cross_sign_with::<Interval>(s, t),
+        || cross_sign_with::<Bounded>(s, t),
         || cross_sign_with::<Dyadic>(s, t),
     )
 }

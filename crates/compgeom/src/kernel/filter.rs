@@ -1,15 +1,25 @@
-//! The floating-point filter: interval arithmetic with outward rounding.
+//! The floating-point filter: `f64` evaluation with a running error bound.
 //!
-//! Each operation rounds to nearest and then widens the result by one ulp on each side
-//! (`next_down` / `next_up`, done on the bit pattern). Under round-to-nearest the exact
-//! result lies between the neighbours of the rounded one, also for subnormal results and
-//! for results that underflow to zero, so every interval encloses the exact value. An
-//! overflow (an infinite endpoint) or an `inf - inf` makes the interval the whole line,
-//! which never decides a sign. The filter therefore needs no range assumption: it is
-//! rigorous for every finite input, and merely undecided when it cannot tell.
+//! Each value is a pair `(v, e)`: the `f64` result `v` of evaluating the expression,
+//! and a bound `e >= |v - exact|`. With `u = 2^-53` and round-to-nearest, one rounding
+//! of a real `z` to `fl(z)` errs by at most `u·|fl(z)|`, plus (for products only) half
+//! the smallest subnormal when the result underflows; sums and differences of floats
+//! that land in the subnormal range are exact. So
 //!
-//! Differences of input coordinates (the leaves of every expression) are enclosed
-//! exactly when they are representable, using the classic two-difference error term.
+//! * a difference of inputs `fl(a - b)`: `e = u·|v| + eta` (exactly zero when `a == b`);
+//! * `x ± y`: `e = e_x + e_y + u·|v| + eta`;
+//! * `x · y`: `e = |x|·e_y + |y|·e_x + e_x·e_y + u·|v| + eta`.
+//!
+//! `e` is itself computed in floating point. Each step's at most six roundings lose at
+//! most a relative `(1 - u)^6` or, where a term underflows, an absolute `2^-1075` each;
+//! the added `eta` (about `2^-1060`) covers the absolute losses at that very step (before
+//! any later product could magnify them), so by induction the computed final bound is
+//! at least `(1 - u)^(6·n)` times a true bound, for an expression of `n` steps. Our
+//! expressions have fewer than 100 steps, and the final test `|v| > e·(1 + 2^-40)`
+//! covers `(1 - u)^-600` with a wide margin.
+//! An overflow makes `v` or `e` infinite or NaN, and then no sign is decided. The
+//! filter thus needs no range assumption: it is rigorous for every finite input and
+//! merely undecided when it cannot tell.
 
 use super::arith::Arith;
 use std::cmp::Ordering;
@@ -42,146 +52,62 @@ pub fn predicate_fallbacks() -> u64 {
     PREDICATE_FALLBACKS.load(MemOrder::Relaxed)
 }
 
-/// The next `f64` above `x` (`+inf` and NaN stay; `-inf` gives `-f64::MAX`).
-pub(crate) fn next_up(x: f64) -> f64 {
-    if x.is_nan() || x == f64::INFINITY {
-        return x;
-    }
-    if x == 0.0 {
-        return f64::from_bits(1);
-    }
-    let b = x.to_bits();
-    if x > 0.0 {
-        f64::from_bits(b + 1)
-    } else {
-        f64::from_bits(b - 1)
-    }
-}
-
-/// The next `f64` below `x`.
-pub(crate) fn next_down(x: f64) -> f64 {
-    -next_up(-x)
-}
-
-/// A closed interval `[lo, hi]` that encloses an exact real value.
+/// A floating-point value with a rigorous bound on its distance to the exact value.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Interval {
-    lo: f64,
-    hi: f64,
+pub(crate) struct Bounded {
+    v: f64,
+    e: f64,
 }
 
-impl Interval {
-    const WHOLE: Interval = Interval {
-        lo: f64::NEG_INFINITY,
-        hi: f64::INFINITY,
-    };
+/// Unit roundoff of round-to-nearest `f64`.
+const U: f64 = 1.0 / 9_007_199_254_740_992.0; // 2^-53
+/// Absolute slack per operation (covers underflow in products and in the bound).
+const ETA: f64 = 5e-320; // between 2^-1061 and 2^-1060: thousands of 2^-1075
+/// Final relative safety factor on the bound (covers the bound's own roundings).
+const SAFETY: f64 = 1.0 + 1.0 / 1_099_511_627_776.0; // 1 + 2^-40
 
-    fn point(x: f64) -> Interval {
-        Interval { lo: x, hi: x }
-    }
-
-    fn is_zero(&self) -> bool {
-        self.lo == 0.0 && self.hi == 0.0
-    }
-
-    fn widened(lo: f64, hi: f64) -> Interval {
-        if lo.is_nan() || hi.is_nan() {
-            return Interval::WHOLE;
-        }
-        Interval {
-            lo: next_down(lo),
-            hi: next_up(hi),
-        }
-    }
-}
-
-impl Arith for Interval {
+impl Arith for Bounded {
     fn val(a: f64) -> Self {
-        Interval::point(a)
+        Bounded { v: a, e: 0.0 }
     }
 
     fn diff(a: f64, b: f64) -> Self {
-        let s = a - b;
-        if !s.is_finite() {
-            return Interval::WHOLE;
-        }
-        // Exact error of the rounded difference (Knuth / Dekker two-difference).
-        let bv = a - s;
-        let av = s + bv;
-        let err = (a - av) + (bv - b);
-        if err > 0.0 {
-            Interval {
-                lo: s,
-                hi: next_up(s),
-            }
-        } else if err < 0.0 {
-            Interval {
-                lo: next_down(s),
-                hi: s,
-            }
-        } else {
-            Interval::point(s)
-        }
+        let v = a - b;
+        // a == b exactly when v == 0: then the difference is exact.
+        let e = if v == 0.0 { 0.0 } else { v.abs() * U + ETA };
+        Bounded { v, e }
     }
 
     fn plus(&self, o: &Self) -> Self {
-        if self.is_zero() {
-            return *o;
+        let v = self.v + o.v;
+        Bounded {
+            v,
+            e: self.e + o.e + v.abs() * U + ETA,
         }
-        if o.is_zero() {
-            return *self;
-        }
-        Interval::widened(self.lo + o.lo, self.hi + o.hi)
     }
 
     fn minus(&self, o: &Self) -> Self {
-        if o.is_zero() {
-            return *self;
+        let v = self.v - o.v;
+        Bounded {
+            v,
+            e: self.e + o.e + v.abs() * U + ETA,
         }
-        if self.is_zero() {
-            return Interval {
-                lo: -o.hi,
-                hi: -o.lo,
-            };
-        }
-        Interval::widened(self.lo - o.hi, self.hi - o.lo)
     }
 
     fn times(&self, o: &Self) -> Self {
-        if self.is_zero() || o.is_zero() {
-            return Interval::point(0.0);
-        }
-        if !(self.lo.is_finite() && self.hi.is_finite() && o.lo.is_finite() && o.hi.is_finite()) {
-            return Interval::WHOLE;
-        }
-        // Common cases first: both factors of known sign need only two products.
-        if self.lo >= 0.0 && o.lo >= 0.0 {
-            return Interval::widened(self.lo * o.lo, self.hi * o.hi);
-        }
-        if self.hi <= 0.0 && o.hi <= 0.0 {
-            return Interval::widened(self.hi * o.hi, self.lo * o.lo);
-        }
-        if self.lo >= 0.0 && o.hi <= 0.0 {
-            return Interval::widened(self.hi * o.lo, self.lo * o.hi);
-        }
-        if self.hi <= 0.0 && o.lo >= 0.0 {
-            return Interval::widened(self.lo * o.hi, self.hi * o.lo);
-        }
-        let (a, b, c, d) = (
-            self.lo * o.lo,
-            self.lo * o.hi,
-            self.hi * o.lo,
-            self.hi * o.hi,
-        );
-        Interval::widened(a.min(b).min(c).min(d), a.max(b).max(c).max(d))
+        let v = self.v * o.v;
+        let e = self.v.abs() * o.e + o.v.abs() * self.e + self.e * o.e + v.abs() * U + ETA;
+        Bounded { v, e }
     }
 
     fn sign(&self) -> Option<Ordering> {
-        if self.lo > 0.0 {
+        let bound = self.e * SAFETY;
+        if self.v > bound {
             Some(Ordering::Greater)
-        } else if self.hi < 0.0 {
+        } else if -self.v > bound {
             Some(Ordering::Less)
-        } else if self.is_zero() {
+        } else if self.v == 0.0 && self.e == 0.0 {
+            // Only exact operations on exact zeros lead here (e.g. a == b differences).
             Some(Ordering::Equal)
         } else {
             None
@@ -194,26 +120,26 @@ mod tests {
     use super::*;
 
     #[test]
-    fn next_up_and_down_step_one_ulp() {
-        assert_eq!(next_up(1.0), 1.0 + f64::EPSILON);
-        assert_eq!(next_down(1.0), 1.0 - f64::EPSILON / 2.0);
-        assert_eq!(next_up(0.0), 5e-324);
-        assert_eq!(next_down(0.0), -5e-324);
-        assert_eq!(next_up(-5e-324), -0.0);
-        assert_eq!(next_up(f64::MAX), f64::INFINITY);
-        assert_eq!(next_down(f64::NEG_INFINITY), f64::NEG_INFINITY);
+    fn constants_are_what_they_claim() {
+        assert_eq!(U, 2f64.powi(-53));
+        assert!(ETA > 0.0 && ETA < 2f64.powi(-1060) && ETA > 2f64.powi(-1070));
+        assert_eq!(SAFETY, 1.0 + 2f64.powi(-40));
     }
 
     #[test]
-    fn intervals_enclose_and_decide() {
-        let x = Interval::diff(1.0, 1e-20);
+    fn bounds_decide_clear_signs_and_defer_unclear_ones() {
+        let x = Bounded::diff(1.0, 1e-20);
         assert_eq!(x.sign(), Some(Ordering::Greater));
-        assert!(x.lo < 1.0 && x.hi >= 1.0);
-        let zero = Interval::diff(3.0, 3.0);
-        assert_eq!(zero.sign(), Some(Ordering::Equal));
-        let big = Interval::val(1e300).times(&Interval::val(1e300));
-        assert_eq!(big.minus(&big).sign(), None);
-        let tiny = Interval::val(1e-300).times(&Interval::val(1e-300));
-        assert_eq!(tiny.sign(), None); // underflowed to 0: widened, undecided
+        assert_eq!(Bounded::diff(3.0, 3.0).sign(), Some(Ordering::Equal));
+        let big = Bounded::val(1e300).times(&Bounded::val(1e300));
+        assert_eq!(big.minus(&big).sign(), None); // overflow: inf - inf
+        let tiny = Bounded::val(1e-300).times(&Bounded::val(1e-300));
+        assert_eq!(tiny.sign(), None); // underflowed to 0 with an error bound
+                                       // fl(1/3)·3 - 1 = -2^-54 exactly, but the product rounds to 1: undecided.
+        let d = Bounded::val(1.0 / 3.0)
+            .times(&Bounded::val(3.0))
+            .minus(&Bounded::val(1.0));
+        assert_eq!(d.v, 0.0);
+        assert_eq!(d.sign(), None);
     }
 }

@@ -8,8 +8,8 @@
 //! |---|---|---|
 //! | [`orient2d`], [`incircle`], [`orient3d`], [`insphere`] on input points | yes, for every finite `f64` input | `robust` (Shewchuk) inside a per-predicate safe exponent range, exact power-of-two scaling into it, else exact dyadic arithmetic |
 //! | [`compare_xy`], [`compare_xyz`] and coordinate comparisons | yes | they only compare values |
-//! | [`Crossing::new`] (are the lines parallel?), [`compare_slopes`] | yes | interval filter, exact fallback |
-//! | [`Crossing::compare_xy_point`], [`Crossing::compare_xy`], [`Crossing::orient`], [`ExactPoint::compare_xy`], [`ExactPoint::compare_x`], [`orient_exact`], [`compare_y_at_x`], [`on_segment`] | yes, for every finite input | interval filter, exact dyadic fallback (decided from the defining segments) |
+//! | [`Crossing::new`] (are the lines parallel?), [`compare_slopes`] | yes | floating-point filter, exact fallback |
+//! | [`Crossing::compare_xy_point`], [`Crossing::compare_xy`], [`Crossing::orient`], [`ExactPoint::compare_xy`], [`ExactPoint::compare_x`], [`orient_exact`], [`compare_y_at_x`], [`on_segment`] | yes, for every finite input | floating-point filter, exact dyadic fallback (decided from the defining segments) |
 //! | [`segment_intersection`] | yes: the kind of intersection is exact; a shared endpoint is reported as that input point, never recomputed | exact predicates |
 //! | [`Crossing::approx`], [`ExactPoint::approx`] | rounded: the nearest `f64` per coordinate (correctly rounded); `±inf` if the exact coordinate is beyond the `f64` range | exact rational rounding |
 //!

@@ -136,17 +136,23 @@ fn exponent(x: f64) -> i64 {
     }
 }
 
-fn route(coords: &[f64], r: SafeRange) -> Route {
-    // Fast check on the biased exponent: one subtraction and compare per coordinate.
+/// True when every coordinate is 0 or has magnitude in `[2^lo, 2^hi)`: one subtraction
+/// and comparison on the biased exponent per coordinate, no branches.
+#[inline(always)]
+fn in_range(coords: &[f64], r: SafeRange) -> bool {
     let lo_biased = (r.lo + 1023) as u64;
     let span = (r.hi - r.lo) as u64;
-    let fast = coords.iter().fold(true, |ok, &x| {
-        let biased = (x.to_bits() >> 52) & 0x7ff;
-        ok & ((biased.wrapping_sub(lo_biased) < span) | (x == 0.0))
-    });
-    if fast {
-        return Route::Robust;
-    }
+    coords.iter().fold(true, |ok, &x| {
+        let bits = x.to_bits();
+        let biased = (bits >> 52) & 0x7ff;
+        ok & ((biased.wrapping_sub(lo_biased) < span) | (bits << 1 == 0))
+    })
+}
+
+/// The route for coordinates that failed [`in_range`].
+#[cold]
+#[inline(never)]
+fn slow_route(coords: &[f64], r: SafeRange) -> Route {
     let (mut emin, mut emax) = (i64::MAX, i64::MIN);
     for &x in coords {
         if !x.is_finite() {
@@ -166,6 +172,15 @@ fn route(coords: &[f64], r: SafeRange) -> Route {
         Route::Scaled(k)
     } else {
         Route::Exact
+    }
+}
+
+#[inline(always)]
+fn route(coords: &[f64], r: SafeRange) -> Route {
+    if in_range(coords, r) {
+        Route::Robust
+    } else {
+        slow_route(coords, r)
     }
 }
 
