@@ -283,6 +283,7 @@ fn insphere_det<T: Arith>(a: Point3, b: Point3, c: Point3, d: Point3, e: Point3)
         .plus(&blift.times(&cda).minus(&alift.times(&bcd)))
 }
 
+#[inline]
 fn orient2d_sign(a: Point2, b: Point2, c: Point2) -> Ordering {
     match route(&[a.x, a.y, b.x, b.y, c.x, c.y], ORIENT2D_RANGE) {
         Route::Robust => sign_of(robust::orient2d(c2(a), c2(b), c2(c))),
@@ -307,6 +308,7 @@ fn orient2d_sign(a: Point2, b: Point2, c: Point2) -> Ordering {
 /// let c = Point2::new(3e200, f64::from_bits(3e200f64.to_bits() + 1));
 /// assert_eq!(orient2d(a, b, c), Orientation::CounterClockwise);
 /// ```
+#[inline]
 pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
     match orient2d_sign(a, b, c) {
         Ordering::Greater => Orientation::CounterClockwise,
@@ -317,6 +319,7 @@ pub fn orient2d(a: Point2, b: Point2, c: Point2) -> Orientation {
 
 /// Exactly where `d` lies relative to the circle through `a, b, c` (for every finite
 /// input; a non-finite coordinate gives `OnCircle`).
+#[inline]
 pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> CircleSide {
     let coords = [a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y];
     let sign = match route(&coords, INCIRCLE_RANGE) {
@@ -342,6 +345,7 @@ pub fn incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> CircleSide {
 
 /// Exactly where `d` lies relative to the plane through `a, b, c` (for every finite
 /// input; a non-finite coordinate gives `Coplanar`).
+#[inline]
 pub fn orient3d(a: Point3, b: Point3, c: Point3, d: Point3) -> PlaneSide {
     let coords = [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z];
     let sign = match route(&coords, ORIENT3D_RANGE) {
@@ -367,6 +371,7 @@ pub fn orient3d(a: Point3, b: Point3, c: Point3, d: Point3) -> PlaneSide {
 
 /// Exactly where `e` lies relative to the sphere through `a, b, c, d` (for every finite
 /// input; a non-finite coordinate gives `OnSphere`).
+#[inline]
 pub fn insphere(a: Point3, b: Point3, c: Point3, d: Point3, e: Point3) -> SphereSide {
     let coords = [
         a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z, e.x, e.y, e.z,
