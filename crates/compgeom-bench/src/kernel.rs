@@ -247,6 +247,6 @@ pub fn run() {
         "Crossing::approx (correctly rounded)",
         t_approx,
         approx_calls,
-        "exact rational rounding every call",
+        "double-double midpoint filter, exact fallback",
     );
 }

@@ -549,3 +549,18 @@ fn crossing_of_nearly_parallel_lines_far_out_rounds_to_infinity() {
     assert_nearest(a.y, &y);
     assert!(a.x.is_infinite());
 }
+
+#[test]
+fn approx_breaks_exact_ties_to_even() {
+    // The crossing of y = 0 with the line through (a, -1) and (b, 1) is x = (a + b) / 2.
+    let e = f64::EPSILON; // 2^-52
+    let horizontal = Segment2::new(p(-4.0, 0.0), p(4.0, 0.0));
+    for (a, b, want) in [
+        (1.0, 1.0 + e, 1.0),                     // midpoint of 1 and 1 + e: even is 1
+        (1.0 + e, 1.0 + 2.0 * e, 1.0 + 2.0 * e), // midpoint of 1 + e and 1 + 2e: even is 1 + 2e
+        (1.0, 1.0 + 2.0 * e, 1.0 + e),           // exactly representable
+    ] {
+        let c = Crossing::new(horizontal, Segment2::new(p(a, -1.0), p(b, 1.0))).unwrap();
+        assert_eq!(c.approx(), p(want, 0.0), "({a} + {b}) / 2");
+    }
+}

@@ -22,7 +22,7 @@
 
 use super::arith::{mul_sign, Arith};
 use super::exact::{nearest_f64, Dyadic};
-use super::filter::{count, Bounded, CROSSING_FALLBACKS};
+use super::filter::{count, Bounded, DoubleDouble, CROSSING_FALLBACKS};
 use super::predicates::{compare_xy as compare_input_xy, orient2d, Orientation};
 use super::types::{Point2, Segment2};
 use num_rational::BigRational;
@@ -337,6 +337,58 @@ impl ExactPoint {
     }
 }
 
+/// The next `f64` above a finite normal `x` (callers keep away from the range ends).
+fn next_up(x: f64) -> f64 {
+    let b = x.to_bits();
+    if x > 0.0 {
+        f64::from_bits(b + 1)
+    } else {
+        f64::from_bits(b - 1)
+    }
+}
+
+/// The next `f64` below a finite normal `x`.
+fn next_down(x: f64) -> f64 {
+    -next_up(-x)
+}
+
+/// The fast path of correct rounding for one coordinate `a + d·num/den` of a crossing,
+/// in double-double arithmetic with an error bound: take `f`, the quotient of the
+/// leading parts, then decide on which side of the midpoints `f ± half-gap` the exact
+/// value lies (a midpoint is `f + h` with `f` and `h` exact `f64`s, so `x - (f + h)`
+/// has the sign of `(N - f·D - h·D)·D`), stepping to a neighbour at most a few times.
+/// `None` (use the exact path) when a sign is uncertain, on an exact tie, or near the
+/// ends of the `f64` range (subnormal or huge results).
+fn nearest_fast(a: f64, d: &DoubleDouble, num: &DoubleDouble, den: &DoubleDouble) -> Option<f64> {
+    let n = DoubleDouble::val(a).times(den).plus(&d.times(num));
+    let den_sign = den.sign()?;
+    let mut f = n.head() / den.head();
+    // Normal and far from overflow: gaps and half-gaps around f are exact.
+    if !(f.abs() > 1e-290 && f.abs() < 1e300) {
+        return None;
+    }
+    for _ in 0..4 {
+        let (up, down) = (next_up(f), next_down(f));
+        let rest = n.minus(&DoubleDouble::val(f).times(den));
+        let half_up = DoubleDouble::val((up - f) * 0.5).times(den);
+        match mul_sign(rest.minus(&half_up).sign()?, den_sign) {
+            Ordering::Greater => {
+                f = up;
+                continue;
+            }
+            Ordering::Equal => return None,
+            Ordering::Less => {}
+        }
+        let half_down = DoubleDouble::val((f - down) * 0.5).times(den);
+        match mul_sign(rest.plus(&half_down).sign()?, den_sign) {
+            Ordering::Less => f = down,
+            Ordering::Equal => return None,
+            Ordering::Greater => return Some(f),
+        }
+    }
+    None
+}
+
 impl Crossing {
     /// The crossing of the lines through `s` and `t`, or `None` when the lines are
     /// parallel (decided exactly), a segment is degenerate, or a coordinate is not
@@ -362,7 +414,16 @@ impl Crossing {
     /// rounded (to nearest, ties to even). A coordinate beyond the `f64` range (nearly
     /// parallel lines far out) becomes `±inf`; one below half the smallest subnormal
     /// becomes `0`. For reporting only: decisions never use it.
+    ///
+    /// Cost: a double-double evaluation decides the rounding in all but near-tie cases
+    /// (about the cost of two comparisons); the rest use exact rational rounding.
     pub fn approx(&self) -> Point2 {
+        let Param { dx, dy, num, den } = param::<DoubleDouble>(self);
+        let fast_x = nearest_fast(self.s.a.x, &dx, &num, &den);
+        let fast_y = nearest_fast(self.s.a.y, &dy, &num, &den);
+        if let (Some(x), Some(y)) = (fast_x, fast_y) {
+            return Point2::new(x, y);
+        }
         let (x, y, den) = self.exact_parts();
         Point2::new(nearest_f64(&x, &den), nearest_f64(&y, &den))
     }

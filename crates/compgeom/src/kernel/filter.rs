@@ -142,4 +142,120 @@ mod tests {
         assert_eq!(d.v, 0.0);
         assert_eq!(d.sign(), None);
     }
+
+    #[test]
+    fn double_double_decides_what_f64_cannot() {
+        // fl(1/3)·3 - 1 = -2^-54: the fused multiply-add keeps the product exact.
+        let third = DoubleDouble::val(1.0 / 3.0);
+        let d = third
+            .times(&DoubleDouble::val(3.0))
+            .minus(&DoubleDouble::val(1.0));
+        assert_eq!(d.sign(), Some(Ordering::Less));
+        assert_eq!(d.head(), -(2f64.powi(-54)));
+        // (1 + 2^-60) - 1 is exact as a difference of inputs.
+        let x = DoubleDouble::diff(1.0, -(2f64.powi(-60))).minus(&DoubleDouble::val(1.0));
+        assert_eq!(x.sign(), Some(Ordering::Greater));
+        assert_eq!(DoubleDouble::diff(2.0, 2.0).sign(), Some(Ordering::Equal));
+        let big = DoubleDouble::val(1e300).times(&DoubleDouble::val(1e300));
+        assert_eq!(big.sign(), None); // overflow
+    }
+}
+
+/// A double-double value `hi + lo` (`|lo| <= ulp(hi)/2`) with a rigorous bound `e` on
+/// its distance to the exact value: about 106 bits of precision. Used where plain `f64`
+/// cannot decide by construction (rounding a crossing to the nearest `f64` needs to
+/// place it relative to midpoints half an ulp away).
+///
+/// Error terms, with `u = 2^-53` and `eta` as for [`Bounded`]: differences of inputs
+/// are exact (two-sum); a sum adds at most `3u·(|x.lo| + |y.lo| + |t1|)` where `t1` is
+/// the exact error of `x.hi + y.hi`; a product (its `hi·hi` part is exact through a
+/// fused multiply-add, up to underflow) adds at most
+/// `4u·(|x.hi·y.lo| + |x.lo·y.hi| + |p_err|) + |x.lo·y.lo|` besides the propagated
+/// `|x|·e_y + |y|·e_x + e_x·e_y`. Each step adds `eta` for underflow, and the final test
+/// applies the same `1 + 2^-40` safety factor.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct DoubleDouble {
+    hi: f64,
+    lo: f64,
+    e: f64,
+}
+
+/// `a + b = s + err` exactly (no overflow).
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+impl DoubleDouble {
+    /// The leading `f64` of the value.
+    pub(crate) fn head(&self) -> f64 {
+        self.hi
+    }
+}
+
+impl Arith for DoubleDouble {
+    fn val(a: f64) -> Self {
+        DoubleDouble {
+            hi: a,
+            lo: 0.0,
+            e: 0.0,
+        }
+    }
+
+    fn diff(a: f64, b: f64) -> Self {
+        let (hi, lo) = two_sum(a, -b);
+        DoubleDouble { hi, lo, e: 0.0 }
+    }
+
+    fn plus(&self, o: &Self) -> Self {
+        let (s, t1) = two_sum(self.hi, o.hi);
+        let t = (self.lo + o.lo) + t1;
+        let (hi, lo) = two_sum(s, t);
+        let e = self.e + o.e + 3.0 * U * (self.lo.abs() + o.lo.abs() + t1.abs()) + ETA;
+        DoubleDouble { hi, lo, e }
+    }
+
+    fn minus(&self, o: &Self) -> Self {
+        self.plus(&DoubleDouble {
+            hi: -o.hi,
+            lo: -o.lo,
+            e: o.e,
+        })
+    }
+
+    fn times(&self, o: &Self) -> Self {
+        let p = self.hi * o.hi;
+        let p_err = self.hi.mul_add(o.hi, -p);
+        let (a, b) = (self.hi * o.lo, self.lo * o.hi);
+        let c = (a + b) + p_err;
+        let (hi, lo) = two_sum(p, c);
+        let (xm, ym) = (self.hi.abs() + self.lo.abs(), o.hi.abs() + o.lo.abs());
+        let e = xm * o.e
+            + ym * self.e
+            + self.e * o.e
+            + 4.0 * U * (a.abs() + b.abs() + p_err.abs())
+            + (self.lo * o.lo).abs()
+            + ETA;
+        DoubleDouble { hi, lo, e }
+    }
+
+    fn sign(&self) -> Option<Ordering> {
+        if !(self.hi.is_finite() && self.e.is_finite()) {
+            return None;
+        }
+        // |hi + lo| >= |hi|·(1 - u); the factor below is smaller even after rounding.
+        let low = self.hi.abs() * (1.0 - 1.0 / 1_125_899_906_842_624.0); // 1 - 2^-50
+        if low > self.e * SAFETY {
+            Some(if self.hi > 0.0 {
+                Ordering::Greater
+            } else {
+                Ordering::Less
+            })
+        } else if self.hi == 0.0 && self.lo == 0.0 && self.e == 0.0 {
+            Some(Ordering::Equal)
+        } else {
+            None
+        }
+    }
 }
