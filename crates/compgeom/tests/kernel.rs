@@ -530,6 +530,14 @@ fn concurrent_crossings_compare_equal_through_the_fallback() {
         "degenerate comparisons must reach the exact path"
     );
     assert_eq!(c12.approx(), p(1.0 / 3.0, 1.0 / 3.0));
+    // The same crossing with its segments swapped is equal by construction.
+    let c21 = Crossing::new(s2, s1).unwrap();
+    assert_eq!(c12.compare_xy(&c21), Ordering::Equal);
+    let x = ExactPoint::from(c12);
+    assert_eq!(
+        orient_exact(&x, &c21.into(), &p(5.0, -7.0).into()),
+        Orientation::Collinear
+    );
     // A point one ulp away is ordered correctly.
     assert_eq!(c12.compare_xy_point(p(1.0 / 3.0, 1.0 / 3.0)), {
         let third = Q::new(BigInt::one(), BigInt::from(3));

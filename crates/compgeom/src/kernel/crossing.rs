@@ -187,7 +187,21 @@ fn compare_coord_with<T: Arith>(p: &ExactPoint, q: &ExactPoint, axis: Axis) -> O
     signs(&[&n, &wp, &wq])
 }
 
+/// True when `p` and `q` are the same point by construction (equal input points, or
+/// crossings of the same two segments in either order): no arithmetic needed.
+fn same_by_construction(p: &ExactPoint, q: &ExactPoint) -> bool {
+    match (p, q) {
+        (ExactPoint::Crossing(a), ExactPoint::Crossing(b)) => {
+            (a.s == b.s && a.t == b.t) || (a.s == b.t && a.t == b.s)
+        }
+        _ => p == q,
+    }
+}
+
 fn compare_coord(p: &ExactPoint, q: &ExactPoint, axis: Axis) -> Ordering {
+    if same_by_construction(p, q) {
+        return Ordering::Equal;
+    }
     if let (ExactPoint::Input(a), ExactPoint::Input(b)) = (p, q) {
         let (x, y) = match axis {
             Axis::X => (a.x, b.x),
@@ -229,6 +243,12 @@ pub fn orient_exact(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint) -> Orientati
     let sign = match (a, b, c) {
         (ExactPoint::Input(a), ExactPoint::Input(b), ExactPoint::Input(c)) => {
             return orient2d(*a, *b, *c)
+        }
+        _ if same_by_construction(a, b)
+            || same_by_construction(b, c)
+            || same_by_construction(a, c) =>
+        {
+            Ordering::Equal
         }
         _ => decide(
             || orient_with::<Bounded>(a, b, c),
