@@ -26,7 +26,9 @@
 //!   degree-`D` products of differences, or by a Dekker split (`< 2^28` times a
 //!   degree-`D-1` quantity, smaller as `HI >= 27`): at most `2^(D·(HI+1) + 8)`.
 //!   Requiring that to stay `<= 2^1022` (a factor two left for rounding) gives
-//!   `HI <= 1014/D - 1`.
+//!   `HI <= 1014/D - 1`. (insphere's last, exact stage multiplies raw coordinates
+//!   instead of differences: its at most 360 degree-5 monomials stay below
+//!   `2^(5·HI + 9)`, inside the same bound; raw coordinates are multiples of `g` too.)
 //!
 //! | predicate | degree | safe magnitudes (or 0) |
 //! |---|---|---|
