@@ -1,2 +1,14 @@
 //! Benchmarks against peer libraries.
-fn main() {}
+//!
+//! Usage: `compgeom-bench <group>`; groups: `kernel`.
+mod kernel;
+
+fn main() {
+    match std::env::args().nth(1).as_deref() {
+        Some("kernel") => kernel::run(),
+        other => {
+            eprintln!("unknown or missing bench group {other:?}; groups: kernel");
+            std::process::exit(2);
+        }
+    }
+}

@@ -1,12 +1,46 @@
-//! Constructed segment crossings, kept as the two segments that define them.
-//! (Initial API; the kernel work makes every comparison exact.)
+//! Constructed points: segment crossings, kept as the two segments that define them,
+//! and exact comparisons mixing them with input points.
+//!
+//! A crossing `c` of the lines through `s = (a, b)` and `t` is
+//! `a + (b - a) · num / den` with `den = (b - a) × (t.b - t.a)` and
+//! `num = (t.a - a) × (t.b - t.a)` (both of degree 2), so relative to any input point
+//! `r` it has the homogeneous coordinates `((a - r)·den + (b - a)·num, den)`: a
+//! numerator of degree 3 over a denominator of degree 2. Every decision below is the
+//! sign of a polynomial in differences of input coordinates built from these
+//! (degree 3 for crossing vs point, 4 for an orientation with two input points, 5 for
+//! crossing vs crossing, up to 8 for an orientation of three crossings).
+//!
+//! Each sign is first evaluated with a floating-point filter with a rigorous running error bound
+//! ([`super::filter`]); only when
+//! the bound does not exclude zero is it evaluated again exactly ([`super::exact`]). The
+//! number of exact evaluations is counted (`crossing_fallbacks()`, hidden from the docs).
+//!
+//! All coordinates are assumed finite. With NaN or infinite coordinates nothing panics,
+//! but the answers are unspecified. A `Crossing` built by hand from parallel or
+//! degenerate segments (bypassing [`Crossing::new`]) likewise gives unspecified
+//! comparisons, and [`Crossing::approx`] returns NaN for it.
 
-use super::predicates::Orientation;
+use super::arith::{mul_sign, Arith};
+use super::exact::{nearest_f64, Dyadic};
+use super::filter::{count, Bounded, DoubleDouble, CROSSING_FALLBACKS};
+use super::predicates::{compare_xy as compare_input_xy, orient2d, Orientation};
 use super::types::{Point2, Segment2};
+use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// The crossing point of two non-parallel segments' supporting lines, represented by
 /// the segments themselves. Comparisons are exact; [`Crossing::approx`] rounds.
+///
+/// ```
+/// use compgeom::kernel::Crossing;
+/// use compgeom::{Point2, Segment2};
+/// let s = Segment2::new(Point2::new(0.0, 0.0), Point2::new(3.0, 3.0));
+/// let t = Segment2::new(Point2::new(0.0, 1.0), Point2::new(1.0, 0.0));
+/// let c = Crossing::new(s, t).unwrap();
+/// assert_eq!(c.approx(), Point2::new(0.5, 0.5));
+/// // Exactly on the diagonal, exactly left of (0.5, 0.6):
+/// assert_eq!(c.compare_xy_point(Point2::new(0.5, 0.6)), std::cmp::Ordering::Less);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Crossing {
     /// First defining segment.
@@ -15,34 +49,436 @@ pub struct Crossing {
     pub t: Segment2,
 }
 
-impl Crossing {
-    /// The crossing of the lines through `s` and `t`, or `None` when the lines are parallel
-    /// (or a segment is degenerate).
-    pub fn new(s: Segment2, t: Segment2) -> Option<Crossing> {
-        let _ = (s, t);
-        None
+/// A point an algorithm works with: an input point, or a constructed crossing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ExactPoint {
+    /// An input point (its coordinates are exact `f64` values).
+    Input(Point2),
+    /// The crossing of two segments' supporting lines.
+    Crossing(Crossing),
+}
+
+impl From<Point2> for ExactPoint {
+    fn from(p: Point2) -> Self {
+        ExactPoint::Input(p)
+    }
+}
+
+impl From<Crossing> for ExactPoint {
+    fn from(c: Crossing) -> Self {
+        ExactPoint::Crossing(c)
+    }
+}
+
+/// Homogeneous coordinates `(u / w, v / w)` of a point relative to a reference point.
+struct Hom<T> {
+    u: T,
+    v: T,
+    w: T,
+}
+
+/// The numerator and denominator of the line parameter of a crossing along `s`, and
+/// the direction of `s`.
+struct Param<T> {
+    dx: T,
+    dy: T,
+    num: T,
+    den: T,
+}
+
+fn param<T: Arith>(c: &Crossing) -> Param<T> {
+    let (s, t) = (c.s, c.t);
+    let dx = T::diff(s.b.x, s.a.x);
+    let dy = T::diff(s.b.y, s.a.y);
+    let ex = T::diff(t.b.x, t.a.x);
+    let ey = T::diff(t.b.y, t.a.y);
+    let wx = T::diff(t.a.x, s.a.x);
+    let wy = T::diff(t.a.y, s.a.y);
+    let den = dx.times(&ey).minus(&dy.times(&ex));
+    let num = wx.times(&ey).minus(&wy.times(&ex));
+    Param { dx, dy, num, den }
+}
+
+fn hom<T: Arith>(p: &ExactPoint, r: Point2) -> Hom<T> {
+    match p {
+        ExactPoint::Input(q) => Hom {
+            u: T::diff(q.x, r.x),
+            v: T::diff(q.y, r.y),
+            w: T::val(1.0),
+        },
+        ExactPoint::Crossing(c) => {
+            let Param { dx, dy, num, den } = param::<T>(c);
+            let ax = T::diff(c.s.a.x, r.x);
+            let ay = T::diff(c.s.a.y, r.y);
+            Hom {
+                u: ax.times(&den).plus(&dx.times(&num)),
+                v: ay.times(&den).plus(&dy.times(&num)),
+                w: den,
+            }
+        }
+    }
+}
+
+/// A good reference point for a set of points: an input point among them, else the
+/// first endpoint of the first crossing (keeps the differences small).
+fn reference(points: &[&ExactPoint]) -> Point2 {
+    points
+        .iter()
+        .find_map(|p| match p {
+            ExactPoint::Input(q) => Some(*q),
+            ExactPoint::Crossing(_) => None,
+        })
+        .unwrap_or(match points[0] {
+            ExactPoint::Input(q) => *q,
+            ExactPoint::Crossing(c) => c.s.a,
+        })
+}
+
+/// The filter, then (counted) the exact evaluation of the same expression.
+fn decide(
+    fast: impl FnOnce() -> Option<Ordering>,
+    exact: impl FnOnce() -> Option<Ordering>,
+) -> Ordering {
+    if let Some(o) = fast() {
+        return o;
+    }
+    count(&CROSSING_FALLBACKS);
+    exact().unwrap_or(Ordering::Equal)
+}
+
+/// Sign of a product of values, or `None` if one sign is unknown.
+fn signs<T: Arith>(values: &[&T]) -> Option<Ordering> {
+    values
+        .iter()
+        .try_fold(Ordering::Greater, |acc, v| Some(mul_sign(acc, v.sign()?)))
+}
+
+#[derive(Clone, Copy)]
+enum Axis {
+    X,
+    Y,
+}
+
+/// One homogeneous coordinate `(u, w)` of a point relative to `r` (`u / w` along `axis`).
+fn hom_axis<T: Arith>(p: &ExactPoint, r: Point2, axis: Axis) -> (T, T) {
+    let pick = |q: Point2| match axis {
+        Axis::X => q.x,
+        Axis::Y => q.y,
+    };
+    match p {
+        ExactPoint::Input(q) => (T::diff(pick(*q), pick(r)), T::val(1.0)),
+        ExactPoint::Crossing(c) => {
+            let Param { dx, dy, num, den } = param::<T>(c);
+            let d = match axis {
+                Axis::X => dx,
+                Axis::Y => dy,
+            };
+            let a = T::diff(pick(c.s.a), pick(r));
+            (a.times(&den).plus(&d.times(&num)), den)
+        }
+    }
+}
+
+fn compare_coord_with<T: Arith>(p: &ExactPoint, q: &ExactPoint, axis: Axis) -> Option<Ordering> {
+    let r = reference(&[p, q]);
+    let ((up, wp), (uq, wq)) = (hom_axis::<T>(p, r, axis), hom_axis::<T>(q, r, axis));
+    // up/wp - uq/wq has the sign of (up·wq - uq·wp)·wp·wq.
+    let n = up.times(&wq).minus(&uq.times(&wp));
+    signs(&[&n, &wp, &wq])
+}
+
+/// True when `p` and `q` are the same point by construction (equal input points, or
+/// crossings of the same two segments in either order): no arithmetic needed.
+fn same_by_construction(p: &ExactPoint, q: &ExactPoint) -> bool {
+    match (p, q) {
+        (ExactPoint::Crossing(a), ExactPoint::Crossing(b)) => {
+            (a.s == b.s && a.t == b.t) || (a.s == b.t && a.t == b.s)
+        }
+        _ => p == q,
+    }
+}
+
+fn compare_coord(p: &ExactPoint, q: &ExactPoint, axis: Axis) -> Ordering {
+    if same_by_construction(p, q) {
+        return Ordering::Equal;
+    }
+    if let (ExactPoint::Input(a), ExactPoint::Input(b)) = (p, q) {
+        let (x, y) = match axis {
+            Axis::X => (a.x, b.x),
+            Axis::Y => (a.y, b.y),
+        };
+        return x.partial_cmp(&y).unwrap_or(Ordering::Equal);
+    }
+    decide(
+        || compare_coord_with::<Bounded>(p, q, axis),
+        || compare_coord_with::<Dyadic>(p, q, axis),
+    )
+}
+
+fn orient_with<T: Arith>(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint) -> Option<Ordering> {
+    let r = reference(&[a, b, c]);
+    let (ha, hb, hc) = (hom::<T>(a, r), hom::<T>(b, r), hom::<T>(c, r));
+    // det [ua va wa; ub vb wb; uc vc wc] = orientation scaled by wa·wb·wc.
+    let m1 = hb.v.times(&hc.w).minus(&hb.w.times(&hc.v));
+    let m2 = hb.u.times(&hc.w).minus(&hb.w.times(&hc.u));
+    let m3 = hb.u.times(&hc.v).minus(&hb.v.times(&hc.u));
+    let det =
+        ha.u.times(&m1)
+            .minus(&ha.v.times(&m2))
+            .plus(&ha.w.times(&m3));
+    signs(&[&det, &ha.w, &hb.w, &hc.w])
+}
+
+/// The exact orientation of three points, each an input point or a crossing.
+///
+/// ```
+/// use compgeom::kernel::{orient_exact, Crossing, ExactPoint, Orientation};
+/// use compgeom::{Point2, Segment2};
+/// let p = |x, y| Point2::new(x, y);
+/// let c = Crossing::new(Segment2::new(p(0.0, 0.0), p(2.0, 2.0)), Segment2::new(p(0.0, 2.0), p(2.0, 0.0))).unwrap();
+/// let (a, b) = (ExactPoint::from(p(0.0, 1.0)), ExactPoint::from(p(2.0, 1.0)));
+/// assert_eq!(orient_exact(&a, &b, &c.into()), Orientation::Collinear);
+/// ```
+pub fn orient_exact(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint) -> Orientation {
+    let sign = match (a, b, c) {
+        (ExactPoint::Input(a), ExactPoint::Input(b), ExactPoint::Input(c)) => {
+            return orient2d(*a, *b, *c)
+        }
+        _ if same_by_construction(a, b)
+            || same_by_construction(b, c)
+            || same_by_construction(a, c) =>
+        {
+            Ordering::Equal
+        }
+        _ => decide(
+            || orient_with::<Bounded>(a, b, c),
+            || orient_with::<Dyadic>(a, b, c),
+        ),
+    };
+    match sign {
+        Ordering::Greater => Orientation::CounterClockwise,
+        Ordering::Less => Orientation::Clockwise,
+        Ordering::Equal => Orientation::Collinear,
+    }
+}
+
+fn cross_sign_with<T: Arith>(s: Segment2, t: Segment2) -> Option<Ordering> {
+    // (s.b - s.a) × (t.b - t.a)
+    let dx = T::diff(s.b.x, s.a.x);
+    let dy = T::diff(s.b.y, s.a.y);
+    let ex = T::diff(t.b.x, t.a.x);
+    let ey = T::diff(t.b.y, t.a.y);
+    dx.times(&ey).minus(&dy.times(&ex)).sign()
+}
+
+/// Exact sign of the cross product of the directions of `s` and `t`.
+fn cross_sign(s: Segment2, t: Segment2) -> Ordering {
+    decide(
+        || cross_sign_with::<Bounded>(s, t),
+        || cross_sign_with::<Dyadic>(s, t),
+    )
+}
+
+/// `s` with its endpoints in lexicographic (x, then y) order.
+fn sorted(s: Segment2) -> Segment2 {
+    if compare_input_xy(s.a, s.b) == Ordering::Greater {
+        Segment2::new(s.b, s.a)
+    } else {
+        s
+    }
+}
+
+/// Exact comparison of the slopes of two segments, each directed from its
+/// lexicographically smaller endpoint; a vertical segment has slope `+inf`
+/// (so two vertical segments compare `Equal`). This is the order of two segments just
+/// to the right of a point where both pass (CGAL's `compare_y_at_x_right`).
+/// A degenerate (point) segment compares `Equal` to everything.
+pub fn compare_slopes(s: Segment2, t: Segment2) -> Ordering {
+    // slope(s) < slope(t) iff t turns left from s iff (t.dir × s.dir) < 0.
+    cross_sign(sorted(t), sorted(s))
+}
+
+/// Where `p` lies relative to the segment `s` at `p`'s x: `Greater` if above, `Less`
+/// if below, `Equal` if on the line of `s`. For a vertical `s`, `Equal` means that `p`'s
+/// y is within `s`'s y-range; for a point segment, it compares y with that point.
+/// `p`'s x is meant to lie within `s`'s x-range (not checked: outside it, the answer
+/// is the side of `s`'s supporting line).
+pub fn compare_y_at_x(p: &ExactPoint, s: Segment2) -> Ordering {
+    let s = sorted(s);
+    if s.a.x == s.b.x {
+        let lo = ExactPoint::Input(s.a);
+        let hi = ExactPoint::Input(s.b);
+        return match compare_coord(p, &lo, Axis::Y) {
+            Ordering::Less => Ordering::Less,
+            _ => match compare_coord(p, &hi, Axis::Y) {
+                Ordering::Greater => Ordering::Greater,
+                _ => Ordering::Equal,
+            },
+        };
+    }
+    match orient_exact(&ExactPoint::Input(s.a), &ExactPoint::Input(s.b), p) {
+        Orientation::CounterClockwise => Ordering::Greater,
+        Orientation::Clockwise => Ordering::Less,
+        Orientation::Collinear => Ordering::Equal,
+    }
+}
+
+/// True when `p` lies on the closed segment `s` (exactly).
+pub fn on_segment(p: &ExactPoint, s: Segment2) -> bool {
+    let s = sorted(s);
+    let (a, b) = (ExactPoint::Input(s.a), ExactPoint::Input(s.b));
+    p.compare_xy(&a) != Ordering::Less
+        && p.compare_xy(&b) != Ordering::Greater
+        && (s.a == s.b || orient_exact(&a, &b, p) == Orientation::Collinear)
+}
+
+impl ExactPoint {
+    /// Exact comparison of x coordinates.
+    pub fn compare_x(&self, other: &ExactPoint) -> Ordering {
+        compare_coord(self, other, Axis::X)
     }
 
-    /// The nearest `f64` point to the exact crossing (for reporting only).
+    /// Exact comparison of y coordinates.
+    pub fn compare_y(&self, other: &ExactPoint) -> Ordering {
+        compare_coord(self, other, Axis::Y)
+    }
+
+    /// Exact lexicographic comparison (x, then y): the sweep-line event order.
+    pub fn compare_xy(&self, other: &ExactPoint) -> Ordering {
+        self.compare_x(other).then_with(|| self.compare_y(other))
+    }
+
+    /// The point itself, or the nearest `f64` point to a crossing.
     pub fn approx(&self) -> Point2 {
-        self.s.a
+        match self {
+            ExactPoint::Input(p) => *p,
+            ExactPoint::Crossing(c) => c.approx(),
+        }
+    }
+}
+
+/// The next `f64` above a finite normal `x` (callers keep away from the range ends).
+fn next_up(x: f64) -> f64 {
+    let b = x.to_bits();
+    if x > 0.0 {
+        f64::from_bits(b + 1)
+    } else {
+        f64::from_bits(b - 1)
+    }
+}
+
+/// The next `f64` below a finite normal `x`.
+fn next_down(x: f64) -> f64 {
+    -next_up(-x)
+}
+
+/// The fast path of correct rounding for one coordinate `a + d·num/den` of a crossing,
+/// in double-double arithmetic with an error bound: take `f`, the quotient of the
+/// leading parts, then decide on which side of the midpoints `f ± half-gap` the exact
+/// value lies (a midpoint is `f + h` with `f` and `h` exact `f64`s, so `x - (f + h)`
+/// has the sign of `(N - f·D - h·D)·D`), stepping to a neighbour at most a few times.
+/// `None` (use the exact path) when a sign is uncertain, on an exact tie, or near the
+/// ends of the `f64` range (subnormal or huge results).
+fn nearest_fast(a: f64, d: &DoubleDouble, num: &DoubleDouble, den: &DoubleDouble) -> Option<f64> {
+    let n = DoubleDouble::val(a).times(den).plus(&d.times(num));
+    let den_sign = den.sign()?;
+    let mut f = n.head() / den.head();
+    // Normal and far from overflow: gaps and half-gaps around f are exact.
+    if !(f.abs() > 1e-290 && f.abs() < 1e300) {
+        return None;
+    }
+    for _ in 0..4 {
+        let (up, down) = (next_up(f), next_down(f));
+        let rest = n.minus(&DoubleDouble::val(f).times(den));
+        let half_up = DoubleDouble::val((up - f) * 0.5).times(den);
+        match mul_sign(rest.minus(&half_up).sign()?, den_sign) {
+            Ordering::Greater => {
+                f = up;
+                continue;
+            }
+            Ordering::Equal => return None,
+            Ordering::Less => {}
+        }
+        let half_down = DoubleDouble::val((f - down) * 0.5).times(den);
+        match mul_sign(rest.plus(&half_down).sign()?, den_sign) {
+            Ordering::Less => f = down,
+            Ordering::Equal => return None,
+            Ordering::Greater => return Some(f),
+        }
+    }
+    None
+}
+
+impl Crossing {
+    /// The crossing of the lines through `s` and `t`, or `None` when the lines are
+    /// parallel (decided exactly), a segment is degenerate, or a coordinate is not
+    /// finite. The segments need not actually meet: see [`super::segment_intersection`]
+    /// for closed-segment intersection.
+    pub fn new(s: Segment2, t: Segment2) -> Option<Crossing> {
+        let finite = s.a.is_finite() && s.b.is_finite() && t.a.is_finite() && t.b.is_finite();
+        if !finite || s.is_degenerate() || t.is_degenerate() {
+            return None;
+        }
+        (cross_sign(s, t) != Ordering::Equal).then_some(Crossing { s, t })
+    }
+
+    /// The exact coordinates as (numerator, denominator) dyadic pairs.
+    fn exact_parts(&self) -> (Dyadic, Dyadic, Dyadic) {
+        let Param { dx, dy, num, den } = param::<Dyadic>(self);
+        let x = Dyadic::val(self.s.a.x).times(&den).plus(&dx.times(&num));
+        let y = Dyadic::val(self.s.a.y).times(&den).plus(&dy.times(&num));
+        (x, y, den)
+    }
+
+    /// The nearest `f64` point to the exact crossing: each coordinate is correctly
+    /// rounded (to nearest, ties to even). A coordinate beyond the `f64` range (nearly
+    /// parallel lines far out) becomes `±inf`; one below half the smallest subnormal
+    /// becomes `0`. For reporting only: decisions never use it.
+    ///
+    /// Cost: a double-double evaluation decides the rounding in all but near-tie cases
+    /// (about the cost of two comparisons); the rest use exact rational rounding.
+    pub fn approx(&self) -> Point2 {
+        let Param { dx, dy, num, den } = param::<DoubleDouble>(self);
+        let fast_x = nearest_fast(self.s.a.x, &dx, &num, &den);
+        let fast_y = nearest_fast(self.s.a.y, &dy, &num, &den);
+        if let (Some(x), Some(y)) = (fast_x, fast_y) {
+            return Point2::new(x, y);
+        }
+        let (x, y, den) = self.exact_parts();
+        Point2::new(nearest_f64(&x, &den), nearest_f64(&y, &den))
+    }
+
+    /// The exact coordinates as rationals, or `None` for a hand-made crossing of
+    /// parallel lines (or non-finite input).
+    pub fn exact(&self) -> Option<(BigRational, BigRational)> {
+        let finite = self.s.a.is_finite()
+            && self.s.b.is_finite()
+            && self.t.a.is_finite()
+            && self.t.b.is_finite();
+        let (x, y, den) = self.exact_parts();
+        if !finite || den.is_zero() {
+            return None;
+        }
+        let d = den.to_rational();
+        Some((x.to_rational() / &d, y.to_rational() / &d))
     }
 
     /// Exact lexicographic comparison (x, then y) of the crossing with an input point.
     pub fn compare_xy_point(&self, p: Point2) -> Ordering {
-        let _ = p;
-        Ordering::Equal
+        ExactPoint::Crossing(*self).compare_xy(&ExactPoint::Input(p))
     }
 
     /// Exact lexicographic comparison (x, then y) of two crossings.
     pub fn compare_xy(&self, other: &Crossing) -> Ordering {
-        let _ = other;
-        Ordering::Equal
+        ExactPoint::Crossing(*self).compare_xy(&ExactPoint::Crossing(*other))
     }
 
     /// Exact orientation of `(a, b, crossing)`.
     pub fn orient(a: Point2, b: Point2, c: &Crossing) -> Orientation {
-        let _ = (a, b, c);
-        Orientation::Collinear
+        orient_exact(
+            &ExactPoint::Input(a),
+            &ExactPoint::Input(b),
+            &ExactPoint::Crossing(*c),
+        )
     }
 }

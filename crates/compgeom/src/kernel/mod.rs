@@ -4,17 +4,32 @@
 //!
 //! ## What is exact
 //!
-//! | operation | exact? |
-//! |---|---|
-//! | [`orient2d`], [`incircle`], [`orient3d`], [`insphere`] on input points | yes, for every finite `f64` input (filtered; exact fallback) |
-//! | [`compare_xy`] and coordinate comparisons | yes (they only compare values) |
-//! | comparisons involving a [`Crossing`] (a constructed segment crossing) | yes (decided from the defining segments) |
-//! | [`Crossing::approx`] | rounded: the nearest `f64` point, used only for reporting |
+//! | operation | exact? | how |
+//! |---|---|---|
+//! | [`orient2d`], [`incircle`], [`orient3d`], [`insphere`] on input points | yes, for every finite `f64` input | `robust` (Shewchuk) inside a per-predicate safe exponent range, exact power-of-two scaling into it, else exact dyadic arithmetic |
+//! | [`compare_xy`], [`compare_xyz`] and coordinate comparisons | yes | they only compare values |
+//! | [`Crossing::new`] (are the lines parallel?), [`compare_slopes`] | yes | floating-point filter, exact fallback |
+//! | [`Crossing::compare_xy_point`], [`Crossing::compare_xy`], [`Crossing::orient`], [`ExactPoint::compare_xy`], [`ExactPoint::compare_x`], [`orient_exact`], [`compare_y_at_x`], [`on_segment`] | yes, for every finite input | floating-point filter, exact dyadic fallback (decided from the defining segments) |
+//! | [`segment_intersection`] | yes: the kind of intersection is exact; a shared endpoint is reported as that input point, never recomputed | exact predicates |
+//! | [`Crossing::approx`], [`ExactPoint::approx`] | rounded: the nearest `f64` per coordinate (correctly rounded, ties to even); `±inf` if the exact coordinate is beyond the `f64` range | double-double midpoint filter, exact rational rounding fallback |
+//!
+//! Non-finite coordinates are rejected by the algorithms ([`ensure_finite`]) before any
+//! predicate runs; the predicates themselves never panic on them and return a
+//! documented degenerate answer.
+mod arith;
 mod crossing;
+mod exact;
+mod filter;
+mod intersection;
 mod predicates;
 mod types;
 
-pub use crossing::Crossing;
+pub use crossing::{
+    compare_slopes, compare_y_at_x, on_segment, orient_exact, Crossing, ExactPoint,
+};
+#[doc(hidden)]
+pub use filter::{crossing_fallbacks, predicate_fallbacks};
+pub use intersection::{segment_intersection, SegmentIntersection};
 pub use predicates::{
     compare_xy, compare_xyz, incircle, insphere, orient2d, orient3d, CircleSide, Orientation,
     PlaneSide, SphereSide,

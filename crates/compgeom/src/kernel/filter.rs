@@ -1,0 +1,261 @@
+//! The floating-point filter: `f64` evaluation with a running error bound.
+//!
+//! Each value is a pair `(v, e)`: the `f64` result `v` of evaluating the expression,
+//! and a bound `e >= |v - exact|`. With `u = 2^-53` and round-to-nearest, one rounding
+//! of a real `z` to `fl(z)` errs by at most `u·|fl(z)|`, plus (for products only) half
+//! the smallest subnormal when the result underflows; sums and differences of floats
+//! that land in the subnormal range are exact. So
+//!
+//! * a difference of inputs `fl(a - b)`: `e = u·|v| + eta` (exactly zero when `a == b`);
+//! * `x ± y`: `e = e_x + e_y + u·|v| + eta`;
+//! * `x · y`: `e = |x|·e_y + |y|·e_x + e_x·e_y + u·|v| + eta`.
+//!
+//! `e` is itself computed in floating point. Each step's at most six roundings lose at
+//! most a relative `(1 - u)^6` or, where a term underflows, an absolute `2^-1075` each;
+//! the added `eta` (about `2^-1060`) covers the absolute losses at that very step (before
+//! any later product could magnify them), so by induction the computed final bound is
+//! at least `(1 - u)^(6·n)` times a true bound, for an expression of `n` steps. Our
+//! expressions have fewer than 100 steps, and the final test `|v| > e·(1 + 2^-40)`
+//! covers `(1 - u)^-600` with a wide margin.
+//! An overflow makes `v` or `e` infinite or NaN, and then no sign is decided. The
+//! filter thus needs no range assumption: it is rigorous for every finite input and
+//! merely undecided when it cannot tell.
+
+use super::arith::Arith;
+use std::cmp::Ordering;
+use std::sync::atomic::{AtomicU64, Ordering as MemOrder};
+
+/// Count of decisions on constructed points that the filter could not make and that
+/// went to the exact fallback (for tests and benchmarks).
+pub(crate) static CROSSING_FALLBACKS: AtomicU64 = AtomicU64::new(0);
+
+/// Count of predicate calls on input points that went to the exact fallback because a
+/// coordinate was outside the range where `robust` is exact.
+pub(crate) static PREDICATE_FALLBACKS: AtomicU64 = AtomicU64::new(0);
+
+/// Record one use of an exact fallback.
+pub(crate) fn count(counter: &AtomicU64) {
+    counter.fetch_add(1, MemOrder::Relaxed);
+}
+
+/// Number of exact fallbacks taken so far by comparisons of constructed points
+/// (crossings), summed over all threads. For tests and benchmarks.
+#[doc(hidden)]
+pub fn crossing_fallbacks() -> u64 {
+    CROSSING_FALLBACKS.load(MemOrder::Relaxed)
+}
+
+/// Number of exact fallbacks taken so far by the input-point predicates
+/// (`orient2d`, `incircle`, `orient3d`, `insphere`). For tests and benchmarks.
+#[doc(hidden)]
+pub fn predicate_fallbacks() -> u64 {
+    PREDICATE_FALLBACKS.load(MemOrder::Relaxed)
+}
+
+/// A floating-point value with a rigorous bound on its distance to the exact value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Bounded {
+    v: f64,
+    e: f64,
+}
+
+/// Unit roundoff of round-to-nearest `f64`.
+const U: f64 = 1.0 / 9_007_199_254_740_992.0; // 2^-53
+/// Absolute slack per operation (covers underflow in products and in the bound).
+const ETA: f64 = 5e-320; // between 2^-1061 and 2^-1060: thousands of 2^-1075
+/// Final relative safety factor on the bound (covers the bound's own roundings).
+const SAFETY: f64 = 1.0 + 1.0 / 1_099_511_627_776.0; // 1 + 2^-40
+
+impl Arith for Bounded {
+    fn val(a: f64) -> Self {
+        Bounded { v: a, e: 0.0 }
+    }
+
+    fn diff(a: f64, b: f64) -> Self {
+        let v = a - b;
+        // a == b exactly when v == 0: then the difference is exact.
+        let e = if v == 0.0 { 0.0 } else { v.abs() * U + ETA };
+        Bounded { v, e }
+    }
+
+    fn plus(&self, o: &Self) -> Self {
+        let v = self.v + o.v;
+        Bounded {
+            v,
+            e: self.e + o.e + v.abs() * U + ETA,
+        }
+    }
+
+    fn minus(&self, o: &Self) -> Self {
+        let v = self.v - o.v;
+        Bounded {
+            v,
+            e: self.e + o.e + v.abs() * U + ETA,
+        }
+    }
+
+    fn times(&self, o: &Self) -> Self {
+        let v = self.v * o.v;
+        let e = self.v.abs() * o.e + o.v.abs() * self.e + self.e * o.e + v.abs() * U + ETA;
+        Bounded { v, e }
+    }
+
+    fn sign(&self) -> Option<Ordering> {
+        let bound = self.e * SAFETY;
+        if self.v > bound {
+            Some(Ordering::Greater)
+        } else if -self.v > bound {
+            Some(Ordering::Less)
+        } else if self.v == 0.0 && self.e == 0.0 {
+            // Only exact operations on exact zeros lead here (e.g. a == b differences).
+            Some(Ordering::Equal)
+        } else {
+            None
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn constants_are_what_they_claim() {
+        assert_eq!(U, 2f64.powi(-53));
+        assert!(ETA > 0.0 && ETA < 2f64.powi(-1060) && ETA > 2f64.powi(-1070));
+        assert_eq!(SAFETY, 1.0 + 2f64.powi(-40));
+    }
+
+    #[test]
+    fn bounds_decide_clear_signs_and_defer_unclear_ones() {
+        let x = Bounded::diff(1.0, 1e-20);
+        assert_eq!(x.sign(), Some(Ordering::Greater));
+        assert_eq!(Bounded::diff(3.0, 3.0).sign(), Some(Ordering::Equal));
+        let big = Bounded::val(1e300).times(&Bounded::val(1e300));
+        assert_eq!(big.minus(&big).sign(), None); // overflow: inf - inf
+        let tiny = Bounded::val(1e-300).times(&Bounded::val(1e-300));
+        assert_eq!(tiny.sign(), None); // underflowed to 0 with an error bound
+                                       // fl(1/3)·3 - 1 = -2^-54 exactly, but the product rounds to 1: undecided.
+        let d = Bounded::val(1.0 / 3.0)
+            .times(&Bounded::val(3.0))
+            .minus(&Bounded::val(1.0));
+        assert_eq!(d.v, 0.0);
+        assert_eq!(d.sign(), None);
+    }
+
+    #[test]
+    fn double_double_decides_what_f64_cannot() {
+        // fl(1/3)·3 - 1 = -2^-54: the fused multiply-add keeps the product exact.
+        let third = DoubleDouble::val(1.0 / 3.0);
+        let d = third
+            .times(&DoubleDouble::val(3.0))
+            .minus(&DoubleDouble::val(1.0));
+        assert_eq!(d.sign(), Some(Ordering::Less));
+        assert_eq!(d.head(), -(2f64.powi(-54)));
+        // (1 + 2^-60) - 1 is exact as a difference of inputs.
+        let x = DoubleDouble::diff(1.0, -(2f64.powi(-60))).minus(&DoubleDouble::val(1.0));
+        assert_eq!(x.sign(), Some(Ordering::Greater));
+        assert_eq!(DoubleDouble::diff(2.0, 2.0).sign(), Some(Ordering::Equal));
+        let big = DoubleDouble::val(1e300).times(&DoubleDouble::val(1e300));
+        assert_eq!(big.sign(), None); // overflow
+    }
+}
+
+/// A double-double value `hi + lo` (`|lo| <= ulp(hi)/2`) with a rigorous bound `e` on
+/// its distance to the exact value: about 106 bits of precision. Used where plain `f64`
+/// cannot decide by construction (rounding a crossing to the nearest `f64` needs to
+/// place it relative to midpoints half an ulp away).
+///
+/// Error terms, with `u = 2^-53` and `eta` as for [`Bounded`]: differences of inputs
+/// are exact (two-sum); a sum adds at most `3u·(|x.lo| + |y.lo| + |t1|)` where `t1` is
+/// the exact error of `x.hi + y.hi`; a product (its `hi·hi` part is exact through a
+/// fused multiply-add, up to underflow) adds at most
+/// `4u·(|x.hi·y.lo| + |x.lo·y.hi| + |p_err|) + |x.lo·y.lo|` besides the propagated
+/// `|x|·e_y + |y|·e_x + e_x·e_y`. Each step adds `eta` for underflow, and the final test
+/// applies the same `1 + 2^-40` safety factor.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct DoubleDouble {
+    hi: f64,
+    lo: f64,
+    e: f64,
+}
+
+/// `a + b = s + err` exactly (no overflow).
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+impl DoubleDouble {
+    /// The leading `f64` of the value.
+    pub(crate) fn head(&self) -> f64 {
+        self.hi
+    }
+}
+
+impl Arith for DoubleDouble {
+    fn val(a: f64) -> Self {
+        DoubleDouble {
+            hi: a,
+            lo: 0.0,
+            e: 0.0,
+        }
+    }
+
+    fn diff(a: f64, b: f64) -> Self {
+        let (hi, lo) = two_sum(a, -b);
+        DoubleDouble { hi, lo, e: 0.0 }
+    }
+
+    fn plus(&self, o: &Self) -> Self {
+        let (s, t1) = two_sum(self.hi, o.hi);
+        let t = (self.lo + o.lo) + t1;
+        let (hi, lo) = two_sum(s, t);
+        let e = self.e + o.e + 3.0 * U * (self.lo.abs() + o.lo.abs() + t1.abs()) + ETA;
+        DoubleDouble { hi, lo, e }
+    }
+
+    fn minus(&self, o: &Self) -> Self {
+        self.plus(&DoubleDouble {
+            hi: -o.hi,
+            lo: -o.lo,
+            e: o.e,
+        })
+    }
+
+    fn times(&self, o: &Self) -> Self {
+        let p = self.hi * o.hi;
+        let p_err = self.hi.mul_add(o.hi, -p);
+        let (a, b) = (self.hi * o.lo, self.lo * o.hi);
+        let c = (a + b) + p_err;
+        let (hi, lo) = two_sum(p, c);
+        let (xm, ym) = (self.hi.abs() + self.lo.abs(), o.hi.abs() + o.lo.abs());
+        let e = xm * o.e
+            + ym * self.e
+            + self.e * o.e
+            + 4.0 * U * (a.abs() + b.abs() + p_err.abs())
+            + (self.lo * o.lo).abs()
+            + ETA;
+        DoubleDouble { hi, lo, e }
+    }
+
+    fn sign(&self) -> Option<Ordering> {
+        if !(self.hi.is_finite() && self.e.is_finite()) {
+            return None;
+        }
+        // |hi + lo| >= |hi|·(1 - u); the factor below is smaller even after rounding.
+        let low = self.hi.abs() * (1.0 - 1.0 / 1_125_899_906_842_624.0); // 1 - 2^-50
+        if low > self.e * SAFETY {
+            Some(if self.hi > 0.0 {
+                Ordering::Greater
+            } else {
+                Ordering::Less
+            })
+        } else if self.hi == 0.0 && self.lo == 0.0 && self.e == 0.0 {
+            Some(Ordering::Equal)
+        } else {
+            None
+        }
+    }
+}
