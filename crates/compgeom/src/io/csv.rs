@@ -70,6 +70,12 @@ fn rows(text: &str, source: &str, want: usize, names: &str) -> Result<Vec<Row>> 
             }
         }
         let at = || Location::new(source, line);
+        if let Some(k) = fields.iter().position(|f| f.is_empty()) {
+            return Err(Error::parse(
+                format!("field {} is empty in `{}`", k + 1, excerpt(content)),
+                at(),
+            ));
+        }
         if fields.len() != want {
             return Err(Error::parse(
                 format!(

@@ -27,6 +27,7 @@ pub struct Polyhedron {
 /// 0-based vertex index and up to four trailing numbers (a face colour) are allowed and
 /// ignored. `#` starts a comment; blank lines are skipped. The edge count is ignored.
 ///
+/// Empty input (nothing but blank and comment lines) gives an empty polyhedron.
 /// Errors (with the line): a missing header, malformed or non-finite numbers, wrong field
 /// counts, faces with fewer than 3 vertices, an index out of range, fewer lines than the
 /// counts promise, or content after the last face. O(size of the text).
@@ -45,7 +46,7 @@ pub fn read_off(text: &str, source: &str) -> Result<Polyhedron> {
     let last_line = text.lines().count().max(1);
 
     let Some((header_line, header)) = lines.next() else {
-        return Err(err("empty OFF input: expected an `OFF` header".into(), 1));
+        return Ok(Polyhedron::default()); // empty input: nothing, not an error
     };
     let mut header_fields = header.split_whitespace();
     if header_fields.next() != Some("OFF") {
