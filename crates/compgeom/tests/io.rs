@@ -101,6 +101,11 @@ fn detect_format_extension_first_then_content() {
     assert_eq!(sniff("x,y\n1,2").unwrap(), Format::Csv);
     assert_eq!(sniff("-1.5e3;2").unwrap(), Format::Csv);
     assert_eq!(sniff("").unwrap(), Format::Csv);
+    // `.txt` is sniffed, CSV when unsure.
+    let txt = |t: &str| detect_format(Some(Path::new("in.txt")), t).unwrap();
+    assert_eq!(txt("LINESTRING (0 0, 1 1)"), Format::Wkt);
+    assert_eq!(txt("1 2"), Format::Csv);
+    assert_eq!(txt("what is this"), Format::Csv);
     assert_eq!(sniff("# only a comment\n\n").unwrap(), Format::Csv);
     for bad in ["hello there\nworld", "x,y\nfoo,bar", "<svg/>", "17"] {
         match sniff(bad) {
@@ -257,6 +262,7 @@ POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0),
          (1 1, 1 2, 2 2, 1 1))
 POINT EMPTY
 POINT Z (100 200 300)
+SRID=4326;POINT (-1 -2)
 ";
 
 #[test]
@@ -283,6 +289,8 @@ fn wkt_points_collect_every_vertex() {
         p(2.0, 2.0),
         // Z dropped.
         p(100.0, 200.0),
+        // EWKT prefix skipped.
+        p(-1.0, -2.0),
     ];
     assert_eq!(pts, want);
 }
@@ -358,6 +366,12 @@ fn wkt_errors_name_the_line() {
         1,
         "non-finite",
     );
+    // 401 digits overflow to infinity.
+    let digits = format!("1{}", "0".repeat(400));
+    let long = format!("POINT ({digits} 1)");
+    assert_parse_error(read_points(&long, Format::Wkt, src), 1, "non-finite");
+    let long = format!("0 0\n{digits} 1");
+    assert_parse_error(read_points(&long, Format::Csv, src), 2, "non-finite");
     assert_parse_error(
         read_points("\nPOINT (1e999 1)", Format::Wkt, src),
         2,

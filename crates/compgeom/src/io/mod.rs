@@ -41,7 +41,7 @@
 //! line; a geometry may span lines). `#` comments are allowed between them. POINT,
 //! MULTIPOINT, LINESTRING, LINEARRING, POLYGON, MULTILINESTRING, MULTIPOLYGON,
 //! GEOMETRYCOLLECTION and `EMPTY` are understood; Z and M coordinates are accepted and
-//! dropped by the planar readers. An error names the line where the bad geometry starts
+//! dropped by the planar readers; an EWKT `SRID=n;` prefix is skipped. An error names the line where the bad geometry starts
 //! (or the line of a non-finite number).
 //!
 //! **GeoJSON.** A Geometry, Feature or FeatureCollection; features without geometry are
@@ -162,7 +162,8 @@ impl Format {
 /// The format of an input: from the path's extension when it says, otherwise sniffed from
 /// the content. `Err(UnknownFormat)` when neither decides.
 ///
-/// An input with extension `.json` is GeoJSON. Sniffing skips blank lines and `#` comment
+/// An input with extension `.json` is GeoJSON. A `.txt` input is sniffed and taken as CSV
+/// when sniffing does not decide. Sniffing skips blank lines and `#` comment
 /// lines, then: `{` or `[` → GeoJSON; an `OFF` header → OFF; a WKT keyword → WKT; a line of
 /// numbers (possibly after one header line of words) → CSV. Empty input (nothing but blank
 /// and comment lines) is CSV, which reads as empty.
@@ -173,14 +174,20 @@ impl Format {
 /// assert_eq!(detect_format(Some(Path::new("p.json")), "").unwrap(), Format::GeoJson);
 /// assert_eq!(detect_format(None, "# pts\nPOINT (1 2)").unwrap(), Format::Wkt);
 /// assert_eq!(detect_format(None, "x y\n1 2\n").unwrap(), Format::Csv);
+/// assert_eq!(detect_format(Some(Path::new("a.txt")), "POINT (1 2)").unwrap(), Format::Wkt);
 /// assert!(detect_format(None, "hello world\n").is_err());
 /// ```
 pub fn detect_format(path: Option<&Path>, text: &str) -> Result<Format> {
-    if let Some(format) = path.and_then(Format::from_extension) {
-        return Ok(match format {
-            Format::Json => Format::GeoJson,
-            f => f,
-        });
+    let by_extension = path.and_then(Format::from_extension);
+    let is_txt = path
+        .and_then(|p| p.extension())
+        .is_some_and(|e| e.eq_ignore_ascii_case("txt"));
+    match by_extension {
+        // `.txt` says little: trust the content, and fall back to CSV.
+        Some(_) if is_txt => return Ok(sniff(text).unwrap_or(Format::Csv)),
+        Some(Format::Json) => return Ok(Format::GeoJson),
+        Some(format) => return Ok(format),
+        None => {}
     }
     sniff(text).ok_or_else(|| {
         let name = path.map_or_else(|| "input".to_string(), |p| p.display().to_string());
@@ -212,7 +219,7 @@ fn sniff(text: &str) -> Option<Format> {
     if word == "OFF" {
         return Some(Format::Off);
     }
-    if wkt::is_keyword(&word) {
+    if wkt::is_keyword(&word) || word.eq_ignore_ascii_case("SRID") {
         return Some(Format::Wkt);
     }
     if csv::is_numeric_line(first) {

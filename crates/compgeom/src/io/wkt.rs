@@ -4,6 +4,7 @@
 
 use super::records::{excerpt, Body, Coord, Part};
 use crate::{Error, Location, Result};
+use std::borrow::Cow;
 use std::str::FromStr;
 use wkt::Wkt;
 
@@ -34,8 +35,11 @@ pub(crate) fn is_keyword(word: &str) -> bool {
 
 /// The text with every `#` comment blanked out (line structure kept) and a leading
 /// byte-order mark removed.
-fn blank_comments(text: &str) -> String {
+fn blank_comments(text: &str) -> Cow<'_, str> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if !text.contains('#') {
+        return Cow::Borrowed(text);
+    }
     let mut out = String::with_capacity(text.len());
     let mut in_comment = false;
     for c in text.chars() {
@@ -52,7 +56,7 @@ fn blank_comments(text: &str) -> String {
             _ => out.push(c),
         }
     }
-    out
+    Cow::Owned(out)
 }
 
 fn is_space(b: u8) -> bool {
@@ -86,6 +90,21 @@ fn split(text: &str, source: &str) -> Result<Vec<Span>> {
         }
         if i == n {
             break;
+        }
+        // EWKT's `SRID=n;` prefix: the reference system is not ours to interpret; skip it.
+        if b.len() - i >= 5 && b[i..i + 5].eq_ignore_ascii_case(b"SRID=") {
+            match text[i..].find(';') {
+                Some(k) if !text[i..i + k].contains('\n') => {
+                    i += k + 1;
+                    continue;
+                }
+                _ => {
+                    return Err(err(
+                        "an EWKT `SRID=` prefix must end with `;` on its line".into(),
+                        line,
+                    ))
+                }
+            }
         }
         let (start, start_line) = (i, line);
         if !b[i].is_ascii_alphabetic() {
@@ -195,7 +214,13 @@ fn scan_body(
                     i += 1;
                 }
                 let token = &text[token_start..i];
-                if token.parse::<f64>().is_ok_and(|v| !v.is_finite()) {
+                // Only an exponent, `inf`/`nan` or a very long digit string can be
+                // non-finite; other tokens need no second parse.
+                let suspicious = token.len() > 300
+                    || token
+                        .bytes()
+                        .any(|c| matches!(c, b'e' | b'E' | b'i' | b'I' | b'n' | b'N'));
+                if suspicious && token.parse::<f64>().is_ok_and(|v| !v.is_finite()) {
                     return Err(Error::parse(
                         format!("non-finite coordinate `{}`", excerpt(token)),
                         Location::new(source, *line),

@@ -24,22 +24,65 @@ use std::fmt::Write as _;
 /// assert_eq!(format_f64(0.1 + 0.2).parse::<f64>().unwrap(), 0.1 + 0.2);
 /// ```
 pub fn format_f64(x: f64) -> String {
+    let mut s = String::new();
+    push_f64(&mut s, x);
+    s
+}
+
+/// Append [`format_f64`]`(x)` to `out` without allocating.
+pub(crate) fn push_f64(out: &mut String, x: f64) {
     if !x.is_finite() {
-        return format!("{x}");
+        let _ = write!(out, "{x}");
+        return;
     }
-    let sci = format!("{x:e}");
-    let exponent: i32 = sci
-        .rsplit_once('e')
-        .and_then(|(_, e)| e.parse().ok())
-        .unwrap_or(0);
-    // Outside this range the plain form is longer than the scientific one.
-    if (-7..=21).contains(&exponent) {
-        let plain = format!("{x}");
-        if plain.len() <= sci.len() {
-            return plain;
+    // The scientific form carries the shortest digits (at most 17) and the exponent; the
+    // plain form is laid out from them when it is not longer.
+    let start = out.len();
+    let _ = write!(out, "{x:e}");
+    let sci = &out[start..];
+    let (mantissa, exponent) = sci.split_once('e').unwrap_or((sci, "0"));
+    let exponent: i64 = exponent.parse().unwrap_or(0);
+    let mut digits = [0u8; 24];
+    let mut d = 0;
+    for c in mantissa.bytes().filter(u8::is_ascii_digit) {
+        digits[d] = c;
+        d += 1;
+    }
+    let negative = x.is_sign_negative();
+    let di = d as i64;
+    let body_len = if exponent >= 0 {
+        if di <= exponent + 1 {
+            exponent + 1
+        } else {
+            di + 1
         }
+    } else {
+        // "0." then −exponent−1 zeros then the digits.
+        2 + (-exponent - 1) + di
+    };
+    if body_len + i64::from(negative) > sci.len() as i64 {
+        return; // the scientific form is shorter
     }
-    sci
+    out.truncate(start);
+    if negative {
+        out.push('-');
+    }
+    let digits = std::str::from_utf8(&digits[..d]).unwrap_or("0");
+    if exponent >= 0 {
+        let int_len = (exponent + 1) as usize;
+        if d <= int_len {
+            out.push_str(digits);
+            out.extend(std::iter::repeat('0').take(int_len - d));
+        } else {
+            out.push_str(&digits[..int_len]);
+            out.push('.');
+            out.push_str(&digits[int_len..]);
+        }
+    } else {
+        out.push_str("0.");
+        out.extend(std::iter::repeat('0').take((-exponent - 1) as usize));
+        out.push_str(digits);
+    }
 }
 
 /// `Err(NonFinite)` if any vertex of `shape` is NaN or infinite.
@@ -58,7 +101,10 @@ pub(crate) fn ensure_finite_shape(shape: &Shape) -> Result<()> {
 }
 
 fn csv_point(out: &mut String, p: Point2) {
-    let _ = writeln!(out, "{},{}", format_f64(p.x), format_f64(p.y));
+    push_f64(out, p.x);
+    out.push(',');
+    push_f64(out, p.y);
+    out.push('\n');
 }
 
 /// Closed copy of a ring (first vertex repeated at the end), for formats that close rings.
@@ -109,7 +155,9 @@ fn wkt_coords(out: &mut String, vs: impl Iterator<Item = Point2>) {
         if i > 0 {
             out.push_str(", ");
         }
-        let _ = write!(out, "{} {}", format_f64(v.x), format_f64(v.y));
+        push_f64(out, v.x);
+        out.push(' ');
+        push_f64(out, v.y);
     }
     out.push(')');
 }
@@ -176,7 +224,11 @@ pub(crate) fn wkt_shape(shape: &Shape) -> String {
 }
 
 fn json_position(out: &mut String, p: Point2) {
-    let _ = write!(out, "[{},{}]", format_f64(p.x), format_f64(p.y));
+    out.push('[');
+    push_f64(out, p.x);
+    out.push(',');
+    push_f64(out, p.y);
+    out.push(']');
 }
 
 fn json_positions(out: &mut String, vs: impl Iterator<Item = Point2>) {
