@@ -4,7 +4,8 @@
 
 use compgeom::io::{
     detect_format, format_f64, read_off, read_points, read_points3, read_polygons, read_segments,
-    ring_orientation, write_off, write_segments, write_shape, Format, Polyhedron, Shape,
+    read_text, ring_orientation, write_off, write_points3, write_segments, write_shape, Format,
+    Polyhedron, Shape,
 };
 use compgeom::{Error, MultiPolygon, Orientation, Point2, Point3, Polygon, Segment2};
 use num_rational::BigRational;
@@ -113,6 +114,24 @@ fn detect_format_extension_first_then_content() {
             other => panic!("{bad:?}: expected UnknownFormat, got {other:?}"),
         }
     }
+}
+
+#[test]
+fn read_text_reads_files_and_locates_bad_utf8() {
+    let dir = std::env::temp_dir().join(format!("compgeom-io-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = dir.join("pts.csv");
+    std::fs::write(&good, "0,0\n1,1\n").unwrap();
+    let text = read_text(&good).unwrap();
+    assert_eq!(read_points(&text, Format::Csv, "pts.csv").unwrap().len(), 2);
+    let bad = dir.join("bad.csv");
+    std::fs::write(&bad, b"0,0\n1,1\n2,\xff\n").unwrap();
+    assert_eq!(parse_error(read_text(&bad)).1, Some(3));
+    assert!(matches!(
+        read_text(&dir.join("missing.csv")),
+        Err(Error::Io { .. })
+    ));
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 // ---------------------------------------------------------------- CSV
@@ -870,6 +889,23 @@ proptest! {
                 (a.x.to_bits(), a.y.to_bits(), a.z.to_bits()),
                 (b.x.to_bits(), b.y.to_bits(), b.z.to_bits())
             );
+        }
+    }
+
+    #[test]
+    fn points3_round_trip(pts in prop::collection::vec((coord(), coord(), coord()), 0..8)) {
+        let pts: Vec<Point3> = pts.into_iter().map(|(x, y, z)| Point3::new(x, y, z)).collect();
+        for f in [Format::Csv, Format::Wkt, Format::GeoJson, Format::Off] {
+            let text = write_points3(&pts, f).unwrap();
+            let back = read_points3(&text, f, "rt").unwrap();
+            prop_assert_eq!(back.len(), pts.len());
+            for (a, b) in back.iter().zip(&pts) {
+                prop_assert_eq!(
+                    (a.x.to_bits(), a.y.to_bits(), a.z.to_bits()),
+                    (b.x.to_bits(), b.y.to_bits(), b.z.to_bits()),
+                    "{:?}: {}", f, text
+                );
+            }
         }
     }
 

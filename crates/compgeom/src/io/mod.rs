@@ -91,7 +91,7 @@ use std::path::Path;
 
 pub use off::{read_off, write_off, Polyhedron};
 pub use orient::ring_orientation;
-pub use write::{format_f64, write_segments};
+pub use write::{format_f64, write_points3, write_segments};
 
 /// A file format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -301,6 +301,45 @@ pub fn read_polygons(text: &str, format: Format, source: &str) -> Result<MultiPo
         Format::GeoJson | Format::Json => records::polygons(&geojson::read(text, source)?, source),
         Format::Off => Err(not_planar(source)),
     }
+}
+
+/// The text of the file at `path`, or of standard input when `path` is `-`, ready for the
+/// readers. A failure to read is [`Error::Io`](crate::Error::Io) naming the path; bytes
+/// that are not UTF-8 are a parse error at the line where they occur.
+///
+/// ```
+/// use compgeom::io::read_text;
+/// use std::path::Path;
+/// let err = read_text(Path::new("/no/such/file.csv")).unwrap_err();
+/// assert!(err.to_string().starts_with("/no/such/file.csv: "));
+/// ```
+pub fn read_text(path: &Path) -> Result<String> {
+    use std::io::Read as _;
+    let name = path.display().to_string();
+    let io_error = |source| Error::Io {
+        path: name.clone(),
+        source,
+    };
+    let mut bytes = Vec::new();
+    if path == Path::new("-") {
+        std::io::stdin()
+            .lock()
+            .read_to_end(&mut bytes)
+            .map_err(io_error)?;
+    } else {
+        bytes = std::fs::read(path).map_err(io_error)?;
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let valid = e.utf8_error().valid_up_to();
+        let line = 1 + e.as_bytes()[..valid]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count();
+        Error::parse(
+            "the input is not UTF-8 text",
+            crate::Location::new(name.clone(), line),
+        )
+    })
 }
 
 fn not_planar(source: &str) -> Error {

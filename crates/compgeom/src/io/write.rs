@@ -2,7 +2,7 @@
 
 use super::orient::ring_orientation;
 use super::{Format, Shape};
-use crate::kernel::{ensure_finite, Orientation, Point2, Polygon, Segment2};
+use crate::kernel::{ensure_finite, Orientation, Point2, Point3, Polygon, Segment2};
 use crate::{Error, Result};
 use std::fmt::Write as _;
 
@@ -363,6 +363,79 @@ pub fn write_segments(segments: &[Segment2], format: Format) -> Result<String> {
             return Err(Error::InvalidInput(
                 "OFF holds 3D polyhedra; write segments as csv, wkt or geojson".into(),
             ))
+        }
+    }
+    Ok(out)
+}
+
+/// Points in space as text: CSV `x,y,z` lines, WKT `MULTIPOINT Z ((x y z), …)` (or
+/// `MULTIPOINT Z EMPTY`), a GeoJSON `MultiPoint` with 3-element positions (also for
+/// [`Format::Json`]), or OFF (the vertices, no faces). Reads back with
+/// [`super::read_points3`] bit for bit. `Err(NonFinite)` for NaN or infinite coordinates.
+///
+/// ```
+/// use compgeom::io::{write_points3, Format};
+/// use compgeom::Point3;
+/// let p = [Point3::new(1.0, 2.0, 0.5)];
+/// assert_eq!(write_points3(&p, Format::Wkt).unwrap(), "MULTIPOINT Z ((1 2 0.5))\n");
+/// ```
+pub fn write_points3(points: &[Point3], format: Format) -> Result<String> {
+    if let Some(i) = points.iter().position(|p| !p.is_finite()) {
+        let p = points[i];
+        let value = [p.x, p.y, p.z]
+            .into_iter()
+            .find(|v| !v.is_finite())
+            .unwrap_or(f64::NAN);
+        return Err(Error::NonFinite {
+            what: format!("output point {i}"),
+            value,
+        });
+    }
+    let mut out = String::new();
+    let push3 = |out: &mut String, p: &Point3, sep: char| {
+        push_f64(out, p.x);
+        out.push(sep);
+        push_f64(out, p.y);
+        out.push(sep);
+        push_f64(out, p.z);
+    };
+    match format {
+        Format::Csv => {
+            for p in points {
+                push3(&mut out, p, ',');
+                out.push('\n');
+            }
+        }
+        Format::Wkt if points.is_empty() => out.push_str("MULTIPOINT Z EMPTY\n"),
+        Format::Wkt => {
+            out.push_str("MULTIPOINT Z (");
+            for (i, p) in points.iter().enumerate() {
+                if i > 0 {
+                    out.push_str(", ");
+                }
+                out.push('(');
+                push3(&mut out, p, ' ');
+                out.push(')');
+            }
+            out.push_str(")\n");
+        }
+        Format::GeoJson | Format::Json => {
+            out.push_str(r#"{"type":"MultiPoint","coordinates":["#);
+            for (i, p) in points.iter().enumerate() {
+                if i > 0 {
+                    out.push(',');
+                }
+                out.push('[');
+                push3(&mut out, p, ',');
+                out.push(']');
+            }
+            out.push_str("]}\n");
+        }
+        Format::Off => {
+            out = super::write_off(&super::Polyhedron {
+                vertices: points.to_vec(),
+                faces: Vec::new(),
+            });
         }
     }
     Ok(out)
