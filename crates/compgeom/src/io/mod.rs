@@ -8,10 +8,11 @@
 //!
 //! # Errors
 //!
-//! Malformed input never panics: every reader returns [`Error::Parse`](crate::Error::Parse)
+//! Malformed input never panics: every reader returns [`Error::Parse`]
 //! with a [`Location`](crate::Location) naming the source and, where the format is line
-//! oriented or the parser knows it, the 1-based line (`error: malformed number `1.2.3`
-//! in field 2 (points.csv:7)`). NaN and infinite coordinates, including text such as
+//! oriented or the parser knows it, the 1-based line; its message prints as, e.g.,
+//! ``malformed number `1.2.3` in field 1 (points.csv:7)``. NaN and infinite coordinates,
+//! including text such as
 //! `nan`, `inf` or `1e999` (which overflows to infinity), are parse errors at their line.
 //! Empty input (or input holding only comments) is not an error: it gives an empty result.
 //!
@@ -41,8 +42,9 @@
 //! line; a geometry may span lines). `#` comments are allowed between them. POINT,
 //! MULTIPOINT, LINESTRING, LINEARRING, POLYGON, MULTILINESTRING, MULTIPOLYGON,
 //! GEOMETRYCOLLECTION and `EMPTY` are understood; Z and M coordinates are accepted and
-//! dropped by the planar readers; an EWKT `SRID=n;` prefix is skipped. An error names the line where the bad geometry starts
-//! (or the line of a non-finite number).
+//! dropped by the planar readers; an EWKT `SRID=n;` prefix is skipped. An error names the
+//! line where the bad geometry starts (or the line of a non-finite number). Hex WKB is
+//! not read.
 //!
 //! **GeoJSON.** A Geometry, Feature or FeatureCollection; features without geometry are
 //! skipped; altitudes are dropped by the planar readers. Syntax errors carry serde_json's
@@ -53,7 +55,8 @@
 //!
 //! **OFF.** `OFF` header, `#` comments, `nv nf ne` counts, `nv` vertex lines `x y z`,
 //! `nf` face lines `n i1 … in` (0-based indices, checked to be in range; trailing colour
-//! values allowed). See [`read_off`].
+//! values allowed). See [`read_off`]. The planar readers refuse OFF
+//! ([`Error::InvalidInput`]).
 //!
 //! # Semantics of the geometry readers
 //!
@@ -68,13 +71,25 @@
 //!
 //! # Formats written
 //!
-//! [`write_shape`] writes a [`Shape`]; numbers are written with [`format_f64`], so every
-//! coordinate reads back bit for bit. See [`write_shape`] for the layout of each format.
+//! [`write_shape`] writes a [`Shape`], [`write_segments`] segments, [`write_points3`]
+//! points in space and [`write_off`] a [`Polyhedron`]. Numbers are written with
+//! [`format_f64`], so every coordinate reads back bit for bit through the matching reader.
+//! See [`write_shape`] for the layout of each format.
+//!
+//! # Also here
+//!
+//! - [`read_text`]: a file's (or standard input's) text, with located UTF-8 errors.
+//! - `From` conversions between the kernel types and `geo-types` (`Point2` ↔ `Coord` /
+//!   `Point`, `Segment2` ↔ `Line`, `Polygon` ↔ `Polygon` with open ↔ closed rings,
+//!   `MultiPolygon` ↔ `MultiPolygon`, and `Shape` → `Geometry`).
 //!
 //! # Complexity
 //!
 //! Reading and writing are linear in the size of the text (the GeoJSON orientation test is
-//! linear in the ring size, with an exact rational fallback only for near-zero areas).
+//! linear in the ring size, with an exact big-integer fallback only for near-zero areas).
+//! Measured (opt-level 1, 1,000,000 points, about 40 MB, on a loaded 2-core machine):
+//! writing 0.5–0.9 s in each format; reading CSV 0.3–0.7 s, GeoJSON 0.4–0.8 s, WKT
+//! 1.2–1.8 s.
 
 mod csv;
 mod geo_types;
@@ -304,7 +319,7 @@ pub fn read_polygons(text: &str, format: Format, source: &str) -> Result<MultiPo
 }
 
 /// The text of the file at `path`, or of standard input when `path` is `-`, ready for the
-/// readers. A failure to read is [`Error::Io`](crate::Error::Io) naming the path; bytes
+/// readers. A failure to read is [`Error::Io`] naming the path; bytes
 /// that are not UTF-8 are a parse error at the line where they occur.
 ///
 /// ```
