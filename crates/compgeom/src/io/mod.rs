@@ -421,3 +421,22 @@ pub fn write_shape(shape: &Shape, format: Format) -> Result<String> {
         )),
     }
 }
+
+/// `shape` as a GeoJSON geometry object in a [`serde_json::Value`], for embedding in a
+/// larger JSON document (the CLI's `--format json` results). The same geometry, ring
+/// orientation and numbers as [`write_shape`] with [`Format::GeoJson`]; serde_json prints
+/// the numbers back bit for bit. `Err(NonFinite)` for NaN or infinite coordinates.
+///
+/// ```
+/// use compgeom::io::{to_geojson_value, Shape};
+/// use compgeom::Point2;
+/// let v = to_geojson_value(&Shape::Point(Point2::new(0.5, -2.0))).unwrap();
+/// assert_eq!(v["type"], "Point");
+/// assert_eq!(v["coordinates"][1].as_f64(), Some(-2.0));
+/// ```
+pub fn to_geojson_value(shape: &Shape) -> Result<serde_json::Value> {
+    let text = write_shape(shape, Format::GeoJson)?;
+    serde_json::from_str(&text).map_err(|e| {
+        Error::Verification(format!("compgeom wrote GeoJSON that does not parse: {e}"))
+    })
+}
