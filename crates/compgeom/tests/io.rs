@@ -463,11 +463,20 @@ fn geojson_geometry_feature_and_collection() {
     let segs = read_segments(fc, Format::Json, "fc.json").unwrap();
     assert_eq!(segs.len(), 2 + 3);
     assert_eq!(read_points(fc, Format::GeoJson, "fc").unwrap().len(), 4 + 3);
-    let e = read_polygons(fc, Format::GeoJson, "fc").unwrap_err();
-    assert!(
-        e.to_string()
-            .contains("feature 2 (LineString): not a polygon"),
-        "{e}"
+    // The second feature starts on line 3 of `fc`.
+    assert_parse_error(
+        read_polygons(fc, Format::GeoJson, "fc"),
+        3,
+        "feature 2 (LineString): not a polygon",
+    );
+    assert_parse_error(
+        read_segments(
+            "\n\n  {\"type\": \"Point\", \"coordinates\": [1, 2]}",
+            Format::GeoJson,
+            "pt",
+        ),
+        3,
+        "no edges",
     );
     let z = r#"{"type": "Point", "coordinates": [1, 2, 3]}"#;
     assert_eq!(

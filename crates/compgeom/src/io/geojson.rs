@@ -1,4 +1,5 @@
 //! GeoJSON input (RFC 7946) through the `geojson` crate, plus bare JSON coordinate arrays.
+//! Errors found after parsing carry the line where the offending feature starts.
 
 use super::records::{Body, Coord, Part};
 use crate::{Error, Location, Result};
@@ -35,22 +36,68 @@ fn coord(p: &Position) -> Coord {
     }
 }
 
-fn line(ps: &[Position]) -> Vec<Coord> {
+fn line_coords(ps: &[Position]) -> Vec<Coord> {
     ps.iter().map(coord).collect()
 }
 
 fn rings(rs: &[Vec<Position>]) -> Vec<Vec<Coord>> {
-    rs.iter().map(|r| line(r)).collect()
+    rs.iter().map(|r| line_coords(r)).collect()
+}
+
+/// The line where each element of the top-level `"features"` array starts, found by a
+/// scan of the JSON structure (strings and nesting), so that errors found after parsing
+/// can name a line. Only meaningful for text serde_json has accepted.
+fn feature_lines(text: &str) -> Vec<usize> {
+    let b = text.as_bytes();
+    let mut lines = Vec::new();
+    let (mut i, mut line, mut depth) = (0, 1, 0usize);
+    let mut key_is_features = false;
+    let mut in_features = false;
+    while i < b.len() {
+        match b[i] {
+            b'\n' => line += 1,
+            b'"' => {
+                let start = i + 1;
+                i += 1;
+                while i < b.len() && b[i] != b'"' {
+                    i += if b[i] == b'\\' { 2 } else { 1 };
+                }
+                let end = i.min(b.len());
+                if depth == 1 {
+                    key_is_features = &b[start..end] == b"features";
+                }
+            }
+            b',' if depth == 1 => key_is_features = false,
+            b'{' | b'[' => {
+                if in_features && depth == 2 {
+                    lines.push(line);
+                }
+                depth += 1;
+                if depth == 2 && b[i] == b'[' && key_is_features {
+                    in_features = true;
+                }
+            }
+            b'}' | b']' => {
+                depth = depth.saturating_sub(1);
+                if depth < 2 {
+                    in_features = false;
+                }
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    lines
 }
 
 /// Flatten a geometry into parts (empty members contribute nothing).
-fn flatten(g: &Geometry, what: &str, out: &mut Vec<Part>) {
+fn flatten(g: &Geometry, what: &str, line: Option<usize>, out: &mut Vec<Part>) {
     let mut push = |body: Body, kind: &str| {
         out.push(Part {
             body,
             kind: kind.to_string(),
             what: what.to_string(),
-            line: None,
+            line,
         })
     };
     match &g.value {
@@ -62,12 +109,12 @@ fn flatten(g: &Geometry, what: &str, out: &mut Vec<Part>) {
         }
         GeometryValue::LineString { coordinates } => {
             if !coordinates.is_empty() {
-                push(Body::Line(line(coordinates)), "LineString");
+                push(Body::Line(line_coords(coordinates)), "LineString");
             }
         }
         GeometryValue::MultiLineString { coordinates } => {
             for l in coordinates.iter().filter(|l| !l.is_empty()) {
-                push(Body::Line(line(l)), "MultiLineString");
+                push(Body::Line(line_coords(l)), "MultiLineString");
             }
         }
         GeometryValue::Polygon { coordinates } => {
@@ -82,7 +129,7 @@ fn flatten(g: &Geometry, what: &str, out: &mut Vec<Part>) {
         }
         GeometryValue::GeometryCollection { geometries } => {
             for member in geometries {
-                flatten(member, what, out);
+                flatten(member, what, line, out);
             }
         }
     }
@@ -101,17 +148,22 @@ pub(crate) fn read(text: &str, source: &str) -> Result<Vec<Part>> {
     }
     let doc: GeoJson = serde_json::from_str(text).map_err(|e| json_error(&e, source))?;
     let mut parts = Vec::new();
+    // The line of the opening brace.
+    let leading = &text[..text.len() - trimmed.len()];
+    let first_line = Some(1 + leading.matches('\n').count());
     match &doc {
-        GeoJson::Geometry(g) => flatten(g, "geometry", &mut parts),
+        GeoJson::Geometry(g) => flatten(g, "geometry", first_line, &mut parts),
         GeoJson::Feature(f) => {
             if let Some(g) = &f.geometry {
-                flatten(g, "feature 1", &mut parts);
+                flatten(g, "feature 1", first_line, &mut parts);
             }
         }
         GeoJson::FeatureCollection(fc) => {
+            let lines = feature_lines(text);
             for (i, f) in fc.features.iter().enumerate() {
                 if let Some(g) = &f.geometry {
-                    flatten(g, &format!("feature {}", i + 1), &mut parts);
+                    let what = format!("feature {}", i + 1);
+                    flatten(g, &what, lines.get(i).copied(), &mut parts);
                 }
             }
         }

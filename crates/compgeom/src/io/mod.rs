@@ -48,7 +48,8 @@
 //!
 //! **GeoJSON.** A Geometry, Feature or FeatureCollection; features without geometry are
 //! skipped; altitudes are dropped by the planar readers. Syntax errors carry serde_json's
-//! line; errors found after parsing name the feature ("feature 3"). As an extension, a
+//! line; errors found after parsing name the feature ("feature 3") and the line where it
+//! starts. As an extension, a
 //! bare JSON array is read as coordinates: an array of `[x, y]` positions is a set of
 //! points (delaunator's fixture format), an array of rings is one polygon (earcut's), an
 //! array of such polygons is a multipolygon.
