@@ -1031,3 +1031,43 @@ fn reads_turf_convex_geojson() {
         assert!(!mp.0.is_empty());
     }
 }
+
+/// Every `*.json` file directly under `rel`, or `None` (with a notice) if absent.
+fn fixture_dir(rel: &str) -> Option<Vec<PathBuf>> {
+    let dir = cases_dir().join(rel);
+    let Ok(entries) = std::fs::read_dir(&dir) else {
+        println!("skipped: {} not found", dir.display());
+        return None;
+    };
+    let mut files: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    files.sort();
+    Some(files)
+}
+
+#[test]
+fn reads_bare_array_fixtures_of_earcut_and_delaunator() {
+    if let Some(files) = fixture_dir("earcut/fixtures") {
+        assert!(!files.is_empty());
+        for path in files {
+            let text = read_text(&path).unwrap();
+            let f = detect_format(Some(&path), &text).unwrap();
+            let name = path.display().to_string();
+            let mp = read_polygons(&text, f, &name).unwrap();
+            assert_eq!(mp.0.len(), 1, "{name}");
+            assert!(mp.0[0].exterior.len() >= 3, "{name}");
+            assert!(!read_points(&text, f, &name).unwrap().is_empty(), "{name}");
+        }
+    }
+    if let Some(files) = fixture_dir("delaunator/fixtures") {
+        assert!(!files.is_empty());
+        for path in files {
+            let text = read_text(&path).unwrap();
+            let name = path.display().to_string();
+            let pts = read_points(&text, Format::GeoJson, &name).unwrap();
+            assert!(pts.len() >= 3, "{name}");
+        }
+    }
+}
