@@ -89,8 +89,8 @@
 //! Reading and writing are linear in the size of the text (the GeoJSON orientation test is
 //! linear in the ring size, with an exact big-integer fallback only for near-zero areas).
 //! Measured (opt-level 1, 1,000,000 points, about 40 MB, on a loaded 2-core machine):
-//! writing 0.5–0.9 s in each format; reading CSV 0.3–0.7 s, GeoJSON 0.4–0.8 s, WKT
-//! 1.2–1.8 s.
+//! writing 0.4–0.9 s in each format; reading CSV 0.3–0.7 s, GeoJSON 0.4–0.8 s, WKT
+//! 0.8–1.8 s (the ranges are run-to-run noise of the shared machine).
 
 mod csv;
 mod geo_types;
