@@ -1,0 +1,223 @@
+//! The common middle of the WKT and GeoJSON readers: geometries flattened into parts
+//! (a point, a line string, a polygon's rings), each remembering where it came from, and
+//! the conversions from parts to points, segments, polygons and 3D points.
+
+use crate::kernel::{MultiPolygon, Point2, Point3, Polygon, Segment2};
+use crate::{Error, Location, Result};
+
+/// A coordinate as read: x, y and, when the input gave one, z (M values are dropped).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Coord {
+    pub x: f64,
+    pub y: f64,
+    pub z: Option<f64>,
+}
+
+/// The shape of one part.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Body {
+    Point(Coord),
+    Line(Vec<Coord>),
+    /// Rings as read (possibly closed); the first is the exterior.
+    Polygon(Vec<Vec<Coord>>),
+}
+
+/// One part of the input and where it came from.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Part {
+    pub body: Body,
+    /// The geometry type as the input spelled it, e.g. `MULTIPOINT` or `LineString`.
+    pub kind: String,
+    /// The element of the input, e.g. "geometry 3" or "feature 2".
+    pub what: String,
+    /// 1-based line, when known.
+    pub line: Option<usize>,
+}
+
+impl Part {
+    fn error(&self, source: &str, message: &str) -> Error {
+        Error::parse(
+            format!("{} ({}): {message}", self.what, self.kind),
+            Location {
+                source: Some(source.to_string()),
+                line: self.line,
+            },
+        )
+    }
+
+    fn coords(&self) -> Box<dyn Iterator<Item = &Coord> + '_> {
+        match &self.body {
+            Body::Point(c) => Box::new(std::iter::once(c)),
+            Body::Line(cs) => Box::new(cs.iter()),
+            Body::Polygon(rings) => Box::new(rings.iter().flatten()),
+        }
+    }
+}
+
+/// `Err` naming the part if any coordinate is NaN or infinite.
+pub(crate) fn check_finite(parts: &[Part], source: &str) -> Result<()> {
+    for part in parts {
+        for c in part.coords() {
+            let bad = [Some(c.x), Some(c.y), c.z]
+                .into_iter()
+                .flatten()
+                .find(|v| !v.is_finite());
+            if let Some(v) = bad {
+                return Err(part.error(source, &format!("non-finite coordinate {v}")));
+            }
+        }
+    }
+    Ok(())
+}
+
+fn p2(c: &Coord) -> Point2 {
+    Point2::new(c.x, c.y)
+}
+
+/// The ring without its repeated closing vertex (if the last vertex equals the first).
+pub(crate) fn open_ring<T: PartialEq + Copy>(ring: &[T]) -> &[T] {
+    match ring {
+        [first, .., last] if first == last => &ring[..ring.len() - 1],
+        _ => ring,
+    }
+}
+
+/// Every vertex: points, all line-string vertices, ring vertices without the closing one.
+pub(crate) fn points(parts: &[Part], source: &str) -> Result<Vec<Point2>> {
+    check_finite(parts, source)?;
+    let mut out = Vec::new();
+    for part in parts {
+        match &part.body {
+            Body::Point(c) => out.push(p2(c)),
+            Body::Line(cs) => out.extend(cs.iter().map(p2)),
+            Body::Polygon(rings) => {
+                for ring in rings {
+                    let ring: Vec<Point2> = ring.iter().map(p2).collect();
+                    out.extend_from_slice(open_ring(&ring));
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Every vertex in space; each must have a z value.
+pub(crate) fn points3(parts: &[Part], source: &str) -> Result<Vec<Point3>> {
+    check_finite(parts, source)?;
+    let mut out = Vec::new();
+    for part in parts {
+        let mut coords: Vec<Coord> = Vec::new();
+        match &part.body {
+            Body::Point(c) => coords.push(*c),
+            Body::Line(cs) => coords.extend_from_slice(cs),
+            Body::Polygon(rings) => {
+                for ring in rings {
+                    coords.extend_from_slice(open_ring(ring));
+                }
+            }
+        }
+        for c in coords {
+            let z =
+                c.z.ok_or_else(|| part.error(source, "a coordinate has no z value"))?;
+            out.push(Point3::new(c.x, c.y, z));
+        }
+    }
+    Ok(out)
+}
+
+/// Edges of the polyline `vs`, skipping zero-length ones.
+fn push_edges(vs: &[Point2], out: &mut Vec<Segment2>) {
+    out.extend(
+        vs.windows(2)
+            .filter(|w| w[0] != w[1])
+            .map(|w| Segment2::new(w[0], w[1])),
+    );
+}
+
+/// Every edge of line strings and polygon rings (closing edges included, zero-length
+/// edges skipped). Points are an error.
+pub(crate) fn segments(parts: &[Part], source: &str) -> Result<Vec<Segment2>> {
+    check_finite(parts, source)?;
+    let mut out = Vec::new();
+    for part in parts {
+        match &part.body {
+            Body::Point(_) => {
+                return Err(part.error(
+                    source,
+                    "a point has no edges; segments come from line strings and polygon rings",
+                ))
+            }
+            Body::Line(cs) => push_edges(&cs.iter().map(p2).collect::<Vec<_>>(), &mut out),
+            Body::Polygon(rings) => {
+                for ring in rings {
+                    let ring: Vec<Point2> = ring.iter().map(p2).collect();
+                    let mut ring = open_ring(&ring).to_vec();
+                    if ring.len() >= 3 {
+                        ring.push(ring[0]);
+                    }
+                    push_edges(&ring, &mut out);
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Polygons with open rings of at least 3 vertices; anything else is an error.
+pub(crate) fn polygons(parts: &[Part], source: &str) -> Result<MultiPolygon> {
+    check_finite(parts, source)?;
+    let mut out = Vec::new();
+    for part in parts {
+        let Body::Polygon(rings) = &part.body else {
+            return Err(part.error(source, "not a polygon"));
+        };
+        let mut open = Vec::with_capacity(rings.len());
+        for (i, ring) in rings.iter().enumerate() {
+            let ring: Vec<Point2> = ring.iter().map(p2).collect();
+            let ring = open_ring(&ring).to_vec();
+            if ring.len() < 3 {
+                return Err(part.error(
+                    source,
+                    &format!(
+                        "ring {} has {} vertices (not counting a closing repeat); a polygon ring needs at least 3",
+                        i + 1,
+                        ring.len()
+                    ),
+                ));
+            }
+            open.push(ring);
+        }
+        let mut open = open.into_iter();
+        if let Some(exterior) = open.next() {
+            out.push(Polygon::new(exterior, open.collect()));
+        }
+    }
+    Ok(MultiPolygon(out))
+}
+
+/// Lines that hold something: `(1-based line number, line without its comment)`, skipping
+/// blank and comment-only lines and a leading byte-order mark.
+pub(crate) fn significant_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    text.lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, strip_comment(l)))
+        .filter(|(_, l)| !l.trim().is_empty())
+}
+
+/// The line up to its `#` comment.
+pub(crate) fn strip_comment(line: &str) -> &str {
+    line.split_once('#').map_or(line, |(before, _)| before)
+}
+
+/// A short excerpt of `s` for an error message.
+pub(crate) fn excerpt(s: &str) -> String {
+    const MAX: usize = 40;
+    let s = s.trim();
+    if s.chars().count() <= MAX {
+        s.to_string()
+    } else {
+        let cut: String = s.chars().take(MAX).collect();
+        format!("{cut}…")
+    }
+}
