@@ -17,6 +17,7 @@
 //! | chapter | problem | entry points |
 //! |---|---|---|
 //! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::verify_convex_hull`] |
+//! | 2.1 | line segment intersection (plane sweep) | [`intersect::find_intersections`], [`intersect::any_intersection`], [`intersect::is_simple`], [`intersect::red_blue_intersections`], [`intersect::verify_intersections`] |
 //!
 //! ## Exactness
 //!
@@ -29,6 +30,7 @@
 
 mod error;
 pub mod hull;
+pub mod intersect;
 pub mod io;
 pub mod kernel;
 pub mod render;

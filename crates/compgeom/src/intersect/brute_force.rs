@@ -1,0 +1,223 @@
+//! The exact O(n²) oracle: every pair of segments through the kernel's
+//! [`segment_intersection`], then grouping of equal points (exact comparisons) and the
+//! maximal overlap pieces of each family of collinear overlapping segments. It defines
+//! the expected answer of [`super::find_intersections`] and backs `--verify`.
+//!
+//! O(n² + K log K) time for K meeting pairs, O(n + K) space.
+
+use super::order::{sweep_cmp_points, EventPoint, Oriented};
+use super::sweep::check_finite;
+use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
+use crate::kernel::{segment_intersection, ExactPoint, Segment2, SegmentIntersection};
+use crate::{Error, Result};
+use std::cmp::Ordering;
+
+/// All intersection points and overlaps by testing every pair of segments: the same
+/// answer as [`super::find_intersections`], in O(n²) time.
+pub fn brute_force_intersections(segments: &[Segment2]) -> Result<Intersections> {
+    check_finite(segments)?;
+    let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
+    let mut records: Vec<(EventPoint, usize, usize)> = Vec::new();
+    let mut overlapping: Vec<(usize, usize)> = Vec::new();
+    for i in 0..segments.len() {
+        for j in i + 1..segments.len() {
+            match segment_intersection(segments[i], segments[j]) {
+                SegmentIntersection::None => {}
+                SegmentIntersection::Endpoint(q) => records.push((EventPoint::input(q), i, j)),
+                SegmentIntersection::Crossing(c) => {
+                    records.push((EventPoint::new(ExactPoint::Crossing(c)), i, j))
+                }
+                SegmentIntersection::Overlap(a, b) => {
+                    records.push((EventPoint::input(a), i, j));
+                    records.push((EventPoint::input(b), i, j));
+                    overlapping.push((i, j));
+                }
+            }
+        }
+    }
+    records.sort_by_key(|r| r.0);
+    let mut points = Vec::new();
+    let mut k = 0;
+    while k < records.len() {
+        let mut end = k + 1;
+        while end < records.len() && records[end].0 == records[k].0 {
+            end += 1;
+        }
+        let group = &records[k..end];
+        // Prefer the input-point representation when the point is an endpoint.
+        let at = group
+            .iter()
+            .map(|r| r.0)
+            .find(|e| e.as_input().is_some())
+            .unwrap_or(group[0].0);
+        let mut all: Vec<usize> = group.iter().flat_map(|r| [r.1, r.2]).collect();
+        all.sort_unstable();
+        all.dedup();
+        let (mut upper, mut lower, mut interior) = (Vec::new(), Vec::new(), Vec::new());
+        for &s in &all {
+            let (is_upper, is_lower) = match at.as_input() {
+                Some(q) => (segs[s].upper == q, segs[s].lower == q),
+                None => (false, false),
+            };
+            if is_upper {
+                upper.push(s);
+            }
+            if is_lower {
+                lower.push(s);
+            }
+            if !is_upper && !is_lower {
+                interior.push(s);
+            }
+        }
+        points.push(IntersectionPoint {
+            point: at.approx,
+            exact: at.exact,
+            segments: all,
+            upper,
+            lower,
+            interior,
+        });
+        k = end;
+    }
+    let mut overlaps = overlap_pieces(&segs, &overlapping);
+    sort_overlaps(&mut overlaps);
+    Ok(Intersections {
+        points,
+        overlaps,
+        segments: segments.len(),
+    })
+}
+
+fn find(parent: &mut [usize], mut i: usize) -> usize {
+    while parent[i] != i {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    i
+}
+
+/// The maximal pieces covered by the same two or more segments, per family of segments
+/// linked by overlaps (such a family lies on one line).
+fn overlap_pieces(segs: &[Oriented], overlapping: &[(usize, usize)]) -> Vec<Overlap> {
+    let mut parent: Vec<usize> = (0..segs.len()).collect();
+    for &(i, j) in overlapping {
+        let (a, b) = (find(&mut parent, i), find(&mut parent, j));
+        parent[a] = b;
+    }
+    let mut families: Vec<(usize, usize)> = Vec::new();
+    let mut involved: Vec<usize> = overlapping.iter().flat_map(|&(i, j)| [i, j]).collect();
+    involved.sort_unstable();
+    involved.dedup();
+    for &i in &involved {
+        families.push((find(&mut parent, i), i));
+    }
+    families.sort_unstable();
+    let mut out = Vec::new();
+    let mut k = 0;
+    while k < families.len() {
+        let mut end = k + 1;
+        while end < families.len() && families[end].0 == families[k].0 {
+            end += 1;
+        }
+        let members: Vec<usize> = families[k..end].iter().map(|f| f.1).collect();
+        let mut stops: Vec<_> = members
+            .iter()
+            .flat_map(|&m| [segs[m].upper, segs[m].lower])
+            .collect();
+        stops.sort_by(|a, b| sweep_cmp_points(*a, *b));
+        stops.dedup_by(|a, b| sweep_cmp_points(*a, *b) == Ordering::Equal);
+        let mut current: Option<Overlap> = None;
+        for w in stops.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            let cover: Vec<usize> = members
+                .iter()
+                .copied()
+                .filter(|&m| {
+                    sweep_cmp_points(segs[m].upper, a) != Ordering::Greater
+                        && sweep_cmp_points(b, segs[m].lower) != Ordering::Greater
+                })
+                .collect();
+            match &mut current {
+                Some(o) if o.segments == cover => o.to = b,
+                _ => {
+                    out.extend(current.take());
+                    if cover.len() >= 2 {
+                        current = Some(Overlap {
+                            segments: cover,
+                            from: a,
+                            to: b,
+                        });
+                    }
+                }
+            }
+        }
+        out.extend(current);
+        k = end;
+    }
+    out
+}
+
+fn list(v: &[usize]) -> String {
+    format!("{v:?}")
+}
+
+/// Check `found` against the exact brute-force answer (O(n²): meant for inputs of up to a
+/// few thousand segments). The error names the first difference.
+pub fn verify_intersections(segments: &[Segment2], found: &Intersections) -> Result<()> {
+    let expected = brute_force_intersections(segments)?;
+    let fail = |m: String| Err(Error::Verification(m));
+    if found.segments != segments.len() {
+        return fail(format!(
+            "result is for {} segments, input has {}",
+            found.segments,
+            segments.len()
+        ));
+    }
+    for (k, (f, e)) in found.points.iter().zip(&expected.points).enumerate() {
+        let same_point = EventPoint::new(f.exact) == EventPoint::new(e.exact);
+        if !same_point || f.point != e.point {
+            return fail(format!(
+                "intersection point {k} is ({}, {}), expected ({}, {})",
+                f.point.x, f.point.y, e.point.x, e.point.y
+            ));
+        }
+        let fields = [
+            ("segments", &f.segments, &e.segments),
+            ("upper", &f.upper, &e.upper),
+            ("lower", &f.lower, &e.lower),
+            ("interior", &f.interior, &e.interior),
+        ];
+        for (name, a, b) in fields {
+            if a != b {
+                return fail(format!(
+                    "at intersection point {k} ({}, {}) {name} is {}, expected {}",
+                    f.point.x,
+                    f.point.y,
+                    list(a),
+                    list(b)
+                ));
+            }
+        }
+    }
+    if found.points.len() != expected.points.len() {
+        return fail(format!(
+            "{} intersection points found, expected {}",
+            found.points.len(),
+            expected.points.len()
+        ));
+    }
+    if found.overlaps != expected.overlaps {
+        let k = found
+            .overlaps
+            .iter()
+            .zip(&expected.overlaps)
+            .position(|(a, b)| a != b)
+            .unwrap_or(found.overlaps.len().min(expected.overlaps.len()));
+        return fail(format!(
+            "overlaps differ at {k}: found {:?}, expected {:?}",
+            found.overlaps.get(k),
+            expected.overlaps.get(k)
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,244 @@
+//! Segment intersection (book chapter 2.1): the Bentley–Ottmann plane sweep, exact, with
+//! every degenerate case.
+//!
+//! [`find_intersections`] is the book's FINDINTERSECTIONS / HANDLEEVENTPOINT /
+//! FINDNEWEVENT on **closed** segments: for n segments and I intersection points it takes
+//! O((n + I) log n) time (expected: the status is a treap) and O(n) working space beyond
+//! the output (only crossings of segments adjacent on the sweep line stay queued).
+//!
+//! ## Sweep order
+//!
+//! As in the book, the sweep line is horizontal and moves **down**: point `p` comes before
+//! `q` when `p.y > q.y`, or `p.y = q.y` and `p.x < q.x`. A segment's *upper* endpoint is the
+//! one met first (for a horizontal segment the left one). Results come out in this order,
+//! so output is reproducible byte for byte.
+//!
+//! ## What is reported
+//!
+//! * An **intersection point** is a point that lies on two or more segments and is either
+//!   an endpoint of some segment or a proper crossing (a point where two segments that are
+//!   not collinear meet). For each: the nearest `f64` point, the exact point, and the
+//!   segments through it split as in the book into U(p) (upper endpoint is p), L(p) (lower
+//!   endpoint is p) and C(p) (p in the interior). A zero-length segment at p is in both
+//!   U(p) and L(p). Interior points of an overlap are not intersection points (there are
+//!   infinitely many) unless something else happens there.
+//! * An **overlap** is a maximal piece of positive length along which the set of segments
+//!   covering it stays the same, with two or more segments in the set (collinear
+//!   overlapping segments, duplicates). Its two ends are segment endpoints, hence also
+//!   reported as intersection points.
+//!
+//! ## Degenerate cases
+//!
+//! Horizontal segments (left endpoint upper; ordered last among segments through a
+//! point), vertical segments, three or more segments through a point, endpoints in other
+//! segments' interiors, shared endpoints, duplicate segments, zero-length segments (a
+//! point segment meets whatever passes through it; two equal point segments meet each
+//! other), overlapping collinear segments. Non-finite coordinates are an
+//! [`Error::NonFinite`](crate::Error::NonFinite) naming the segment.
+//!
+//! ## Exactness
+//!
+//! Every decision (event order, the side of a segment at the event point, the order just
+//! below a point, whether two segments meet) uses the kernel's exact predicates on input
+//! points and on crossings kept as their two segments ([`crate::kernel::Crossing`]).
+//! Reported coordinates are the nearest `f64` to the exact point.
+//!
+//! ## Also here
+//!
+//! * [`any_intersection`] / [`any_intersection_where`]: stop at the first intersection
+//!   in sweep order (the Shamos–Hoey idea), and [`is_simple`] for polygons built on it.
+//! * [`red_blue_intersections`]: two sets whose members do not cross within their own set
+//!   (the map-overlay case); only red–blue intersections are reported.
+//! * [`brute_force_intersections`] and [`verify_intersections`]: the exact O(n²) oracle.
+//!
+//! ```
+//! use compgeom::intersect::find_intersections;
+//! use compgeom::{Point2, Segment2};
+//! let s = |a: (f64, f64), b: (f64, f64)| Segment2::new(a.into(), b.into());
+//! let segs = [s((0.0, 0.0), (2.0, 2.0)), s((0.0, 2.0), (2.0, 0.0)), s((1.0, 1.0), (1.0, 5.0))];
+//! let found = find_intersections(&segs).unwrap();
+//! assert_eq!(found.points.len(), 1);
+//! let p = &found.points[0];
+//! assert_eq!(p.point, Point2::new(1.0, 1.0));
+//! assert_eq!(p.segments, vec![0, 1, 2]);
+//! assert_eq!(p.lower, vec![2]); // (1, 1) is the lower endpoint of segment 2
+//! assert_eq!(p.interior, vec![0, 1]);
+//! ```
+mod brute_force;
+mod order;
+mod red_blue;
+mod simple;
+mod status;
+mod sweep;
+
+pub use brute_force::{brute_force_intersections, verify_intersections};
+pub use red_blue::{red_blue_intersections, RedBlueIntersections, RedBlueOverlap, RedBluePoint};
+pub use simple::{any_intersection, any_intersection_where, is_simple};
+pub use sweep::SweepStats;
+
+use crate::kernel::{ExactPoint, Point2, Segment2};
+use crate::Result;
+use sweep::{Flow, Sink};
+
+/// A point where two or more segments meet, with the segments through it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct IntersectionPoint {
+    /// The nearest `f64` point (the exact point for input points).
+    pub point: Point2,
+    /// The exact point: an input endpoint, or a crossing kept as two segments.
+    pub exact: ExactPoint,
+    /// Every segment containing the point, ascending.
+    pub segments: Vec<usize>,
+    /// U(p): segments whose upper endpoint (first in sweep order) is the point, ascending.
+    pub upper: Vec<usize>,
+    /// L(p): segments whose lower endpoint is the point, ascending.
+    pub lower: Vec<usize>,
+    /// C(p): segments with the point in their interior, ascending.
+    pub interior: Vec<usize>,
+}
+
+/// A maximal piece of positive length covered by the same two or more segments.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Overlap {
+    /// The segments covering the piece, ascending.
+    pub segments: Vec<usize>,
+    /// The end met first in sweep order (an input endpoint).
+    pub from: Point2,
+    /// The other end (an input endpoint).
+    pub to: Point2,
+}
+
+/// Everything [`find_intersections`] found.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Intersections {
+    /// The intersection points, in sweep order.
+    pub points: Vec<IntersectionPoint>,
+    /// The overlaps, ordered by `from`, then `to` (sweep order), then segments.
+    pub overlaps: Vec<Overlap>,
+    /// The number of input segments.
+    pub segments: usize,
+}
+
+impl Intersections {
+    /// The number of distinct pairs of segments that meet (a pair meeting at several
+    /// points, or along an overlap, counts once).
+    pub fn pair_count(&self) -> usize {
+        let mut pairs = Vec::new();
+        for p in &self.points {
+            for (k, &i) in p.segments.iter().enumerate() {
+                for &j in &p.segments[k + 1..] {
+                    pairs.push((i, j));
+                }
+            }
+        }
+        pairs.sort_unstable();
+        pairs.dedup();
+        pairs.len()
+    }
+}
+
+/// Sort overlaps into their documented order.
+pub(crate) fn sort_overlaps(overlaps: &mut [Overlap]) {
+    use order::sweep_cmp_points;
+    overlaps.sort_by(|a, b| {
+        sweep_cmp_points(a.from, b.from)
+            .then(sweep_cmp_points(a.to, b.to))
+            .then_with(|| a.segments.cmp(&b.segments))
+    });
+}
+
+/// Collects everything.
+struct Collect {
+    out: Intersections,
+}
+
+impl Sink for Collect {
+    fn point(&mut self, point: IntersectionPoint) -> Flow {
+        self.out.points.push(point);
+        Flow::Continue
+    }
+    fn overlap(&mut self, overlap: Overlap) -> Flow {
+        self.out.overlaps.push(overlap);
+        Flow::Continue
+    }
+}
+
+/// All intersection points and overlaps of the closed segments, by the book's plane
+/// sweep (see the [module docs](self) for exactly what is reported).
+///
+/// O((n + I) log n) expected time for I intersection points, O(n) working space beyond
+/// the output. Errors: a non-finite coordinate (naming the segment).
+pub fn find_intersections(segments: &[Segment2]) -> Result<Intersections> {
+    find_intersections_with_stats(segments).map(|(r, _)| r)
+}
+
+/// [`find_intersections`], also returning what the sweep measured (events handled, the
+/// largest queue size).
+pub fn find_intersections_with_stats(segments: &[Segment2]) -> Result<(Intersections, SweepStats)> {
+    let mut sink = Collect {
+        out: Intersections {
+            segments: segments.len(),
+            ..Intersections::default()
+        },
+    };
+    let stats = sweep::sweep(segments, &mut sink)?;
+    sort_overlaps(&mut sink.out.overlaps);
+    Ok((sink.out, stats))
+}
+
+/// The sweep-line status at one moment, for pictures: the event point and the segments
+/// crossing the sweep line just below it, left to right.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StatusSnapshot {
+    /// The number of the event (0 = first in sweep order).
+    pub event: usize,
+    /// The event point (nearest `f64`).
+    pub at: Point2,
+    /// The status just below the event point, left to right.
+    pub status: Vec<usize>,
+}
+
+struct Snapshot {
+    want: usize,
+    got: Option<StatusSnapshot>,
+}
+
+impl Sink for Snapshot {
+    fn point(&mut self, _: IntersectionPoint) -> Flow {
+        Flow::Continue
+    }
+    fn overlap(&mut self, _: Overlap) -> Flow {
+        Flow::Continue
+    }
+    fn wants_status(&self, event: usize) -> bool {
+        event == self.want
+    }
+    fn status(&mut self, event: usize, at: Point2, status: &[usize]) {
+        self.got = Some(StatusSnapshot {
+            event,
+            at,
+            status: status.to_vec(),
+        });
+    }
+}
+
+/// The status structure right after the sweep handled event number `event` (`None` if
+/// there are fewer events). For drawing the sweep (the book's figures).
+///
+/// ```
+/// use compgeom::intersect::sweep_status_at;
+/// use compgeom::Segment2;
+/// let s = |a: (f64, f64), b: (f64, f64)| Segment2::new(a.into(), b.into());
+/// let segs = [s((0.0, 4.0), (4.0, 0.0)), s((3.0, 3.0), (1.0, 0.0))];
+/// // Event 1 is (3, 3), the upper endpoint of segment 1: below it, 0 is left of 1.
+/// let snap = sweep_status_at(&segs, 1).unwrap().unwrap();
+/// assert_eq!(snap.status, vec![0, 1]);
+/// ```
+pub fn sweep_status_at(segments: &[Segment2], event: usize) -> Result<Option<StatusSnapshot>> {
+    let mut sink = Snapshot {
+        want: event,
+        got: None,
+    };
+    sweep::sweep(segments, &mut sink)?;
+    Ok(sink.got)
+}
