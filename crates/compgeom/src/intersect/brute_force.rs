@@ -70,7 +70,7 @@ pub fn brute_force_intersections(segments: &[Segment2]) -> Result<Intersections>
             }
         }
         points.push(IntersectionPoint {
-            point: at.approx,
+            point: at.approx(),
             exact: at.exact,
             segments: all,
             upper,

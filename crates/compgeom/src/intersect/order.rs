@@ -3,22 +3,66 @@
 //! segment's *upper* endpoint is the one that comes first in this order (for a
 //! horizontal segment, the left one).
 //!
-//! Event points are input points or constructed crossings. Each carries its nearest
-//! `f64` point: correct rounding is monotone (`x < y` implies `round(x) <= round(y)`), so
-//! when two rounded y values differ they already decide the y order exactly; only when
-//! they tie does the kernel's exact y comparison run (and likewise for x, which is looked
-//! at only when the exact y values are equal).
+//! Event points are input points or constructed crossings. A crossing carries a small
+//! box that surely contains it, from plain `f64` arithmetic with a rigorous error bound:
+//! when two boxes are disjoint in y they decide the y order exactly; only when they
+//! overlap does the kernel's exact comparison run (likewise for x, looked at only when
+//! the exact y values are equal). The nearest `f64` point (the kernel's correctly rounded
+//! `approx`) is computed only for points that are reported.
 
-use crate::kernel::{ExactPoint, Point2, Segment2};
+use crate::kernel::{Crossing, ExactPoint, Point2, Segment2};
 use std::cmp::Ordering;
 
-/// An event point with its nearest `f64` point cached; ordered in sweep order (exactly).
+/// An event point with a cheap enclosing box of its exact position (a point box for an
+/// input point); ordered in sweep order, exactly.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct EventPoint {
     /// The exact point.
     pub exact: ExactPoint,
-    /// Its nearest `f64` point (the point itself for an input point).
-    pub approx: Point2,
+    /// A floating-point estimate of the point (the point itself for an input point).
+    pub mid: Point2,
+    /// Half-widths of a box around `mid` that surely contains the exact point; they
+    /// also absorb the rounding of `mid ± rad`.
+    pub rad: Point2,
+}
+
+const U: f64 = 1.1102230246251565e-16; // 2^-53, the unit roundoff
+
+/// An estimate of a crossing's coordinates with a rigorous error bound, in plain `f64`
+/// arithmetic: `x = a.x + dx·num/den` (see [`crate::kernel::Crossing`]). Each difference
+/// of inputs carries a relative error of at most `u`, each product of two at most `3u`
+/// (first order), each sum or difference of two products at most `4u` of the sum of
+/// their magnitudes; the bound below doubles every first-order term to cover the
+/// higher-order ones. `None` when the denominator's sign is uncertain or a value is not
+/// finite.
+fn crossing_box(c: &Crossing) -> Option<(Point2, Point2)> {
+    let (s, t) = (c.s, c.t);
+    let (dx, dy) = (s.b.x - s.a.x, s.b.y - s.a.y);
+    let (ex, ey) = (t.b.x - t.a.x, t.b.y - t.a.y);
+    let (wx, wy) = (t.a.x - s.a.x, t.a.y - s.a.y);
+    let (d1, d2) = (dx * ey, dy * ex);
+    let (n1, n2) = (wx * ey, wy * ex);
+    let (den, num) = (d1 - d2, n1 - n2);
+    let e_den = 10.0 * U * (d1.abs() + d2.abs());
+    let e_num = 10.0 * U * (n1.abs() + n2.abs());
+    // (NaN fails the comparison too.)
+    if den.abs().partial_cmp(&(2.0 * e_den)) != Some(Ordering::Greater) {
+        return None;
+    }
+    let t = num / den;
+    // |T - t| for the exact parameter T = N / D.
+    let e_t = 2.0 * (e_num + t.abs() * e_den) / (den.abs() - e_den) + 2.0 * U * t.abs();
+    let coord = |a: f64, d: f64| {
+        let v = a + d * t;
+        let err = 2.0 * (d.abs() * e_t + 4.0 * U * (d * t).abs()) + 8.0 * U * v.abs() + 1e-300;
+        (v, err)
+    };
+    let (x, rx) = coord(s.a.x, dx);
+    let (y, ry) = coord(s.a.y, dy);
+    let all = [x, y, rx, ry];
+    all.iter()
+        .all(|v| v.is_finite())
+        .then_some((Point2::new(x, y), Point2::new(rx, ry)))
 }
 
 impl EventPoint {
@@ -26,15 +70,22 @@ impl EventPoint {
     pub fn input(p: Point2) -> Self {
         EventPoint {
             exact: ExactPoint::Input(p),
-            approx: p,
+            mid: p,
+            rad: Point2::new(0.0, 0.0),
         }
     }
 
-    /// Any exact point (rounds a crossing once).
+    /// Any exact point.
     pub fn new(exact: ExactPoint) -> Self {
-        EventPoint {
-            exact,
-            approx: exact.approx(),
+        match exact {
+            ExactPoint::Input(p) => EventPoint::input(p),
+            ExactPoint::Crossing(c) => {
+                let (mid, rad) = crossing_box(&c).unwrap_or((
+                    Point2::new(0.0, 0.0),
+                    Point2::new(f64::INFINITY, f64::INFINITY),
+                ));
+                EventPoint { exact, mid, rad }
+            }
         }
     }
 
@@ -44,6 +95,34 @@ impl EventPoint {
             ExactPoint::Input(p) => Some(p),
             ExactPoint::Crossing(_) => None,
         }
+    }
+
+    /// The nearest `f64` point (correctly rounded; computed on demand for a crossing).
+    pub fn approx(&self) -> Point2 {
+        self.exact.approx()
+    }
+
+    /// The sign of `x - v` (exact).
+    pub fn compare_x_with(&self, v: f64) -> Ordering {
+        if self.mid.x + self.rad.x < v {
+            Ordering::Less
+        } else if self.mid.x - self.rad.x > v {
+            Ordering::Greater
+        } else {
+            self.exact
+                .compare_x(&ExactPoint::Input(Point2::new(v, 0.0)))
+        }
+    }
+}
+
+/// Compare one coordinate of two boxes: decided when they are disjoint, else `exact()`.
+fn by_box(a: f64, ra: f64, b: f64, rb: f64, exact: impl FnOnce() -> Ordering) -> Ordering {
+    if a + ra < b - rb {
+        Ordering::Less
+    } else if a - ra > b + rb {
+        Ordering::Greater
+    } else {
+        exact()
     }
 }
 
@@ -61,17 +140,16 @@ impl Ord for EventPoint {
             (ExactPoint::Input(_), ExactPoint::Input(_))
         );
         if inputs {
-            return sweep_cmp_points(self.approx, other.approx);
+            return sweep_cmp_points(self.mid, other.mid);
         }
-        // Rounded y values that differ decide y exactly; equal ones do not (the exact
-        // values may still differ), so then y is compared exactly before x is looked at.
-        let by_y = match other.approx.y.partial_cmp(&self.approx.y) {
-            Some(Ordering::Equal) | None => other.exact.compare_y(&self.exact),
-            Some(o) => o,
-        };
-        by_y.then_with(|| match self.approx.x.partial_cmp(&other.approx.x) {
-            Some(Ordering::Equal) | None => self.exact.compare_x(&other.exact),
-            Some(o) => o,
+        let (a, b) = (self, other);
+        by_box(b.mid.y, b.rad.y, a.mid.y, a.rad.y, || {
+            b.exact.compare_y(&a.exact)
+        })
+        .then_with(|| {
+            by_box(a.mid.x, a.rad.x, b.mid.x, b.rad.x, || {
+                a.exact.compare_x(&b.exact)
+            })
         })
     }
 }
@@ -141,5 +219,55 @@ impl Oriented {
         } else {
             0
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_rational::BigRational;
+
+    /// The box of every crossing contains the exact crossing, for random, nearly
+    /// parallel, huge and tiny input.
+    #[test]
+    fn crossing_boxes_contain_the_exact_point() {
+        let mut state = 7u64;
+        let mut unit = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut boxed = 0;
+        for k in 0..20000 {
+            let scale = [1.0, 1e-150, 1e150, 3.0e-7][k % 4];
+            let mut pt = || Point2::new(unit() * scale, unit() * scale);
+            let (a, b, c) = (pt(), pt(), pt());
+            // Every third case nearly parallel to the first segment.
+            let d = if k % 3 == 0 {
+                Point2::new(c.x + (b.x - a.x), c.y + (b.y - a.y) * (1.0 + 1e-13))
+            } else {
+                pt()
+            };
+            let Some(cr) = Crossing::new(Segment2::new(a, b), Segment2::new(c, d)) else {
+                continue;
+            };
+            let e = EventPoint::new(ExactPoint::Crossing(cr));
+            if e.rad.x.is_infinite() {
+                continue;
+            }
+            boxed += 1;
+            let (x, y) = cr.exact().expect("crossing");
+            let q = |v: f64| BigRational::from_float(v).expect("finite");
+            assert!(
+                q(e.mid.x - e.rad.x) <= x && x <= q(e.mid.x + e.rad.x),
+                "x of {cr:?}"
+            );
+            assert!(
+                q(e.mid.y - e.rad.y) <= y && y <= q(e.mid.y + e.rad.y),
+                "y of {cr:?}"
+            );
+        }
+        assert!(boxed > 15000, "only {boxed} boxes");
     }
 }

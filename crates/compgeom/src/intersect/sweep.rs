@@ -21,7 +21,7 @@
 //! segments covering the piece below the current event and reports a maximal piece when
 //! that set changes.
 
-use super::order::{EventPoint, Oriented};
+use super::order::{sweep_cmp_points, EventPoint, Oriented};
 use super::status::Status;
 use super::{IntersectionPoint, Overlap};
 use crate::kernel::{
@@ -112,14 +112,8 @@ struct Sweep {
 /// relative to `p`: `Less` = passes left of `p`, `Equal` = contains `p`, `Greater` = right.
 fn side(s: &Oriented, p: &EventPoint) -> Ordering {
     if s.is_horizontal() {
-        // Horizontal, on the sweep line: compare p.x with its x-range. Rounding is
-        // monotone, so a strict comparison of the rounded x is already exact.
-        let cmp_x = |x: f64| match p.approx.x.partial_cmp(&x) {
-            Some(Ordering::Equal) | None => {
-                p.exact.compare_x(&ExactPoint::Input(Point2::new(x, 0.0)))
-            }
-            Some(o) => o,
-        };
+        // Horizontal, on the sweep line: compare p.x with its x-range.
+        let cmp_x = |x: f64| p.compare_x_with(x);
         return if cmp_x(s.upper.x) == Ordering::Less {
             Ordering::Greater
         } else if cmp_x(s.lower.x) == Ordering::Greater {
@@ -130,7 +124,18 @@ fn side(s: &Oriented, p: &EventPoint) -> Ordering {
     }
     let o = match p.exact {
         ExactPoint::Input(q) => orient2d(s.upper, s.lower, q),
-        ExactPoint::Crossing(_) => orient_exact(&s.upper.into(), &s.lower.into(), &p.exact),
+        ExactPoint::Crossing(c) => {
+            let seg = s.segment();
+            if c.s == seg || c.t == seg {
+                // p is on the segment by construction (and within its y-range, since the
+                // segment is in the status).
+                return Ordering::Equal;
+            }
+            match orient_near(s, p) {
+                Some(o) => o,
+                None => orient_exact(&s.upper.into(), &s.lower.into(), &p.exact),
+            }
+        }
     };
     // Walking down from upper to lower, p on the right-hand side (cw) is west of the
     // segment: the segment passes to the right of p.
@@ -138,6 +143,31 @@ fn side(s: &Oriented, p: &EventPoint) -> Ordering {
         Orientation::Clockwise => Ordering::Greater,
         Orientation::CounterClockwise => Ordering::Less,
         Orientation::Collinear => Ordering::Equal,
+    }
+}
+
+/// A floating-point filter for the orientation of `(s.upper, s.lower, p)` with `p` a
+/// crossing: evaluate at the centre of `p`'s box and bound both the rounding of the
+/// evaluation (Shewchuk's `ccwerrboundA`, doubled) and the distance to the exact point
+/// (within the box). `None` when the bound does not decide the sign.
+fn orient_near(s: &Oriented, p: &EventPoint) -> Option<Orientation> {
+    let (u, l, q) = (s.upper, s.lower, p.mid);
+    let (dx, dy) = (l.x - u.x, l.y - u.y);
+    let (qx, qy) = (q.x - u.x, q.y - u.y);
+    let (t1, t2) = (dx * qy, dy * qx);
+    let det = t1 - t2;
+    // The rounded differences dx, dy are within a factor (1 + 2^-52) of the exact ones.
+    let moved = (dx.abs() * p.rad.y + dy.abs() * p.rad.x) * (1.0 + 1e-12);
+    let bound = 6.7e-16 * (t1.abs() + t2.abs()) + moved + 1e-300;
+    if !(det.is_finite() && bound.is_finite()) {
+        return None;
+    }
+    if det > bound {
+        Some(Orientation::CounterClockwise)
+    } else if det < -bound {
+        Some(Orientation::Clockwise)
+    } else {
+        None
     }
 }
 
@@ -227,7 +257,7 @@ pub(crate) fn sweep(segments: &[Segment2], sink: &mut impl Sink) -> Result<Sweep
         }
         if sink.wants_status(number) {
             let order = sw.status.in_order();
-            sink.status(number, p.approx, &order);
+            sink.status(number, p.approx(), &order);
         }
     }
     Ok(sw.stats)
@@ -245,23 +275,43 @@ struct Scratch {
 }
 
 impl Sweep {
+    /// Queue every endpoint: sort them once and build the map in bulk.
     fn init(&mut self) {
-        for i in 0..self.segs.len() {
-            let s = self.segs[i];
-            let e = self.queue.entry(EventPoint::input(s.upper)).or_default();
-            e.endpoint = true;
+        // (point, segment, is the upper endpoint of a proper segment / zero-length).
+        let mut ends: Vec<(Point2, u32, u8)> = Vec::with_capacity(2 * self.segs.len());
+        for (i, s) in self.segs.iter().enumerate() {
             if s.is_point() {
-                self.next_point[i] = e.points;
-                e.points = i as u32;
+                ends.push((s.upper, i as u32, 2));
             } else {
-                self.next_upper[i] = e.upper;
-                e.upper = i as u32;
-                self.queue
-                    .entry(EventPoint::input(s.lower))
-                    .or_default()
-                    .endpoint = true;
+                ends.push((s.upper, i as u32, 0));
+                ends.push((s.lower, i as u32, 1));
             }
         }
+        ends.sort_unstable_by(|a, b| sweep_cmp_points(a.0, b.0));
+        let mut events: Vec<(EventPoint, Event)> = Vec::new();
+        for &(p, i, kind) in &ends {
+            let same = matches!(events.last(), Some((q, _)) if q.mid == p);
+            if !same {
+                let e = Event {
+                    endpoint: true,
+                    ..Event::default()
+                };
+                events.push((EventPoint::input(p), e));
+            }
+            let e = &mut events.last_mut().expect("pushed above").1;
+            match kind {
+                0 => {
+                    self.next_upper[i as usize] = e.upper;
+                    e.upper = i;
+                }
+                2 => {
+                    self.next_point[i as usize] = e.points;
+                    e.points = i;
+                }
+                _ => {}
+            }
+        }
+        self.queue = events.into_iter().collect();
         self.stats.max_queue = self.queue.len();
     }
 
@@ -325,7 +375,7 @@ impl Sweep {
                 .collect();
             all.sort_unstable();
             let point = IntersectionPoint {
-                point: p.approx,
+                point: p.approx(),
                 exact: p.exact,
                 segments: all,
                 upper,
@@ -405,7 +455,7 @@ impl Sweep {
                 let o = Overlap {
                     segments: run.clone(),
                     from,
-                    to: p.approx,
+                    to: p.approx(),
                 };
                 if sink.overlap(o) == Flow::Stop {
                     return Flow::Stop;
@@ -414,7 +464,7 @@ impl Sweep {
         }
         for run in &below {
             if !above.contains(run) {
-                self.open[run[0]] = Some(p.approx);
+                self.open[run[0]] = Some(p.approx());
             }
         }
         Flow::Continue

@@ -1,0 +1,176 @@
+//! `compgeom-bench intersect`: segment intersection (book §2.1) against geo.
+//!
+//! Peers, on the same segments in the same run:
+//! * geo 0.33's `sweep::Intersections` iterator (sorts by x, then tests every pair whose
+//!   x-ranges overlap with `line_intersection`; yields one item per meeting pair);
+//! * a plain O(n²) loop over all pairs with geo's `line_intersection` (a bounding-box
+//!   test first, which only skips the call).
+//!
+//! compgeom's `find_intersections` does more work per answer (exact points, U/L/C lists,
+//! maximal overlaps). Answers are compared once, outside the clock, by the number of
+//! meeting pairs (compgeom's `pair_count` against the number of pairs geo yields).
+
+use compgeom::intersect::find_intersections;
+use compgeom::{Point2, Segment2};
+use geo::algorithm::sweep::Intersections;
+use geo::line_intersection::line_intersection;
+use geo::{coord, Line};
+use std::hint::black_box;
+use std::time::Instant;
+
+/// A small deterministic generator (splitmix64), so runs are reproducible.
+struct Rng(u64);
+
+impl Rng {
+    fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform integer in `lo..=hi`.
+    fn int(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
+    }
+}
+
+fn best_of(runs: usize, mut f: impl FnMut()) -> f64 {
+    (0..runs)
+        .map(|_| {
+            let t = Instant::now();
+            f();
+            t.elapsed().as_secs_f64()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// `n` short segments in the unit square (length below 0.008, random direction):
+/// about linearly many crossings.
+fn short_segments(rng: &mut Rng, n: usize) -> Vec<Segment2> {
+    (0..n)
+        .map(|_| {
+            let a = Point2::new(rng.unit(), rng.unit());
+            let (len, angle) = (0.008 * rng.unit(), std::f64::consts::TAU * rng.unit());
+            Segment2::new(
+                a,
+                Point2::new(a.x + len * angle.cos(), a.y + len * angle.sin()),
+            )
+        })
+        .collect()
+}
+
+/// `n` segments from the left side of the unit square to the right side: each pair
+/// crosses with probability 1/2, about n²/4 crossings.
+fn long_segments(rng: &mut Rng, n: usize) -> Vec<Segment2> {
+    (0..n)
+        .map(|_| Segment2::new(Point2::new(0.0, rng.unit()), Point2::new(1.0, rng.unit())))
+        .collect()
+}
+
+/// `n` short segments with endpoints on the 100×100 integer grid (each end within 4
+/// units of the other): shared endpoints, collinear overlaps, duplicates, zero-length
+/// segments, many segments through one point.
+fn grid_segments(rng: &mut Rng, n: usize) -> Vec<Segment2> {
+    (0..n)
+        .map(|_| {
+            let (x, y) = (rng.int(0, 100), rng.int(0, 100));
+            let (u, v) = (
+                (x + rng.int(-4, 4)).clamp(0, 100),
+                (y + rng.int(-4, 4)).clamp(0, 100),
+            );
+            Segment2::new(
+                Point2::new(x as f64, y as f64),
+                Point2::new(u as f64, v as f64),
+            )
+        })
+        .collect()
+}
+
+fn to_geo(segs: &[Segment2]) -> Vec<Line<f64>> {
+    segs.iter()
+        .map(|s| Line::new(coord! { x: s.a.x, y: s.a.y }, coord! { x: s.b.x, y: s.b.y }))
+        .collect()
+}
+
+fn geo_sweep_pairs(lines: &[Line<f64>]) -> usize {
+    Intersections::from_iter(lines.iter()).count()
+}
+
+fn geo_brute_pairs(lines: &[Line<f64>]) -> usize {
+    let boxes: Vec<[f64; 4]> = lines
+        .iter()
+        .map(|l| {
+            [
+                l.start.x.min(l.end.x),
+                l.start.x.max(l.end.x),
+                l.start.y.min(l.end.y),
+                l.start.y.max(l.end.y),
+            ]
+        })
+        .collect();
+    let mut count = 0;
+    for i in 0..lines.len() {
+        for j in i + 1..lines.len() {
+            let (a, b) = (&boxes[i], &boxes[j]);
+            if a[0] > b[1] || b[0] > a[1] || a[2] > b[3] || b[2] > a[3] {
+                continue;
+            }
+            count += usize::from(line_intersection(lines[i], lines[j]).is_some());
+        }
+    }
+    count
+}
+
+fn case(name: &str, segs: &[Segment2], brute_runs: usize) {
+    let lines = to_geo(segs);
+    // Answers, once, outside the clock.
+    let ours = find_intersections(segs).expect("finite input");
+    let geo_pairs = geo_sweep_pairs(&lines);
+    let pairs = ours.pair_count();
+    let agree = if pairs == geo_pairs {
+        "same".to_string()
+    } else {
+        format!("geo {geo_pairs}")
+    };
+
+    let t_ours = best_of(3, || {
+        black_box(find_intersections(black_box(segs)).unwrap());
+    });
+    let t_geo = best_of(3, || {
+        black_box(geo_sweep_pairs(black_box(&lines)));
+    });
+    let t_brute = best_of(brute_runs, || {
+        black_box(geo_brute_pairs(black_box(&lines)));
+    });
+    println!(
+        "| {name} | {} | {} | {} | {pairs} ({agree}) | {:.4} | {:.4} | {:.2}× | {:.4} | {:.2}× |",
+        segs.len(),
+        ours.points.len(),
+        ours.overlaps.len(),
+        t_ours,
+        t_geo,
+        t_geo / t_ours,
+        t_brute,
+        t_brute / t_ours
+    );
+}
+
+/// Run the group and print a Markdown table.
+pub fn run() {
+    let mut rng = Rng(0x5eed_0002);
+    println!("## intersect: segment intersection (best of 3; O(n²) loop best of 1 at n = 1e5)\n");
+    println!(
+        "| input | n | intersection points | overlaps | meeting pairs (geo agrees?) | compgeom s | geo sweep s | geo / compgeom | geo O(n²) s | O(n²) / compgeom |"
+    );
+    println!("|---|---:|---:|---:|---|---:|---:|---:|---:|---:|");
+    case("short random", &short_segments(&mut rng, 100_000), 1);
+    case("long random", &long_segments(&mut rng, 1_000), 3);
+    case("100×100 grid", &grid_segments(&mut rng, 10_000), 3);
+}
