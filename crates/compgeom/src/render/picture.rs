@@ -257,7 +257,8 @@ impl Picture {
         };
         // Plot area: what is left after margin, title and legend column (at least 1 px).
         let m = self.margin.min(w / 4.0).min(h / 4.0);
-        let gap = if legend.is_empty() { 0.0 } else { m / 2.0 };
+        // Room between plot and legend for the labels drawn right of the rightmost points.
+        let gap = if legend.is_empty() { 0.0 } else { m + 12.0 };
         let x0 = m;
         let x1 = (w - m - legend_w - gap).max(x0 + 1.0);
         let y0 = m + title_h;
