@@ -71,3 +71,39 @@ impl From<compgeom::Error> for CliError {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use compgeom::{Error, Location};
+
+    #[test]
+    fn library_errors_map_to_exit_codes() {
+        let code = |e: Error| CliError::from(e).kind.code();
+        assert_eq!(
+            code(Error::parse("bad number", Location::new("a.csv", 3))),
+            2
+        );
+        assert_eq!(
+            code(Error::NonFinite {
+                what: "point 1".into(),
+                value: f64::NAN
+            }),
+            2
+        );
+        assert_eq!(code(Error::UnknownFormat("x".into())), 2);
+        assert_eq!(code(Error::InvalidInput("x".into())), 2);
+        assert_eq!(code(Error::Verification("not convex".into())), 1);
+        let io = std::io::Error::new(std::io::ErrorKind::PermissionDenied, "denied");
+        assert_eq!(
+            code(Error::Io {
+                path: "out".into(),
+                source: io
+            }),
+            1
+        );
+        // The message keeps the library's "(file:line)".
+        let e = CliError::from(Error::parse("bad number", Location::new("a.csv", 3)));
+        assert_eq!(e.message, "bad number (a.csv:3)");
+    }
+}
