@@ -130,7 +130,7 @@ fn measure(input: &Input, runs: usize) -> Result<Row, String> {
 
     let default = best_of(runs, || convex_hull(pts, &opts));
     let andrew = best_of(runs, || andrew_convex_hull(pts));
-    let quick = best_of_on_copy(runs, &coords, |c| quick_hull(c));
+    let quick = best_of_on_copy(runs, &coords, quick_hull);
     let graham = best_of_on_copy(runs, &coords, |c| graham_hull(c, false));
     Ok(Row {
         name: input.name,
