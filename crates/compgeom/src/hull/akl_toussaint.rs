@@ -30,6 +30,10 @@ use rayon::prelude::*;
 const FILTER_MIN: usize = 64;
 /// Above this many points the filter runs on the rayon pool.
 const PARALLEL_MIN: usize = 100_000;
+/// Points per parallel filter task.
+const CHUNK: usize = 1 << 15;
+/// Points tried before filtering everything (see [`Filter::worth_it`]).
+const SAMPLE: usize = 1024;
 
 /// The indices of the extreme points in eight directions, counter-clockwise from the
 /// leftmost: min x, min x+y, min y, max x−y, max x, max x+y, max y, min x−y.
@@ -39,7 +43,8 @@ struct Extremes {
 }
 
 impl Extremes {
-    /// Keys are oriented so that each slot keeps the *largest* key.
+    /// Keys are oriented so that each slot keeps the *largest* key. (x ± y are rounded:
+    /// they only nominate candidates; see the module doc.)
     #[inline(always)]
     fn keys(p: Point2) -> [f64; 8] {
         let s = p.x + p.y;
@@ -47,25 +52,30 @@ impl Extremes {
         [-p.x, -s, -p.y, d, p.x, s, p.y, -d]
     }
 
-    fn empty() -> Self {
-        Extremes {
-            best: [(f64::NEG_INFINITY, usize::MAX); 8],
-        }
-    }
-
-    #[inline(always)]
-    fn add(&mut self, i: usize, p: Point2) {
-        let k = Self::keys(p);
-        for (slot, key) in self.best.iter_mut().zip(k) {
-            if key > slot.0 || slot.1 == usize::MAX {
-                *slot = (key, i);
+    /// The extremes of `chunk`, whose first point has index `offset` in the input.
+    fn of_chunk(chunk: &[Point2], offset: usize) -> Self {
+        let k0 = Self::keys(chunk[0]);
+        let mut key = k0;
+        let mut idx = [offset; 8];
+        for (i, &p) in chunk.iter().enumerate().skip(1) {
+            let k = Self::keys(p);
+            for s in 0..8 {
+                if k[s] > key[s] {
+                    key[s] = k[s];
+                    idx[s] = offset + i;
+                }
             }
         }
+        let mut best = [(0.0, 0); 8];
+        for s in 0..8 {
+            best[s] = (key[s], idx[s]);
+        }
+        Extremes { best }
     }
 
     fn merge(mut self, other: Self) -> Self {
         for (mine, theirs) in self.best.iter_mut().zip(other.best) {
-            if theirs.1 != usize::MAX && (mine.1 == usize::MAX || theirs.0 > mine.0) {
+            if theirs.0 > mine.0 {
                 *mine = theirs;
             }
         }
@@ -120,6 +130,20 @@ impl Filter {
         ok.then_some([x0, y0, x1, y1])
     }
 
+    /// Whether the filter discards enough of a regular sample of the points (at least one
+    /// in eight) to pay for itself; on points in convex position it discards nothing.
+    /// Either way the hull is the same; this only chooses the faster route.
+    fn worth_it(&self, points: &[Point2]) -> bool {
+        let step = (points.len() / SAMPLE).max(1);
+        let tried = points.len().div_ceil(step);
+        let hits = points
+            .iter()
+            .step_by(step)
+            .filter(|&&p| self.discards(p))
+            .count();
+        hits * 8 >= tried
+    }
+
     fn not_right_of_any_edge(&self, p: Point2) -> bool {
         let n = self.q.len();
         (0..n).all(|i| orient2d(self.q[i], self.q[(i + 1) % n], p) != Orientation::Clockwise)
@@ -155,28 +179,27 @@ pub(crate) fn akl_toussaint(points: &[Point2], keep_collinear: bool) -> Vec<Poin
     let parallel = n >= PARALLEL_MIN;
     let ext = if parallel {
         points
-            .par_iter()
+            .par_chunks(CHUNK)
             .enumerate()
-            .fold(Extremes::empty, |mut e, (i, &p)| {
-                e.add(i, p);
-                e
-            })
-            .reduce(Extremes::empty, Extremes::merge)
+            .map(|(c, chunk)| Extremes::of_chunk(chunk, c * CHUNK))
+            // Any point's extremes are a harmless identity for the merge.
+            .reduce(|| Extremes::of_chunk(&points[..1], 0), Extremes::merge)
     } else {
-        let mut e = Extremes::empty();
-        for (i, &p) in points.iter().enumerate() {
-            e.add(i, p);
-        }
-        e
+        Extremes::of_chunk(points, 0)
     };
     let mut survivors: Vec<Point2> = match Filter::new(points, &ext) {
-        None => points.to_vec(),
-        Some(f) if parallel => points
-            .par_iter()
-            .copied()
-            .filter(|&p| !f.discards(p))
-            .collect(),
-        Some(f) => points.iter().copied().filter(|&p| !f.discards(p)).collect(),
+        Some(f) if f.worth_it(points) => {
+            if parallel {
+                points
+                    .par_chunks(CHUNK)
+                    .map(|c| c.iter().copied().filter(|&p| !f.discards(p)).collect())
+                    .collect::<Vec<Vec<Point2>>>()
+                    .concat()
+            } else {
+                points.iter().copied().filter(|&p| !f.discards(p)).collect()
+            }
+        }
+        _ => points.to_vec(),
     };
     sort_dedup(&mut survivors);
     monotone_chain(&survivors, keep_collinear)

@@ -6,20 +6,13 @@
 //! "not a right turn", so its middle point is removed (or, with `keep_collinear`, kept).
 //! O(n log n) for the sort, O(n) for the two walks.
 
-use crate::kernel::{compare_xy, orient2d, Orientation, Point2};
-use rayon::slice::ParallelSliceMut;
-
-/// Above this many points the sort runs on the rayon pool.
-pub(crate) const PARALLEL_SORT_MIN: usize = 100_000;
+use super::sort::sort_lex;
+use crate::kernel::{orient2d, Orientation, Point2};
 
 /// Sort `points` lexicographically and drop repeated points (exact comparisons; `-0.0` and
 /// `0.0` are the same coordinate).
 pub(crate) fn sort_dedup(points: &mut Vec<Point2>) {
-    if points.len() >= PARALLEL_SORT_MIN {
-        points.par_sort_unstable_by(|a, b| compare_xy(*a, *b));
-    } else {
-        points.sort_unstable_by(|a, b| compare_xy(*a, *b));
-    }
+    sort_lex(points);
     points.dedup_by(|a, b| a == b);
 }
 

@@ -54,6 +54,7 @@
 mod akl_toussaint;
 mod andrew;
 mod slow;
+mod sort;
 mod verify;
 
 use crate::kernel::{ensure_finite, Point2};
