@@ -1,78 +1,66 @@
 //! Lexicographic sorting of points (x, then y) for the monotone chain.
 //!
-//! Small inputs use a comparison sort with [`compare_xy`]. Large inputs use an LSD radix
-//! sort on an order-preserving integer image of x (exact: it orders the f64 values exactly
-//! as `<` does, with `-0.0` and `0.0` mapped to the same key), then sort each run of equal
-//! x by y. Radix passes in which every key has the same digit are skipped.
+//! Small inputs use a comparison sort with [`compare_xy`]. Large inputs are first
+//! distributed into about n/2 buckets by `floor((x - min x) * scale)` and each bucket is
+//! then sorted with [`compare_xy`]. The order stays exact: the bucket map is computed with
+//! correctly rounded operations, which are monotone, so `x < x'` never puts `x'` in an
+//! earlier bucket, and equal x share a bucket; only the speed depends on how evenly the
+//! points spread (skewed input degrades to the comparison sort, O(n log n)).
 
 use crate::kernel::{compare_xy, Point2};
 
 /// Below this many points a comparison sort is faster.
-const RADIX_MIN: usize = 1 << 12;
-/// Digit width of the radix sort.
-const BITS: u32 = 11;
-const BUCKETS: usize = 1 << BITS;
-const PASSES: usize = 64usize.div_ceil(BITS as usize);
-
-/// An unsigned key ordered like the finite value `v` (`-0.0` and `0.0` equal).
-#[inline(always)]
-fn order_key(v: f64) -> u64 {
-    let b = (v + 0.0).to_bits();
-    if b >> 63 == 1 {
-        !b
-    } else {
-        b | (1 << 63)
-    }
-}
+const BUCKET_MIN: usize = 1 << 12;
 
 /// Sort finite points lexicographically (x, then y).
 pub(crate) fn sort_lex(points: &mut Vec<Point2>) {
     let n = points.len();
-    if n < RADIX_MIN {
+    // Counters are u32: beyond that size use the comparison sort.
+    if n < BUCKET_MIN || n > u32::MAX as usize {
         points.sort_unstable_by(|a, b| compare_xy(*a, *b));
         return;
     }
-    let mut hist = vec![[0u32; BUCKETS]; PASSES];
+    let (mut lo, mut hi) = (points[0].x, points[0].x);
     for p in points.iter() {
-        let k = order_key(p.x);
-        for (pass, h) in hist.iter_mut().enumerate() {
-            h[((k >> (pass as u32 * BITS)) as usize) & (BUCKETS - 1)] += 1;
+        lo = lo.min(p.x);
+        hi = hi.max(p.x);
+    }
+    let buckets = n / 2;
+    // A non-finite or zero scale still gives a monotone map (see the module doc); the
+    // clamp below keeps every index in range.
+    let scale = buckets as f64 / (hi - lo);
+    let last = buckets - 1;
+    let bucket = |x: f64| -> usize {
+        let t = (x - lo) * scale;
+        // `as` saturates (NaN -> 0); both are monotone.
+        (t as usize).min(last)
+    };
+    let mut start = vec![0u32; buckets + 1];
+    let ids: Vec<u32> = points
+        .iter()
+        .map(|p| {
+            let b = bucket(p.x);
+            start[b + 1] += 1;
+            b as u32
+        })
+        .collect();
+    for b in 0..buckets {
+        start[b + 1] += start[b];
+    }
+    let mut next = start.clone();
+    let mut out = vec![Point2::default(); n];
+    for (p, &b) in points.iter().zip(&ids) {
+        let slot = &mut next[b as usize];
+        out[*slot as usize] = *p;
+        *slot += 1;
+    }
+    for w in start.windows(2) {
+        let bucket = &mut out[w[0] as usize..w[1] as usize];
+        if bucket.len() > 1 {
+            bucket.sort_unstable_by(|a, b| compare_xy(*a, *b));
         }
     }
-    let mut src = std::mem::take(points);
-    let mut dst = vec![Point2::default(); n];
-    for (pass, h) in hist.iter().enumerate() {
-        // A digit shared by every key does not reorder anything.
-        if h.iter().any(|&c| c as usize == n) {
-            continue;
-        }
-        let mut offset = [0usize; BUCKETS];
-        let mut sum = 0usize;
-        for (o, &c) in offset.iter_mut().zip(h.iter()) {
-            *o = sum;
-            sum += c as usize;
-        }
-        let shift = pass as u32 * BITS;
-        for &p in src.iter() {
-            let d = ((order_key(p.x) >> shift) as usize) & (BUCKETS - 1);
-            dst[offset[d]] = p;
-            offset[d] += 1;
-        }
-        std::mem::swap(&mut src, &mut dst);
-    }
-    // Runs of equal x: order by y.
-    let mut i = 0;
-    while i < n {
-        let mut j = i + 1;
-        while j < n && src[j].x == src[i].x {
-            j += 1;
-        }
-        if j - i > 1 {
-            src[i..j].sort_unstable_by(|a, b| compare_xy(*a, *b));
-        }
-        i = j;
-    }
-    *points = src;
+    *points = out;
 }
 
 #[cfg(test)]
@@ -80,7 +68,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn radix_order_matches_compare_xy() {
+    fn bucket_order_matches_compare_xy() {
         let mut s = 0x1234_5678_9abc_def0u64;
         let mut next = || {
             s ^= s << 13;
@@ -89,6 +77,19 @@ mod tests {
             s
         };
         let specials = [0.0, -0.0, 1e-310, -1e-310, 1e300, -1e300, 1.0, -1.0, 0.5];
+        // Ranges that are huge (overflowing to infinity), tiny (subnormal) and ordinary.
+        for spread in [f64::MAX, 1e-318, 1.0] {
+            let mut pts: Vec<Point2> = (0..10_000)
+                .map(|i| {
+                    let t = ((next() % 2001) as f64 - 1000.0) / 1000.0;
+                    Point2::new(t * spread, (i % 5) as f64)
+                })
+                .collect();
+            let mut expected = pts.clone();
+            expected.sort_by(|a, b| compare_xy(*a, *b));
+            sort_lex(&mut pts);
+            assert_eq!(pts, expected, "spread {spread}");
+        }
         let mut pts: Vec<Point2> = (0..20_000)
             .map(|i| {
                 let x = if i % 3 == 0 {
