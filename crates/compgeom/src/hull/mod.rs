@@ -6,7 +6,7 @@
 //!
 //! | function | method | time |
 //! |---|---|---|
-//! | [`convex_hull`] (default) | Akl–Toussaint filter (8 extreme points) + monotone chain on the survivors; parallel above 100 000 points | O(n log n) worst case; near-linear on typical input (the filter discards almost everything) |
+//! | [`convex_hull`] (default) | Akl–Toussaint filter (8 extreme points) + monotone chain on the survivors; the filter runs in parallel above 100 000 points | O(n log n) worst case; near-linear on typical input (the filter discards almost everything) |
 //! | [`andrew_convex_hull`] | the book's CONVEXHULL, Andrew's monotone chain | O(n log n) |
 //! | [`slow_convex_hull`] | the book's SLOWCONVEXHULL, every ordered pair tested against every point | O(n³) |
 //! | [`verify_convex_hull`] | exact check of a claimed hull | O(n log h) |
@@ -64,8 +64,8 @@ use std::collections::HashMap;
 /// Which algorithm computes the hull.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum HullAlgorithm {
-    /// The fastest exact method: an Akl–Toussaint extreme-point filter, then the monotone
-    /// chain on the points that survive it (parallel on large input).
+    /// The fastest exact method: an Akl–Toussaint extreme-point filter (parallel on large
+    /// input), then the monotone chain on the points that survive it. O(n log n).
     #[default]
     Default,
     /// Andrew's monotone chain, the book's CONVEXHULL (§1.1). O(n log n).
