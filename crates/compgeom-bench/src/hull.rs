@@ -48,6 +48,15 @@ fn circle(n: usize, seed: u64) -> Vec<Point2> {
         .collect()
 }
 
+/// Points on a 1000 x 1000 integer grid: many duplicates and long collinear runs on the
+/// hull's sides (a workload that hurts careless implementations).
+fn grid(n: usize, seed: u64) -> Vec<Point2> {
+    let mut r = Rng::new(seed);
+    (0..n)
+        .map(|_| Point2::new((r.next_u64() % 1000) as f64, (r.next_u64() % 1000) as f64))
+        .collect()
+}
+
 fn key(p: Point2) -> (u64, u64) {
     ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
 }
@@ -173,6 +182,13 @@ pub fn run(quick: bool) -> Result<(), String> {
             Input {
                 name: "circle",
                 points: circle(m, 4),
+            },
+            3,
+        ),
+        (
+            Input {
+                name: "grid",
+                points: grid(m, 5),
             },
             3,
         ),
