@@ -9,6 +9,7 @@
 //! | [`convex_hull`] (default) | Akl–Toussaint filter (8 extreme points) + monotone chain on the survivors; the filter runs in parallel above 100 000 points | O(n log n) worst case; near-linear on typical input (the filter discards almost everything) |
 //! | [`andrew_convex_hull`] | the book's CONVEXHULL, Andrew's monotone chain | O(n log n) |
 //! | [`slow_convex_hull`] | the book's SLOWCONVEXHULL, every ordered pair tested against every point | O(n³) |
+//! | [`convex_hull_indices`] | as [`convex_hull`], reporting input indices | + O(n) |
 //! | [`verify_convex_hull`] | exact check of a claimed hull | O(n log h) |
 //!
 //! All three give the same answer (the tests hold them to it), in one convention:
@@ -28,7 +29,7 @@
 //! | empty | empty |
 //! | one distinct point (maybe repeated) | that point |
 //! | all points on one line | its two extreme points, smaller first (with `keep_collinear`: every distinct point, in lexicographic order from the smallest) |
-//! | repeated points | merged (compared exactly; `-0.0 == 0.0`) |
+//! | repeated points | merged (compared exactly; `-0.0 == 0.0`, and either may be reported) |
 //! | collinear points on an edge | dropped (kept with `keep_collinear`) |
 //! | a NaN or infinite coordinate | `Err(Error::NonFinite)` naming the first such point |
 //!
