@@ -10,45 +10,17 @@
 //! maximal overlaps). Answers are compared once, outside the clock, by the number of
 //! meeting pairs (compgeom's `pair_count` against the number of pairs geo yields).
 
+use crate::util::{best_of, Rng};
 use compgeom::intersect::find_intersections;
 use compgeom::{Point2, Segment2};
 use geo::algorithm::sweep::Intersections;
 use geo::line_intersection::line_intersection;
 use geo::{coord, Line};
 use std::hint::black_box;
-use std::time::Instant;
 
-/// A small deterministic generator (splitmix64), so runs are reproducible.
-struct Rng(u64);
-
-impl Rng {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Uniform integer in `lo..=hi`.
-    fn int(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
-    }
-}
-
-fn best_of(runs: usize, mut f: impl FnMut()) -> f64 {
-    (0..runs)
-        .map(|_| {
-            let t = Instant::now();
-            f();
-            t.elapsed().as_secs_f64()
-        })
-        .fold(f64::INFINITY, f64::min)
+/// Uniform integer in `lo..=hi`.
+fn int(rng: &mut Rng, lo: i64, hi: i64) -> i64 {
+    lo + (rng.next_u64() % (hi - lo + 1) as u64) as i64
 }
 
 /// `n` short segments in the unit square (length below 0.008, random direction):
@@ -80,10 +52,10 @@ fn long_segments(rng: &mut Rng, n: usize) -> Vec<Segment2> {
 fn grid_segments(rng: &mut Rng, n: usize) -> Vec<Segment2> {
     (0..n)
         .map(|_| {
-            let (x, y) = (rng.int(0, 100), rng.int(0, 100));
+            let (x, y) = (int(rng, 0, 100), int(rng, 0, 100));
             let (u, v) = (
-                (x + rng.int(-4, 4)).clamp(0, 100),
-                (y + rng.int(-4, 4)).clamp(0, 100),
+                (x + int(rng, -4, 4)).clamp(0, 100),
+                (y + int(rng, -4, 4)).clamp(0, 100),
             );
             Segment2::new(
                 Point2::new(x as f64, y as f64),
@@ -128,49 +100,46 @@ fn geo_brute_pairs(lines: &[Line<f64>]) -> usize {
     count
 }
 
-fn case(name: &str, segs: &[Segment2], brute_runs: usize) {
+fn case(name: &str, segs: &[Segment2], brute_runs: usize) -> Result<(), String> {
     let lines = to_geo(segs);
     // Answers, once, outside the clock.
-    let ours = find_intersections(segs).expect("finite input");
+    let ours = find_intersections(segs).map_err(|e| e.to_string())?;
     let geo_pairs = geo_sweep_pairs(&lines);
     let pairs = ours.pair_count();
-    let agree = if pairs == geo_pairs {
-        "same".to_string()
+    if pairs != geo_pairs {
+        return Err(format!(
+            "{name}: {pairs} meeting pairs, geo finds {geo_pairs}"
+        ));
+    }
+    let t_ours = best_of(3, || find_intersections(black_box(segs)).unwrap()).as_secs_f64();
+    let t_geo = best_of(3, || geo_sweep_pairs(black_box(&lines))).as_secs_f64();
+    let brute = if brute_runs == 0 {
+        "| skipped | |".to_string()
     } else {
-        format!("geo {geo_pairs}")
+        let t = best_of(brute_runs, || geo_brute_pairs(black_box(&lines))).as_secs_f64();
+        format!("| {t:.4} | {:.2}× |", t / t_ours)
     };
-
-    let t_ours = best_of(3, || {
-        black_box(find_intersections(black_box(segs)).unwrap());
-    });
-    let t_geo = best_of(3, || {
-        black_box(geo_sweep_pairs(black_box(&lines)));
-    });
-    let t_brute = best_of(brute_runs, || {
-        black_box(geo_brute_pairs(black_box(&lines)));
-    });
     println!(
-        "| {name} | {} | {} | {} | {pairs} ({agree}) | {:.4} | {:.4} | {:.2}× | {:.4} | {:.2}× |",
+        "| {name} | {} | {} | {} | {pairs} | {t_ours:.4} | {t_geo:.4} | {:.2}× {brute}",
         segs.len(),
         ours.points.len(),
         ours.overlaps.len(),
-        t_ours,
-        t_geo,
         t_geo / t_ours,
-        t_brute,
-        t_brute / t_ours
     );
+    Ok(())
 }
 
-/// Run the group and print a Markdown table.
-pub fn run() {
-    let mut rng = Rng(0x5eed_0002);
-    println!("## intersect: segment intersection (best of 3; O(n²) loop best of 1 at n = 1e5)\n");
+/// Run the group and print a Markdown table. `quick` uses inputs ten times smaller.
+pub fn run(quick: bool) -> Result<(), String> {
+    let mut rng = Rng::new(0x5eed_0002);
+    let k = if quick { 10 } else { 1 };
+    println!("## intersect: segment intersection (best of 3; the O(n²) loop once at n = 1e5)\n");
     println!(
-        "| input | n | intersection points | overlaps | meeting pairs (geo agrees?) | compgeom s | geo sweep s | geo / compgeom | geo O(n²) s | O(n²) / compgeom |"
+        "| input | n | intersection points | overlaps | meeting pairs (= geo's) | compgeom s | geo sweep s | geo / compgeom | geo O(n²) s | O(n²) / compgeom |"
     );
-    println!("|---|---:|---:|---:|---|---:|---:|---:|---:|---:|");
-    case("short random", &short_segments(&mut rng, 100_000), 1);
-    case("long random", &long_segments(&mut rng, 1_000), 3);
-    case("100×100 grid", &grid_segments(&mut rng, 10_000), 3);
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    case("short random", &short_segments(&mut rng, 100_000 / k), 1)?;
+    case("long random", &long_segments(&mut rng, 1_000 / k), 3)?;
+    case("100×100 grid", &grid_segments(&mut rng, 10_000 / k), 3)?;
+    Ok(())
 }

@@ -1,2 +1,36 @@
-//! The `compgeom` command-line tool.
-fn main() {}
+//! The `compgeom` command-line tool: a thin shell over the `compgeom` library.
+//!
+//! `main` parses the arguments (clap: usage errors exit 2), calls [`run`], and turns its
+//! error into one `error: …` line on stderr and an exit code (2 bad input, 1 other failure).
+//! See `cli.rs` for the command list and how a command adds itself.
+
+mod cli;
+mod commands;
+mod demo;
+mod error;
+mod input;
+mod output;
+mod progress;
+
+use clap::Parser;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    // Usage errors print clap's message and exit with 2; --help / --version exit 0.
+    let cli = cli::Cli::parse();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {}", e.message);
+            ExitCode::from(e.kind.code())
+        }
+    }
+}
+
+/// Run one command.
+fn run(cli: cli::Cli) -> Result<(), error::CliError> {
+    match cli.command {
+        cli::Command::Hull(args) => commands::hull::run(&args),
+        cli::Command::Demo(args) => demo::run(&args),
+    }
+}

@@ -1,0 +1,143 @@
+//! The command line: a clap-derive [`Command`] enum with one args struct per subcommand.
+//!
+//! Every command that reads geometry flattens [`InputArgs`] (INPUT, `--input-format`) and
+//! [`OutputArgs`] (`--format`, `-o`, `--svg`, `--verify`) into its own args struct, so the
+//! flags mean the same everywhere.
+//!
+//! ## Adding a command
+//!
+//! 1. Create `src/commands/NAME.rs` with `pub struct NAMEArgs` (`#[derive(clap::Args)]`,
+//!    with `#[command(flatten)] input: InputArgs` and `#[command(flatten)] output: OutputArgs`,
+//!    plus its own flags) and `pub fn run(args: &NAMEArgs) -> Result<(), CliError>`:
+//!    read with [`crate::input`], call the library, verify when asked, then write with
+//!    [`crate::output`] (JSON via serde, other formats via `compgeom::io::write_shape`) and
+//!    draw with `compgeom::render`.
+//! 2. Add `pub mod NAME;` in `src/commands/mod.rs`, a variant here (its doc comment is the
+//!    one-line help; document the JSON fields in `after_long_help`), and a match arm in
+//!    `main.rs`'s `run`.
+//! 3. Add `src/demo/NAME.rs` with `pub fn section(demo: &Demo) -> Result<Section, CliError>`
+//!    and list it in `demo::SECTIONS`.
+//! 4. Add tests to `tests/cli.rs`.
+
+use crate::commands::hull::HullArgs;
+use crate::demo::DemoArgs;
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+/// Exact computational geometry: the algorithms of de Berg, Cheong, van Kreveld & Overmars,
+/// "Computational Geometry: Algorithms and Applications" (3rd ed.), every decision exact.
+///
+/// Exit codes: 0 success, 1 failure (writing output, verification), 2 bad input or usage.
+#[derive(Debug, Parser)]
+#[command(
+    name = "compgeom",
+    version,
+    propagate_version = true,
+    max_term_width = 100
+)]
+pub struct Cli {
+    /// The command to run.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The commands, in book order; `demo` last.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Convex hull of points in the plane (book chapter 1).
+    #[command(after_long_help = crate::commands::hull::JSON_HELP)]
+    Hull(HullArgs),
+    /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
+    Demo(DemoArgs),
+}
+
+/// Where the input comes from and how to read it.
+#[derive(Debug, Clone, Args)]
+pub struct InputArgs {
+    /// Input file, or `-` for standard input.
+    #[arg(value_name = "INPUT")]
+    pub input: PathBuf,
+
+    /// Input format. Default: from the file extension (.csv/.txt/.xy, .wkt, .geojson),
+    /// otherwise detected from the content.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub input_format: Option<InputFormat>,
+}
+
+/// How results are checked, written and drawn.
+#[derive(Debug, Clone, Args)]
+pub struct OutputArgs {
+    /// Output format.
+    #[arg(short = 'f', long, value_enum, default_value_t = OutputFormat::Json)]
+    pub format: OutputFormat,
+
+    /// Write the result to this file (atomically: complete or not at all) instead of
+    /// standard output. `-` means standard output.
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub output: Option<PathBuf>,
+
+    /// Also draw the input and the result as an SVG picture in this file.
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<PathBuf>,
+
+    /// Check the result exactly with the library's verifier; exit 1 if it fails.
+    #[arg(long)]
+    pub verify: bool,
+}
+
+/// Input formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum InputFormat {
+    /// `x,y` or `x y` per line; `#` starts a comment.
+    Csv,
+    /// Well-known text.
+    Wkt,
+    /// GeoJSON (RFC 7946).
+    Geojson,
+}
+
+impl From<InputFormat> for compgeom::io::Format {
+    fn from(f: InputFormat) -> Self {
+        match f {
+            InputFormat::Csv => compgeom::io::Format::Csv,
+            InputFormat::Wkt => compgeom::io::Format::Wkt,
+            InputFormat::Geojson => compgeom::io::Format::GeoJson,
+        }
+    }
+}
+
+/// Output formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum OutputFormat {
+    /// One JSON object; each command documents its fields in `--help`.
+    Json,
+    /// The result geometry, one `x,y` vertex per line.
+    Csv,
+    /// The result geometry as well-known text.
+    Wkt,
+    /// The result geometry as a GeoJSON (RFC 7946) geometry.
+    Geojson,
+}
+
+impl OutputFormat {
+    /// The library format for geometry output (`None` for JSON, which each command builds).
+    pub fn geometry_format(self) -> Option<compgeom::io::Format> {
+        match self {
+            OutputFormat::Json => None,
+            OutputFormat::Csv => Some(compgeom::io::Format::Csv),
+            OutputFormat::Wkt => Some(compgeom::io::Format::Wkt),
+            OutputFormat::Geojson => Some(compgeom::io::Format::GeoJson),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn command_line_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

@@ -1,0 +1,4 @@
+//! One module per command, each with its args struct and `run`. See `cli.rs` for how a
+//! command adds itself.
+
+pub mod hull;

@@ -1,0 +1,554 @@
+//! The `compgeom` binary end to end: arguments, formats, files, exit codes, demo.
+//!
+//! Tests at the top level check the CLI's own behaviour (usage errors, missing files,
+//! atomic output, help, demo files). Tests in `mod with_io_and_hull` check real results and
+//! need the library's readers/writers (`compgeom::io`) and hull (`compgeom::hull`).
+
+use assert_cmd::Command;
+use predicates::prelude::*;
+use serde_json::Value;
+use std::fs;
+use std::path::Path;
+use tempfile::TempDir;
+
+fn compgeom() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_compgeom"))
+}
+
+/// A temporary directory holding `name` with `content`.
+fn input(name: &str, content: &str) -> (TempDir, std::path::PathBuf) {
+    let dir = TempDir::new().unwrap();
+    let path = dir.path().join(name);
+    fs::write(&path, content).unwrap();
+    (dir, path)
+}
+
+/// The names of the files in `dir`, sorted.
+fn files_in(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+/// Vertices of CSV output (`x,y` lines). A polygon ring may be written closed (first vertex
+/// repeated at the end); the repeat is dropped.
+fn csv_vertices(text: &str) -> Vec<(f64, f64)> {
+    let mut v: Vec<(f64, f64)> = text
+        .lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            let (x, y) = l.split_once(',').expect("x,y");
+            (x.trim().parse().unwrap(), y.trim().parse().unwrap())
+        })
+        .collect();
+    if v.len() > 3 && v.first() == v.last() {
+        v.pop();
+    }
+    v
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    compgeom()
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("Usage"));
+    compgeom()
+        .arg("hull")
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("<INPUT>"));
+    compgeom().args(["frobnicate"]).assert().code(2);
+    for bad in [
+        ["--format", "xml"],
+        ["--input-format", "shp"],
+        ["--algorithm", "quick"],
+    ] {
+        compgeom()
+            .args(["hull", "-"])
+            .args(bad)
+            .write_stdin("0,0\n")
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("error:"))
+            .stderr(predicate::str::contains(bad[1]));
+    }
+}
+
+#[test]
+fn help_documents_the_json_fields() {
+    let out = compgeom().args(["hull", "--help"]).assert().success();
+    let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+    for field in [
+        "hull",
+        "algorithm",
+        "input_points",
+        "keep_collinear",
+        "verified",
+    ] {
+        assert!(
+            text.contains(&format!("  {field} ")),
+            "--help lacks {field}:\n{text}"
+        );
+    }
+    for flag in [
+        "--input-format",
+        "--format",
+        "--output",
+        "--svg",
+        "--verify",
+        "--keep-collinear",
+    ] {
+        assert!(text.contains(flag), "--help lacks {flag}");
+    }
+    compgeom()
+        .arg("--version")
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("compgeom"));
+}
+
+#[test]
+fn missing_input_is_bad_input_and_writes_nothing() {
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("out.json");
+    let svg = dir.path().join("out.svg");
+    compgeom()
+        .arg("hull")
+        .arg(dir.path().join("nope.csv"))
+        .arg("-o")
+        .arg(&out)
+        .arg("--svg")
+        .arg(&svg)
+        .assert()
+        .code(2)
+        .stdout("")
+        .stderr(predicate::str::starts_with("error: "))
+        .stderr(predicate::str::contains("nope.csv"));
+    assert!(
+        files_in(dir.path()).is_empty(),
+        "{:?}",
+        files_in(dir.path())
+    );
+}
+
+#[test]
+fn input_that_is_not_text_is_bad_input() {
+    let (_dir, path) = input("points.csv", "");
+    fs::write(&path, [0xff, 0xfe, 0x00, 0x31]).unwrap();
+    compgeom()
+        .arg("hull")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("error:").and(predicate::str::contains("UTF-8")));
+}
+
+#[test]
+fn unwritable_output_exits_1() {
+    let (dir, path) = input("points.csv", "0,0\n1,0\n0,1\n");
+    let out = dir.path().join("no-such-dir").join("out.json");
+    compgeom()
+        .arg("hull")
+        .arg(&path)
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .code(1)
+        .stderr(predicate::str::starts_with("error: "))
+        .stderr(predicate::str::contains("out.json"));
+    assert!(!out.exists());
+}
+
+#[test]
+fn output_file_is_written_whole_without_leftovers() {
+    let (dir, path) = input("points.csv", "0,0\n1,0\n0,1\n");
+    let out = dir.path().join("out.json");
+    let svg = dir.path().join("pic.svg");
+    // An existing target is replaced, not appended to.
+    fs::write(
+        &out,
+        "old content that is longer than the new one ".repeat(100),
+    )
+    .unwrap();
+    compgeom()
+        .arg("hull")
+        .arg(&path)
+        .arg("-o")
+        .arg(&out)
+        .arg("--svg")
+        .arg(&svg)
+        .assert()
+        .success()
+        .stdout("");
+    let text = fs::read_to_string(&out).unwrap();
+    let v: Value = serde_json::from_str(&text).expect("valid JSON");
+    assert!(v.get("hull").is_some_and(Value::is_array));
+    assert!(text.ends_with('\n'));
+    let svg_text = fs::read_to_string(&svg).unwrap();
+    assert!(svg_text.starts_with("<svg") && svg_text.trim_end().ends_with("</svg>"));
+    // No temporary files left beside the outputs.
+    assert_eq!(files_in(dir.path()), ["out.json", "pic.svg", "points.csv"]);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt as _;
+        let mode = fs::metadata(&svg).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode, 0o644, "new files are readable like other files");
+    }
+}
+
+#[test]
+fn dash_output_means_stdout() {
+    compgeom()
+        .args(["hull", "-", "-o", "-", "--input-format", "csv"])
+        .write_stdin("0,0\n")
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("\"algorithm\":\"default\""));
+}
+
+#[test]
+fn demo_writes_a_gallery() {
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("gallery");
+    let assert = compgeom()
+        .arg("demo")
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .success();
+    let index = out.join("index.html");
+    let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
+    assert_eq!(stdout.trim(), index.display().to_string());
+    let html = fs::read_to_string(&index).unwrap();
+    assert!(html.contains("Chapter 1 — convex hull"));
+    let svgs: Vec<String> = files_in(&out)
+        .into_iter()
+        .filter(|f| f.ends_with(".svg"))
+        .collect();
+    assert!(svgs.len() >= 5, "{svgs:?}");
+    for f in &svgs {
+        assert!(
+            html.contains(&format!("src=\"{f}\"")),
+            "{f} not in the gallery"
+        );
+        let svg = fs::read_to_string(out.join(f)).unwrap();
+        assert!(
+            svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"),
+            "{f}"
+        );
+        assert!(!svg.contains("NaN"), "{f}");
+    }
+    for fact in [
+        "<th>n</th>",
+        "<th>h</th>",
+        "<th>time</th>",
+        "slow",
+        "andrew",
+    ] {
+        assert!(html.contains(fact), "gallery lacks {fact}");
+    }
+    // Deterministic: a second run writes the same pictures.
+    let again = dir.path().join("again");
+    compgeom()
+        .arg("demo")
+        .arg("--out")
+        .arg(&again)
+        .assert()
+        .success();
+    for f in &svgs {
+        assert_eq!(
+            fs::read(out.join(f)).unwrap(),
+            fs::read(again.join(f)).unwrap(),
+            "{f} differs between runs"
+        );
+    }
+}
+
+/// These need the merged `compgeom::io` (readers, writers, format detection) and
+/// `compgeom::hull` (convex hull, verifier).
+mod with_io_and_hull {
+    use super::*;
+
+    /// Run `compgeom hull ARGS` on `path` and parse the JSON output.
+    fn hull_json(path: &Path, args: &[&str]) -> Value {
+        let out = compgeom()
+            .arg("hull")
+            .arg(path)
+            .args(args)
+            .assert()
+            .success();
+        serde_json::from_slice(&out.get_output().stdout).expect("JSON output")
+    }
+
+    /// The hull array as (x, y) pairs.
+    fn hull_of(v: &Value) -> Vec<(f64, f64)> {
+        v["hull"]
+            .as_array()
+            .expect("hull array")
+            .iter()
+            .map(|p| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap()))
+            .collect()
+    }
+
+    /// A square with an interior point, a point on the bottom edge and a duplicate corner.
+    const SQUARE_CSV: &str = "# a square\n2,2\n0,0\n1,1\n2,0\n1,0\n0,2\n0,0\n";
+    /// Clockwise from the lexicographically smallest point.
+    const SQUARE_HULL: [(f64, f64); 4] = [(0.0, 0.0), (0.0, 2.0), (2.0, 2.0), (2.0, 0.0)];
+
+    #[test]
+    fn csv_to_json_clockwise_from_smallest() {
+        let (_d, path) = input("square.csv", SQUARE_CSV);
+        let v = hull_json(&path, &[]);
+        assert_eq!(hull_of(&v), SQUARE_HULL);
+        assert_eq!(v["algorithm"], "default");
+        assert_eq!(v["input_points"], 7);
+        assert_eq!(v["keep_collinear"], false);
+        assert!(v.get("verified").is_none());
+        for alg in ["andrew", "slow"] {
+            let v = hull_json(&path, &["--algorithm", alg]);
+            assert_eq!(hull_of(&v), SQUARE_HULL, "{alg}");
+            assert_eq!(v["algorithm"], alg);
+        }
+    }
+
+    #[test]
+    fn keep_collinear_keeps_edge_points() {
+        let (_d, path) = input("square.csv", SQUARE_CSV);
+        let v = hull_json(
+            &path,
+            &["--algorithm", "andrew", "--keep-collinear", "--verify"],
+        );
+        assert_eq!(
+            hull_of(&v),
+            [(0.0, 0.0), (0.0, 2.0), (2.0, 2.0), (2.0, 0.0), (1.0, 0.0)]
+        );
+        assert_eq!(v["keep_collinear"], true);
+        assert_eq!(v["verified"], true);
+    }
+
+    #[test]
+    fn wkt_geojson_and_stdin_inputs() {
+        let (_d, wkt) = input(
+            "pts.wkt",
+            "MULTIPOINT ((2 2), (0 0), (1 1), (2 0), (0 2))\n",
+        );
+        assert_eq!(hull_of(&hull_json(&wkt, &[])), SQUARE_HULL);
+        let gj = r#"{"type":"FeatureCollection","features":[
+            {"type":"Feature","properties":{},"geometry":{"type":"MultiPoint","coordinates":[[2,2],[0,0],[1,1]]}},
+            {"type":"Feature","properties":{},"geometry":{"type":"Point","coordinates":[2,0]}},
+            {"type":"Feature","properties":{},"geometry":{"type":"Point","coordinates":[0,2]}}]}"#;
+        let (_d2, gj) = input("pts.geojson", gj);
+        let v = hull_json(&gj, &[]);
+        assert_eq!(hull_of(&v), SQUARE_HULL);
+        assert_eq!(v["input_points"], 5);
+
+        // Standard input, format detected from the content or given.
+        for (text, fmt) in [
+            (SQUARE_CSV, None),
+            ("MULTIPOINT ((2 2), (0 0), (2 0), (0 2))", Some("wkt")),
+            ("2 2\n0 0\n2 0\n0 2\n", Some("csv")),
+        ] {
+            let mut cmd = compgeom();
+            cmd.args(["hull", "-"]);
+            if let Some(f) = fmt {
+                cmd.args(["--input-format", f]);
+            }
+            let out = cmd.write_stdin(text).assert().success();
+            let v: Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
+            assert_eq!(hull_of(&v), SQUARE_HULL, "{text}");
+        }
+    }
+
+    #[test]
+    fn each_output_format() {
+        let (_d, path) = input("square.csv", SQUARE_CSV);
+        let run = |fmt: &str| {
+            let out = compgeom()
+                .arg("hull")
+                .arg(&path)
+                .args(["--format", fmt])
+                .assert()
+                .success();
+            String::from_utf8(out.get_output().stdout.clone()).unwrap()
+        };
+        // CSV: the hull vertices in order, one per line.
+        assert_eq!(csv_vertices(&run("csv")), SQUARE_HULL);
+        // WKT: a polygon.
+        let wkt = run("wkt");
+        assert!(wkt.trim_start().starts_with("POLYGON"), "{wkt}");
+        for (x, y) in SQUARE_HULL {
+            assert!(wkt.contains(&format!("{x} {y}")) || wkt.contains(&format!("{x:?} {y:?}")));
+        }
+        // GeoJSON: a polygon whose closed ring has the hull's vertices.
+        let gj: Value = serde_json::from_str(&run("geojson")).unwrap();
+        assert_eq!(gj["type"], "Polygon");
+        let ring: Vec<(f64, f64)> = gj["coordinates"][0]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap()))
+            .collect();
+        assert_eq!(ring.len(), 5);
+        assert_eq!(ring[0], ring[4]);
+        let mut got = ring[..4].to_vec();
+        let mut want = SQUARE_HULL.to_vec();
+        got.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        want.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        assert_eq!(got, want);
+    }
+
+    #[test]
+    fn small_hulls_take_smaller_shapes() {
+        let wkt_of = |text: &str| {
+            let out = compgeom()
+                .args(["hull", "-", "--input-format", "csv", "--format", "wkt"])
+                .write_stdin(text.to_string())
+                .assert()
+                .success();
+            String::from_utf8(out.get_output().stdout.clone()).unwrap()
+        };
+        assert!(wkt_of("3,4\n3,4\n").trim().starts_with("POINT"));
+        assert!(wkt_of("0,0\n1,1\n2,2\n").trim().starts_with("LINESTRING"));
+        let out = compgeom()
+            .args(["hull", "-", "--input-format", "csv"])
+            .write_stdin("# nothing\n")
+            .assert()
+            .success();
+        let v: Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
+        assert_eq!(v["hull"], serde_json::json!([]));
+        assert_eq!(v["input_points"], 0);
+    }
+
+    #[test]
+    fn coordinates_round_trip_exactly() {
+        let pts = [
+            (0.1, 0.1),
+            (1e200, 0.1),
+            (0.1, 1e200),
+            (0.30000000000000004, 0.2),
+        ];
+        let text: String = pts.iter().map(|(x, y)| format!("{x:?},{y:?}\n")).collect();
+        let (_d, path) = input("exact.csv", &text);
+        let v = hull_json(&path, &["--verify"]);
+        let hull = hull_of(&v);
+        let want: [(f64, f64); 3] = [(0.1, 0.1), (0.1, 1e200), (1e200, 0.1)];
+        assert_eq!(hull.len(), 3);
+        for (got, want) in hull.iter().zip(want) {
+            assert_eq!(got.0.to_bits(), want.0.to_bits());
+            assert_eq!(got.1.to_bits(), want.1.to_bits());
+        }
+        // The same through CSV output.
+        let out = compgeom()
+            .arg("hull")
+            .arg(&path)
+            .args(["-f", "csv"])
+            .assert()
+            .success();
+        let csv = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+        assert_eq!(csv_vertices(&csv), want);
+    }
+
+    #[test]
+    fn output_file_and_svg() {
+        let (dir, path) = input("square.csv", SQUARE_CSV);
+        let out = dir.path().join("hull.json");
+        let svg = dir.path().join("hull.svg");
+        compgeom()
+            .arg("hull")
+            .arg(&path)
+            .arg("-o")
+            .arg(&out)
+            .arg("--svg")
+            .arg(&svg)
+            .arg("--verify")
+            .assert()
+            .success()
+            .stdout("");
+        let v: Value = serde_json::from_str(&fs::read_to_string(&out).unwrap()).unwrap();
+        assert_eq!(hull_of(&v), SQUARE_HULL);
+        let svg = fs::read_to_string(&svg).unwrap();
+        assert!(svg.contains("n = 7, h = 4"), "title with n and h");
+        assert!(svg.contains("class=\"legend\""));
+        for label in [">0</text>", ">1</text>", ">2</text>", ">3</text>"] {
+            assert!(svg.contains(label), "vertex label {label}");
+        }
+        assert!(!svg.contains(">4</text>"));
+    }
+
+    #[test]
+    fn malformed_line_names_file_and_line() {
+        let (dir, path) = input("bad.csv", "0,0\n1,1\n1,x\n2,2\n");
+        let out = dir.path().join("out.json");
+        compgeom()
+            .arg("hull")
+            .arg(&path)
+            .arg("-o")
+            .arg(&out)
+            .assert()
+            .code(2)
+            .stdout("")
+            .stderr(predicate::str::starts_with("error: "))
+            .stderr(predicate::str::contains("bad.csv:3"));
+        assert!(!out.exists(), "no output file on error");
+        assert_eq!(files_in(dir.path()), ["bad.csv"]);
+    }
+
+    #[test]
+    fn non_finite_coordinates_are_bad_input() {
+        for text in ["0,0\nNaN,1\n", "0,0\n1,inf\n", "0,0\n-inf,1\n"] {
+            compgeom()
+                .args(["hull", "-", "--input-format", "csv"])
+                .write_stdin(text)
+                .assert()
+                .code(2)
+                .stdout("")
+                .stderr(predicate::str::starts_with("error: "));
+        }
+    }
+
+    #[test]
+    fn undetectable_format_is_bad_input() {
+        let (_d, path) = input("points.dat", "{ this is not geometry ]\n");
+        compgeom()
+            .arg("hull")
+            .arg(&path)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::starts_with("error: "));
+    }
+
+    #[test]
+    fn demo_hulls_are_real() {
+        let dir = TempDir::new().unwrap();
+        compgeom()
+            .arg("demo")
+            .arg("--out")
+            .arg(dir.path())
+            .assert()
+            .success();
+        let html = fs::read_to_string(dir.path().join("index.html")).unwrap();
+        // Table rows: caption, n, h, …
+        let h_of = |caption_start: &str| -> usize {
+            let row = html
+                .lines()
+                .find(|l| l.starts_with(&format!("<tr><td>{caption_start}")))
+                .unwrap_or_else(|| panic!("no row {caption_start}"));
+            let cells: Vec<&str> = row
+                .split("<td>")
+                .skip(1)
+                .map(|c| c.split("</td>").next().unwrap())
+                .collect();
+            cells[2].parse().unwrap()
+        };
+        assert_eq!(h_of("9×9 integer grid"), 4);
+        assert_eq!(h_of("the same grid"), 32);
+        assert_eq!(h_of("64 points on a circle"), 64);
+        let disc = h_of("200 random points");
+        assert!((8..200).contains(&disc), "{disc}");
+        assert!(h_of("the book&apos;s slow hull") >= 3);
+    }
+}
