@@ -370,6 +370,19 @@ proptest! {
         checked(&segs);
     }
 
+    /// The same degenerate grids, scaled and shifted so that coordinates are not small
+    /// integers: the kernel's exact comparisons decide instead of the integer fast path.
+    #[test]
+    fn scaled_and_shifted_grids_match_the_oracle(segs in grid_segments(4, 18), how in 0..3u8) {
+        let f = |v: f64| match how {
+            0 => v * 0.25,
+            1 => v + 4_194_304.0,
+            _ => v * 1e-3,
+        };
+        let segs: Vec<Segment2> = segs.iter().map(|t| s(f(t.a.x), f(t.a.y), f(t.b.x), f(t.b.y))).collect();
+        checked(&segs);
+    }
+
     #[test]
     fn axis_parallel_input_matches_the_oracle(segs in axis_segments()) {
         checked(&segs);

@@ -68,6 +68,7 @@ mod brute_force;
 mod order;
 mod red_blue;
 mod simple;
+mod small_int;
 mod status;
 mod sweep;
 

@@ -10,6 +10,7 @@
 //! the exact y values are equal). The nearest `f64` point (the kernel's correctly rounded
 //! `approx`) is computed only for points that are reported.
 
+use super::small_int;
 use crate::kernel::{Crossing, ExactPoint, Point2, Segment2};
 use std::cmp::Ordering;
 
@@ -109,8 +110,8 @@ impl EventPoint {
         } else if self.mid.x - self.rad.x > v {
             Ordering::Greater
         } else {
-            self.exact
-                .compare_x(&ExactPoint::Input(Point2::new(v, 0.0)))
+            let q = ExactPoint::Input(Point2::new(v, 0.0));
+            small_int::compare_coord(&self.exact, &q, 0).unwrap_or_else(|| self.exact.compare_x(&q))
         }
     }
 }
@@ -143,14 +144,16 @@ impl Ord for EventPoint {
             return sweep_cmp_points(self.mid, other.mid);
         }
         let (a, b) = (self, other);
-        by_box(b.mid.y, b.rad.y, a.mid.y, a.rad.y, || {
-            b.exact.compare_y(&a.exact)
-        })
-        .then_with(|| {
-            by_box(a.mid.x, a.rad.x, b.mid.x, b.rad.x, || {
-                a.exact.compare_x(&b.exact)
-            })
-        })
+        let exact_y = || {
+            small_int::compare_coord(&b.exact, &a.exact, 1)
+                .unwrap_or_else(|| b.exact.compare_y(&a.exact))
+        };
+        let exact_x = || {
+            small_int::compare_coord(&a.exact, &b.exact, 0)
+                .unwrap_or_else(|| a.exact.compare_x(&b.exact))
+        };
+        by_box(b.mid.y, b.rad.y, a.mid.y, a.rad.y, exact_y)
+            .then_with(|| by_box(a.mid.x, a.rad.x, b.mid.x, b.rad.x, exact_x))
     }
 }
 

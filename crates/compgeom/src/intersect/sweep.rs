@@ -22,6 +22,7 @@
 //! that set changes.
 
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
+use super::small_int;
 use super::status::Status;
 use super::{IntersectionPoint, Overlap};
 use crate::kernel::{
@@ -30,6 +31,7 @@ use crate::kernel::{
 };
 use crate::{Error, Result};
 use std::cmp::Ordering;
+use std::collections::btree_map::Entry;
 use std::collections::BTreeMap;
 
 const NONE: u32 = u32::MAX;
@@ -133,7 +135,12 @@ fn side(s: &Oriented, p: &EventPoint) -> Ordering {
             }
             match orient_near(s, p) {
                 Some(o) => o,
-                None => orient_exact(&s.upper.into(), &s.lower.into(), &p.exact),
+                None => match small_int::orient(s.upper, s.lower, &p.exact) {
+                    Some(Ordering::Greater) => Orientation::CounterClockwise,
+                    Some(Ordering::Less) => Orientation::Clockwise,
+                    Some(Ordering::Equal) => Orientation::Collinear,
+                    None => orient_exact(&s.upper.into(), &s.lower.into(), &p.exact),
+                },
             }
         }
     };
@@ -171,6 +178,22 @@ fn orient_near(s: &Oriented, p: &EventPoint) -> Option<Orientation> {
     }
 }
 
+/// [`compare_slopes`], with the small-integer fast path first.
+fn slopes(s: &Oriented, t: &Oriented) -> Ordering {
+    // compare_slopes(s, t) is the sign of dir(t) × dir(s), each directed from its
+    // lexicographically smaller endpoint.
+    let lex = |o: &Oriented| {
+        let (a, b) = (o.upper, o.lower);
+        if (a.x, a.y) <= (b.x, b.y) {
+            (a, b)
+        } else {
+            (b, a)
+        }
+    };
+    let ((sa, sb), (ta, tb)) = (lex(s), lex(t));
+    small_int::cross(ta, tb, sa, sb).unwrap_or_else(|| compare_slopes(s.segment(), t.segment()))
+}
+
 /// The order of two segments through a common point just below it (left to right),
 /// horizontal segments last, ties (collinear) by index.
 fn below_cmp(segs: &[Oriented], i: usize, j: usize) -> Ordering {
@@ -181,7 +204,7 @@ fn below_cmp(segs: &[Oriented], i: usize, j: usize) -> Ordering {
             if cs == 2 {
                 Ordering::Equal
             } else {
-                compare_slopes(s.segment(), t.segment())
+                slopes(s, t)
             }
         })
         .then(i.cmp(&j))
@@ -191,7 +214,7 @@ fn below_cmp(segs: &[Oriented], i: usize, j: usize) -> Ordering {
 fn collinear(segs: &[Oriented], i: usize, j: usize) -> bool {
     let (s, t) = (&segs[i], &segs[j]);
     s.direction_class() == t.direction_class()
-        && (s.direction_class() == 2 || compare_slopes(s.segment(), t.segment()) == Ordering::Equal)
+        && (s.direction_class() == 2 || slopes(s, t) == Ordering::Equal)
 }
 
 /// The runs of two or more consecutive collinear segments of `list`, each sorted.
@@ -491,8 +514,19 @@ impl Sweep {
         if let SegmentIntersection::Crossing(c) = segment_intersection(s, t) {
             let e = EventPoint::new(ExactPoint::Crossing(c));
             if e > *p {
-                self.queue.entry(e).or_default().holders += 1;
-                self.held[l] = Some(e);
+                // Hold the key as stored: if another pair (or an endpoint) defined this
+                // point first, later look-ups then compare equal by construction.
+                let stored = match self.queue.entry(e) {
+                    Entry::Occupied(mut o) => {
+                        o.get_mut().holders += 1;
+                        *o.key()
+                    }
+                    Entry::Vacant(v) => {
+                        v.insert(Event::default()).holders = 1;
+                        e
+                    }
+                };
+                self.held[l] = Some(stored);
             }
         }
     }
