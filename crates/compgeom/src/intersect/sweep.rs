@@ -124,6 +124,19 @@ fn side(s: &Oriented, p: &EventPoint) -> Ordering {
             Ordering::Equal
         };
     }
+    // The segment crosses the sweep line through p, so if p is left (right) of its whole
+    // x-range it passes right (left) of p: plain comparisons, exact.
+    let (lo, hi) = if s.upper.x <= s.lower.x {
+        (s.upper.x, s.lower.x)
+    } else {
+        (s.lower.x, s.upper.x)
+    };
+    if p.mid.x + p.rad.x < lo {
+        return Ordering::Greater;
+    }
+    if p.mid.x - p.rad.x > hi {
+        return Ordering::Less;
+    }
     let o = match p.exact {
         ExactPoint::Input(q) => orient2d(s.upper, s.lower, q),
         ExactPoint::Crossing(c) => {
@@ -509,6 +522,12 @@ impl Sweep {
     /// FINDNEWEVENT(l, r, p): `l` and `r` are now adjacent, `l` left of `r`.
     fn find_new_event(&mut self, l: usize, r: usize, p: &EventPoint) {
         let (s, t) = (self.segs[l].segment(), self.segs[r].segment());
+        // Disjoint bounding boxes (plain comparisons, exact): no common point.
+        let x_apart = s.a.x.max(s.b.x) < t.a.x.min(t.b.x) || t.a.x.max(t.b.x) < s.a.x.min(s.b.x);
+        let y_apart = s.a.y.max(s.b.y) < t.a.y.min(t.b.y) || t.a.y.max(t.b.y) < s.a.y.min(s.b.y);
+        if x_apart || y_apart {
+            return;
+        }
         // A common endpoint, an endpoint on the other segment or an overlap are found at
         // the endpoint events; only a proper crossing needs a new event.
         if let SegmentIntersection::Crossing(c) = segment_intersection(s, t) {
