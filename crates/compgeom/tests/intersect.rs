@@ -363,7 +363,7 @@ fn concurrent_crossings() -> impl Strategy<Value = Vec<Segment2>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(300))]
+    #![proptest_config(ProptestConfig::with_cases(1000))]
 
     #[test]
     fn grid_input_matches_the_oracle(segs in grid_segments(4, 22)) {
@@ -405,7 +405,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(100))]
+    #![proptest_config(ProptestConfig::with_cases(300))]
 
     #[test]
     fn long_segments_match_the_oracle(segs in long_segments()) {
@@ -527,7 +527,7 @@ fn noded(v: Vec<Segment2>) -> Vec<Segment2> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(300))]
+    #![proptest_config(ProptestConfig::with_cases(1000))]
 
     #[test]
     fn red_blue_matches_the_filtered_oracle(red in grid_segments(5, 14), blue in grid_segments(5, 14)) {
