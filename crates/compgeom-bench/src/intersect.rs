@@ -6,12 +6,15 @@
 //! * a plain O(n²) loop over all pairs with geo's `line_intersection` (a bounding-box
 //!   test first, which only skips the call).
 //!
-//! compgeom's `find_intersections` does more work per answer (exact points, U/L/C lists,
-//! maximal overlaps). Answers are compared once, outside the clock, by the number of
-//! meeting pairs (compgeom's `pair_count` against the number of pairs geo yields).
+//! compgeom is timed twice: `find_intersections` (the default: exact pairwise tests of
+//! boxes that overlap, or the sweep when too many x-ranges overlap) and
+//! `sweep_intersections` (the book's Bentley–Ottmann sweep). Both do more work per answer
+//! than geo (exact points rounded correctly, U/L/C lists, maximal overlaps). Answers are
+//! compared once, outside the clock, by the number of meeting pairs (compgeom's
+//! `pair_count`, for both methods, against the number of pairs geo yields).
 
 use crate::util::{best_of, Rng};
-use compgeom::intersect::find_intersections;
+use compgeom::intersect::{find_intersections, sweep_intersections};
 use compgeom::{Point2, Segment2};
 use geo::algorithm::sweep::Intersections;
 use geo::line_intersection::line_intersection;
@@ -111,7 +114,15 @@ fn case(name: &str, segs: &[Segment2], brute_runs: usize) -> Result<(), String> 
             "{name}: {pairs} meeting pairs, geo finds {geo_pairs}"
         ));
     }
+    if sweep_intersections(segs)
+        .map_err(|e| e.to_string())?
+        .pair_count()
+        != pairs
+    {
+        return Err(format!("{name}: the sweep and the default disagree"));
+    }
     let t_ours = best_of(3, || find_intersections(black_box(segs)).unwrap()).as_secs_f64();
+    let t_sweep = best_of(3, || sweep_intersections(black_box(segs)).unwrap()).as_secs_f64();
     let t_geo = best_of(3, || geo_sweep_pairs(black_box(&lines))).as_secs_f64();
     let brute = if brute_runs == 0 {
         "| skipped | |".to_string()
@@ -120,7 +131,7 @@ fn case(name: &str, segs: &[Segment2], brute_runs: usize) -> Result<(), String> 
         format!("| {t:.4} | {:.2}× |", t / t_ours)
     };
     println!(
-        "| {name} | {} | {} | {} | {pairs} | {t_ours:.4} | {t_geo:.4} | {:.2}× {brute}",
+        "| {name} | {} | {} | {} | {pairs} | {t_ours:.4} | {t_sweep:.4} | {t_geo:.4} | {:.2}× {brute}",
         segs.len(),
         ours.points.len(),
         ours.overlaps.len(),
@@ -135,9 +146,9 @@ pub fn run(quick: bool) -> Result<(), String> {
     let k = if quick { 10 } else { 1 };
     println!("## intersect: segment intersection (best of 3; the O(n²) loop once at n = 1e5)\n");
     println!(
-        "| input | n | intersection points | overlaps | meeting pairs (= geo's) | compgeom s | geo sweep s | geo / compgeom | geo O(n²) s | O(n²) / compgeom |"
+        "| input | n | intersection points | overlaps | meeting pairs (= geo's) | compgeom s | compgeom sweep s | geo sweep s | geo / compgeom | geo O(n²) s | O(n²) / compgeom |"
     );
-    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     case("short random", &short_segments(&mut rng, 100_000 / k), 1)?;
     case("long random", &long_segments(&mut rng, 1_000 / k), 3)?;
     case("100×100 grid", &grid_segments(&mut rng, 10_000 / k), 3)?;

@@ -3,9 +3,9 @@
 //! situation, the O(n) queue bound, Shamos–Hoey / is_simple and red/blue.
 
 use compgeom::intersect::{
-    any_intersection, brute_force_intersections, find_intersections, find_intersections_with_stats,
-    is_simple, red_blue_intersections, sweep_status_at, verify_intersections, Intersections,
-    Overlap,
+    any_intersection, brute_force_intersections, find_intersections, is_simple,
+    pairwise_intersections, red_blue_intersections, sweep_intersections,
+    sweep_intersections_with_stats, sweep_status_at, verify_intersections, Intersections, Overlap,
 };
 use compgeom::kernel::{segment_intersection, SegmentIntersection};
 use compgeom::{Error, Point2, Polygon, Segment2};
@@ -19,10 +19,21 @@ fn s(ax: f64, ay: f64, bx: f64, by: f64) -> Segment2 {
     Segment2::new(p(ax, ay), p(bx, by))
 }
 
-/// The sweep's answer, checked against the oracle (full comparison).
+/// The sweep's answer, checked against the oracle (full comparison); the pairwise method
+/// and the default must give exactly the same answer.
 fn checked(segs: &[Segment2]) -> Intersections {
-    let found = find_intersections(segs).unwrap();
+    let found = sweep_intersections(segs).unwrap();
     let expected = brute_force_intersections(segs).unwrap();
+    assert_eq!(
+        pairwise_intersections(segs).unwrap(),
+        expected,
+        "pairwise for {segs:?}"
+    );
+    assert_eq!(
+        find_intersections(segs).unwrap(),
+        expected,
+        "default for {segs:?}"
+    );
     assert_eq!(
         found.points.len(),
         expected.points.len(),
@@ -211,7 +222,7 @@ fn the_queue_holds_o_n_events() {
             s(0.0, t, 1.0, 1.0 - t * 0.999)
         })
         .collect();
-    let (found, stats) = find_intersections_with_stats(&segs).unwrap();
+    let (found, stats) = sweep_intersections_with_stats(&segs).unwrap();
     assert!(found.points.len() > n * (n - 1) / 4);
     assert!(
         stats.max_queue <= 3 * n,
@@ -414,7 +425,7 @@ proptest! {
 
     #[test]
     fn any_intersection_is_the_first_point(segs in grid_segments(6, 12)) {
-        let all = find_intersections(&segs).unwrap();
+        let all = sweep_intersections(&segs).unwrap();
         let first = any_intersection(&segs).unwrap();
         prop_assert_eq!(first, all.points.first().cloned());
     }
@@ -570,4 +581,28 @@ fn red_blue_rejects_crossings_within_a_set() {
     // Meeting at common endpoints is fine.
     let ok = [s(0.0, 0.0, 2.0, 2.0), s(2.0, 2.0, 4.0, 0.0)];
     assert!(red_blue_intersections(&ok, &[]).unwrap().points.is_empty());
+}
+
+#[test]
+fn the_default_switches_to_the_sweep_for_long_non_meeting_segments() {
+    // 2500 long parallel segments sharing their x-range: 3.1 million pairs overlap in x,
+    // more than the default's pairwise limit (1000 per segment), so the sweep runs; a few
+    // vertical segments cross some of them.
+    let mut segs: Vec<Segment2> = (0..2500)
+        .map(|i| s(0.0, i as f64, 1000.0, i as f64 + 0.5))
+        .collect();
+    for k in 0..5 {
+        let x = 100.0 * k as f64 + 50.0;
+        segs.push(s(x, 10.0, x, 20.0));
+    }
+    let by_default = find_intersections(&segs).unwrap();
+    let by_pairs = pairwise_intersections(&segs).unwrap();
+    assert_eq!(by_default.points.len(), 5 * 10);
+    let key = |r: &Intersections| -> Vec<(Point2, Vec<usize>, Vec<usize>)> {
+        r.points
+            .iter()
+            .map(|p| (p.point, p.segments.clone(), p.interior.clone()))
+            .collect()
+    };
+    assert_eq!(key(&by_default), key(&by_pairs));
 }

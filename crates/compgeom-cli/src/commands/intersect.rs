@@ -5,10 +5,10 @@ use crate::cli::{InputArgs, OutputArgs};
 use crate::error::CliError;
 use crate::output;
 use crate::progress::{Spinner, LARGE_INPUT};
-use clap::Args;
+use clap::{Args, ValueEnum};
 use compgeom::intersect::{
-    find_intersections_with_stats, sweep_status_at, verify_intersections, Intersections,
-    StatusSnapshot,
+    find_intersections_with, sweep_intersections_with_stats, sweep_status_at, verify_intersections,
+    IntersectAlgorithm, Intersections, StatusSnapshot,
 };
 use compgeom::io::{self, write_shape, Shape};
 use compgeom::render::{Layer, Picture, Style};
@@ -63,6 +63,34 @@ pub struct IntersectArgs {
     /// Print only the numbers of intersection points and overlaps.
     #[arg(long)]
     pub count_only: bool,
+
+    /// Method: `default` (the fastest exact one for the input), `sweep` (the book's
+    /// Bentley–Ottmann plane sweep, O((n + I) log n)) or `pairwise` (exact tests of the pairs
+    /// whose bounding boxes overlap). All give the same answer.
+    #[arg(long, value_enum, default_value_t = AlgorithmArg::Default)]
+    pub algorithm: AlgorithmArg,
+}
+
+/// The `--algorithm` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum AlgorithmArg {
+    /// The fastest exact method for the input.
+    Default,
+    /// The book's plane sweep.
+    Sweep,
+    /// Exact tests of the pairs with overlapping bounding boxes.
+    Pairwise,
+}
+
+impl AlgorithmArg {
+    /// The library's algorithm.
+    pub fn algorithm(self) -> IntersectAlgorithm {
+        match self {
+            AlgorithmArg::Default => IntersectAlgorithm::Default,
+            AlgorithmArg::Sweep => IntersectAlgorithm::Sweep,
+            AlgorithmArg::Pairwise => IntersectAlgorithm::Pairwise,
+        }
+    }
 }
 
 #[derive(Debug, Serialize)]
@@ -118,9 +146,9 @@ pub fn run(args: &IntersectArgs) -> Result<(), CliError> {
             segments.len()
         )));
     }
-    let (found, stats) = {
-        let _spin = Spinner::start("sweeping", segments.len() >= LARGE_INPUT);
-        find_intersections_with_stats(&segments)?
+    let found = {
+        let _spin = Spinner::start("intersecting", segments.len() >= LARGE_INPUT);
+        find_intersections_with(&segments, args.algorithm.algorithm())?
     };
     if args.output.verify {
         let _spin = Spinner::start("verifying", false);
@@ -172,6 +200,8 @@ pub fn run(args: &IntersectArgs) -> Result<(), CliError> {
         }
     };
     if let Some(svg) = &args.output.svg {
+        // The picture shows the book's sweep at its middle event.
+        let (_, stats) = sweep_intersections_with_stats(&segments)?;
         let snapshot = sweep_status_at(&segments, stats.events / 2)?;
         let picture = intersect_picture(
             &segments,

@@ -7,7 +7,7 @@ use super::samples::Rng;
 use super::{format_duration, timed, Demo};
 use crate::commands::intersect::{intersect_picture, intersect_title};
 use crate::error::CliError;
-use compgeom::intersect::{find_intersections_with_stats, sweep_status_at, verify_intersections};
+use compgeom::intersect::{sweep_intersections_with_stats, sweep_status_at, verify_intersections};
 use compgeom::render::Section;
 use compgeom::{Point2, Segment2};
 
@@ -85,7 +85,7 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
          result is checked against an exact brute force.",
     );
     for (file, caption, segments) in runs {
-        let (result, time) = timed(|| find_intersections_with_stats(&segments));
+        let (result, time) = timed(|| sweep_intersections_with_stats(&segments));
         let (found, stats) = result?;
         verify_intersections(&segments, &found)?;
         let snapshot = sweep_status_at(&segments, stats.events / 2)?;

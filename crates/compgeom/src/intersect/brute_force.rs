@@ -16,76 +16,102 @@ use std::cmp::Ordering;
 /// answer as [`super::find_intersections`], in O(n²) time.
 pub fn brute_force_intersections(segments: &[Segment2]) -> Result<Intersections> {
     check_finite(segments)?;
-    let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
-    let mut records: Vec<(EventPoint, usize, usize)> = Vec::new();
-    let mut overlapping: Vec<(usize, usize)> = Vec::new();
+    let mut found = PairResults::default();
     for i in 0..segments.len() {
         for j in i + 1..segments.len() {
-            match segment_intersection(segments[i], segments[j]) {
-                SegmentIntersection::None => {}
-                SegmentIntersection::Endpoint(q) => records.push((EventPoint::input(q), i, j)),
-                SegmentIntersection::Crossing(c) => {
-                    records.push((EventPoint::new(ExactPoint::Crossing(c)), i, j))
-                }
-                SegmentIntersection::Overlap(a, b) => {
-                    records.push((EventPoint::input(a), i, j));
-                    records.push((EventPoint::input(b), i, j));
-                    overlapping.push((i, j));
-                }
+            found.test(segments, i, j);
+        }
+    }
+    Ok(found.assemble(segments))
+}
+
+/// What the pairs that meet contribute: one record per (point, pair), and the pairs that
+/// overlap.
+#[derive(Default)]
+pub(crate) struct PairResults {
+    records: Vec<(EventPoint, usize, usize)>,
+    overlapping: Vec<(usize, usize)>,
+}
+
+impl PairResults {
+    /// Test segments `i < j` exactly and record how they meet.
+    pub(crate) fn test(&mut self, segments: &[Segment2], i: usize, j: usize) {
+        match segment_intersection(segments[i], segments[j]) {
+            SegmentIntersection::None => {}
+            SegmentIntersection::Endpoint(q) => self.records.push((EventPoint::input(q), i, j)),
+            SegmentIntersection::Crossing(c) => {
+                self.records
+                    .push((EventPoint::new(ExactPoint::Crossing(c)), i, j))
+            }
+            SegmentIntersection::Overlap(a, b) => {
+                self.records.push((EventPoint::input(a), i, j));
+                self.records.push((EventPoint::input(b), i, j));
+                self.overlapping.push((i, j));
             }
         }
     }
-    records.sort_by_key(|r| r.0);
-    let mut points = Vec::new();
-    let mut k = 0;
-    while k < records.len() {
-        let mut end = k + 1;
-        while end < records.len() && records[end].0 == records[k].0 {
-            end += 1;
+
+    /// Group equal points (exactly), split their segments into U/L/C, and build the
+    /// maximal overlap pieces.
+    pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
+        let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
+        let records = &mut self.records;
+        records.sort_by(|a, b| a.0.cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2))));
+        let mut points = Vec::new();
+        let mut k = 0;
+        while k < records.len() {
+            let mut end = k + 1;
+            while end < records.len() && records[end].0 == records[k].0 {
+                end += 1;
+            }
+            points.push(point_of(&segs, &records[k..end]));
+            k = end;
         }
-        let group = &records[k..end];
-        // Prefer the input-point representation when the point is an endpoint.
-        let at = group
-            .iter()
-            .map(|r| r.0)
-            .find(|e| e.as_input().is_some())
-            .unwrap_or(group[0].0);
-        let mut all: Vec<usize> = group.iter().flat_map(|r| [r.1, r.2]).collect();
-        all.sort_unstable();
-        all.dedup();
-        let (mut upper, mut lower, mut interior) = (Vec::new(), Vec::new(), Vec::new());
-        for &s in &all {
-            let (is_upper, is_lower) = match at.as_input() {
-                Some(q) => (segs[s].upper == q, segs[s].lower == q),
-                None => (false, false),
-            };
-            if is_upper {
-                upper.push(s);
-            }
-            if is_lower {
-                lower.push(s);
-            }
-            if !is_upper && !is_lower {
-                interior.push(s);
-            }
+        let mut overlaps = overlap_pieces(&segs, &self.overlapping);
+        sort_overlaps(&mut overlaps);
+        Intersections {
+            points,
+            overlaps,
+            segments: segments.len(),
         }
-        points.push(IntersectionPoint {
-            point: at.approx(),
-            exact: at.exact,
-            segments: all,
-            upper,
-            lower,
-            interior,
-        });
-        k = end;
     }
-    let mut overlaps = overlap_pieces(&segs, &overlapping);
-    sort_overlaps(&mut overlaps);
-    Ok(Intersections {
-        points,
-        overlaps,
-        segments: segments.len(),
-    })
+}
+
+/// One intersection point from the records of the pairs that meet there.
+fn point_of(segs: &[Oriented], group: &[(EventPoint, usize, usize)]) -> IntersectionPoint {
+    // Prefer the input-point representation when the point is an endpoint.
+    let at = group
+        .iter()
+        .map(|r| r.0)
+        .find(|e| e.as_input().is_some())
+        .unwrap_or(group[0].0);
+    let mut all: Vec<usize> = group.iter().flat_map(|r| [r.1, r.2]).collect();
+    all.sort_unstable();
+    all.dedup();
+    let (mut upper, mut lower, mut interior) = (Vec::new(), Vec::new(), Vec::new());
+    for &s in &all {
+        let (is_upper, is_lower) = match at.as_input() {
+            Some(q) => (segs[s].upper == q, segs[s].lower == q),
+            None => (false, false),
+        };
+        if is_upper {
+            upper.push(s);
+        }
+        if is_lower {
+            lower.push(s);
+        }
+        if !is_upper && !is_lower {
+            interior.push(s);
+        }
+    }
+    IntersectionPoint {
+        point: at.approx(),
+        exact: at.exact,
+        segments: all,
+        upper,
+        lower,
+        interior,
+    }
 }
 
 fn find(parent: &mut [usize], mut i: usize) -> usize {
