@@ -55,16 +55,26 @@ impl PairResults {
     /// maximal overlap pieces.
     pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
         let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
-        let records = &mut self.records;
-        records.sort_by(|a, b| a.0.cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2))));
+        let records = &self.records;
+        // Sort a permutation, not the (large) records themselves.
+        let mut order: Vec<usize> = (0..records.len()).collect();
+        order.sort_unstable_by(|&a, &b| {
+            let (a, b) = (&records[a], &records[b]);
+            a.0.cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2)))
+        });
         let mut points = Vec::new();
+        let mut group = Vec::new();
         let mut k = 0;
-        while k < records.len() {
+        while k < order.len() {
+            let first = &records[order[k]];
+            group.clear();
+            group.push(*first);
             let mut end = k + 1;
-            while end < records.len() && records[end].0 == records[k].0 {
+            while end < order.len() && records[order[end]].0 == first.0 {
+                group.push(records[order[end]]);
                 end += 1;
             }
-            points.push(point_of(&segs, &records[k..end]));
+            points.push(point_of(&segs, &group));
             k = end;
         }
         let mut overlaps = overlap_pieces(&segs, &self.overlapping);

@@ -15,7 +15,9 @@ use std::cmp::Ordering;
 const LIMIT: f64 = (1u64 << 20) as f64;
 
 fn int(v: f64) -> Option<i128> {
-    (v.abs() < LIMIT && v.trunc() == v).then_some(v as i128)
+    // `as i64` saturates and maps NaN to 0; the round trip and the range test reject those.
+    let i = v as i64;
+    (v.abs() < LIMIT && i as f64 == v).then_some(i128::from(i))
 }
 
 /// Homogeneous integer coordinates `(X, Y, D)` with `D > 0`.
