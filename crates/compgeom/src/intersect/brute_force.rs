@@ -53,7 +53,7 @@ impl PairResults {
 
     /// Group equal points (exactly), split their segments into U/L/C, and build the
     /// maximal overlap pieces.
-    pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
+    pub(crate) fn assemble(self, segments: &[Segment2]) -> Intersections {
         let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
         let records = &self.records;
         // Sort a permutation, not the (large) records themselves.
