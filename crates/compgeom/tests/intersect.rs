@@ -606,3 +606,26 @@ fn the_default_switches_to_the_sweep_for_long_non_meeting_segments() {
     };
     assert_eq!(key(&by_default), key(&by_pairs));
 }
+
+#[test]
+fn large_inputs_run_in_parallel_with_the_same_answer() {
+    // 20 000 short segments on a 150×150 grid (the pairwise method's parallel path) and
+    // the sweep agree exactly.
+    let mut state = 99u64;
+    let mut next = move |m: u64| {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 33) % m
+    };
+    let segs: Vec<Segment2> = (0..20_000)
+        .map(|_| {
+            let (x, y) = (next(151) as f64, next(151) as f64);
+            s(x, y, x + next(7) as f64 - 3.0, y + next(7) as f64 - 3.0)
+        })
+        .collect();
+    let by_pairs = pairwise_intersections(&segs).unwrap();
+    let by_sweep = sweep_intersections(&segs).unwrap();
+    assert!(by_pairs.points.len() > 10_000 && !by_pairs.overlaps.is_empty());
+    assert_eq!(by_pairs, by_sweep);
+}

@@ -6,10 +6,12 @@
 //! O(n² + K log K) time for K meeting pairs, O(n + K) space.
 
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
+use super::pairwise::PARALLEL_FROM;
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
 use crate::kernel::{segment_intersection, ExactPoint, Segment2, SegmentIntersection};
 use crate::{Error, Result};
+use rayon::prelude::*;
 use std::cmp::Ordering;
 
 /// All intersection points and overlaps by testing every pair of segments: the same
@@ -51,6 +53,13 @@ impl PairResults {
         }
     }
 
+    /// Both sets of results.
+    pub(crate) fn merge(mut self, mut other: PairResults) -> PairResults {
+        self.records.append(&mut other.records);
+        self.overlapping.append(&mut other.overlapping);
+        self
+    }
+
     /// Group equal points (exactly), split their segments into U/L/C, and build the
     /// maximal overlap pieces.
     pub(crate) fn assemble(self, segments: &[Segment2]) -> Intersections {
@@ -58,25 +67,33 @@ impl PairResults {
         let records = &self.records;
         // Sort a permutation, not the (large) records themselves.
         let mut order: Vec<usize> = (0..records.len()).collect();
-        order.sort_unstable_by(|&a, &b| {
-            let (a, b) = (&records[a], &records[b]);
+        let by_point = |a: &usize, b: &usize| {
+            let (a, b) = (&records[*a], &records[*b]);
             a.0.cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2)))
-        });
-        let mut points = Vec::new();
-        let mut group = Vec::new();
-        let mut k = 0;
-        while k < order.len() {
-            let first = &records[order[k]];
-            group.clear();
-            group.push(*first);
-            let mut end = k + 1;
-            while end < order.len() && records[order[end]].0 == first.0 {
-                group.push(records[order[end]]);
-                end += 1;
-            }
-            points.push(point_of(&segs, &group));
-            k = end;
+        };
+        let parallel = segments.len() >= PARALLEL_FROM;
+        if parallel {
+            order.par_sort_unstable_by(by_point);
+        } else {
+            order.sort_unstable_by(by_point);
         }
+        // Runs of equal points, then one intersection point per run.
+        let mut starts = Vec::new();
+        for k in 0..order.len() {
+            if k == 0 || records[order[k]].0 != records[order[k - 1]].0 {
+                starts.push(k);
+            }
+        }
+        starts.push(order.len());
+        let point = |w: &[usize]| {
+            let group: Vec<_> = order[w[0]..w[1]].iter().map(|&r| records[r]).collect();
+            point_of(&segs, &group)
+        };
+        let points: Vec<IntersectionPoint> = if parallel {
+            starts.par_windows(2).map(point).collect()
+        } else {
+            starts.windows(2).map(point).collect()
+        };
         let mut overlaps = overlap_pieces(&segs, &self.overlapping);
         sort_overlaps(&mut overlaps);
         Intersections {

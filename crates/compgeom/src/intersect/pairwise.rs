@@ -13,6 +13,10 @@ use super::sweep::check_finite;
 use super::Intersections;
 use crate::kernel::Segment2;
 use crate::Result;
+use rayon::prelude::*;
+
+/// From this many segments on, the pair scan and the grouping run on the rayon pool.
+pub(crate) const PARALLEL_FROM: usize = 20_000;
 
 /// Bounding boxes `[min x, max x, min y, max y]` and the segment order by min x.
 fn boxes(segments: &[Segment2]) -> (Vec<[f64; 4]>, Vec<usize>) {
@@ -64,8 +68,9 @@ pub(crate) fn x_overlapping_pairs(segments: &[Segment2], limit: usize) -> Option
 pub fn pairwise_intersections(segments: &[Segment2]) -> Result<Intersections> {
     check_finite(segments)?;
     let (b, order) = boxes(segments);
-    let mut found = PairResults::default();
-    for (k, &i) in order.iter().enumerate() {
+    // The scan from position k onwards: every pair (order[k], later) whose boxes overlap.
+    let scan = |k: usize, found: &mut PairResults| {
+        let i = order[k];
         for &j in &order[k + 1..] {
             if b[j][0] > b[i][1] {
                 break;
@@ -75,6 +80,22 @@ pub fn pairwise_intersections(segments: &[Segment2]) -> Result<Intersections> {
             }
             found.test(segments, i.min(j), i.max(j));
         }
-    }
+    };
+    let found = if segments.len() < PARALLEL_FROM {
+        let mut found = PairResults::default();
+        (0..order.len()).for_each(|k| scan(k, &mut found));
+        found
+    } else {
+        // Independent scans on the rayon pool; the grouping sorts everything, so the
+        // result does not depend on how the work was split.
+        (0..order.len())
+            .into_par_iter()
+            .with_min_len(1024)
+            .fold(PairResults::default, |mut found, k| {
+                scan(k, &mut found);
+                found
+            })
+            .reduce(PairResults::default, PairResults::merge)
+    };
     Ok(found.assemble(segments))
 }
