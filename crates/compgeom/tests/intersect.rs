@@ -609,7 +609,7 @@ fn the_default_switches_to_the_sweep_for_long_non_meeting_segments() {
 
 #[test]
 fn large_inputs_run_in_parallel_with_the_same_answer() {
-    // 20 000 short segments on a 150×150 grid (the pairwise method's parallel path) and
+    // 20 000 short segments on a 150×150 grid (the pairwise method's parallel scan) and
     // the sweep agree exactly.
     let mut state = 99u64;
     let mut next = move |m: u64| {

@@ -15,8 +15,12 @@ use crate::kernel::Segment2;
 use crate::Result;
 use rayon::prelude::*;
 
-/// From this many segments on, the pair scan and the grouping run on the rayon pool.
-pub(crate) const PARALLEL_FROM: usize = 20_000;
+/// From this many segments on, the pair scan runs on the rayon pool.
+const PARALLEL_SCAN_FROM: usize = 20_000;
+
+/// From this many (point, pair) records on, the points are built (and rounded) on the
+/// rayon pool.
+pub(crate) const PARALLEL_GROUPING_FROM: usize = 200_000;
 
 /// Bounding boxes `[min x, max x, min y, max y]` and the segment order by min x.
 fn boxes(segments: &[Segment2]) -> (Vec<[f64; 4]>, Vec<usize>) {
@@ -68,20 +72,22 @@ pub(crate) fn x_overlapping_pairs(segments: &[Segment2], limit: usize) -> Option
 pub fn pairwise_intersections(segments: &[Segment2]) -> Result<Intersections> {
     check_finite(segments)?;
     let (b, order) = boxes(segments);
+    // The boxes in scan order, so that the inner loop reads memory in sequence.
+    let sorted: Vec<([f64; 4], usize)> = order.iter().map(|&i| (b[i], i)).collect();
     // The scan from position k onwards: every pair (order[k], later) whose boxes overlap.
     let scan = |k: usize, found: &mut PairResults| {
-        let i = order[k];
-        for &j in &order[k + 1..] {
-            if b[j][0] > b[i][1] {
+        let (bi, i) = sorted[k];
+        for &(bj, j) in &sorted[k + 1..] {
+            if bj[0] > bi[1] {
                 break;
             }
-            if b[j][2] > b[i][3] || b[i][2] > b[j][3] {
+            if bj[2] > bi[3] || bi[2] > bj[3] {
                 continue;
             }
             found.test(segments, i.min(j), i.max(j));
         }
     };
-    let found = if segments.len() < PARALLEL_FROM {
+    let found = if segments.len() < PARALLEL_SCAN_FROM {
         let mut found = PairResults::default();
         (0..order.len()).for_each(|k| scan(k, &mut found));
         found
