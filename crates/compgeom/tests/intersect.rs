@@ -629,3 +629,20 @@ fn large_inputs_run_in_parallel_with_the_same_answer() {
     assert!(by_pairs.points.len() > 10_000 && !by_pairs.overlaps.is_empty());
     assert_eq!(by_pairs, by_sweep);
 }
+
+#[test]
+fn many_crossings_are_rounded_in_parallel_with_the_same_answer() {
+    // 1000 segments across a square: about 250 000 crossings, enough for the pairwise
+    // method to build its points on the rayon pool; the sweep must agree exactly.
+    let mut state = 5u64;
+    let mut unit = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let segs: Vec<Segment2> = (0..1000).map(|_| s(0.0, unit(), 1.0, unit())).collect();
+    let by_pairs = pairwise_intersections(&segs).unwrap();
+    assert!(by_pairs.points.len() > 200_000);
+    assert_eq!(by_pairs, sweep_intersections(&segs).unwrap());
+}
