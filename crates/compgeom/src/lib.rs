@@ -17,7 +17,7 @@
 //! | chapter | problem | entry points |
 //! |---|---|---|
 //! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::convex_hull_indices`], [`hull::verify_convex_hull`] |
-//! | 2.1 | line segment intersection (plane sweep) | [`intersect::find_intersections`], [`intersect::any_intersection`], [`intersect::is_simple`], [`intersect::red_blue_intersections`], [`intersect::verify_intersections`] |
+//! | 2.1 | line segment intersection (plane sweep) | [`intersect::find_intersections`], [`intersect::sweep_intersections`], [`intersect::any_intersection`], [`intersect::is_simple`], [`intersect::red_blue_intersections`], [`intersect::verify_intersections`] |
 //!
 //! ## Exactness
 //!

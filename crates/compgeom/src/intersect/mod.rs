@@ -42,16 +42,23 @@
 //! ## Exactness
 //!
 //! Every decision (event order, the side of a segment at the event point, the order just
-//! below a point, whether two segments meet) uses the kernel's exact predicates on input
-//! points and on crossings kept as their two segments ([`crate::kernel::Crossing`]).
-//! Reported coordinates are the nearest `f64` to the exact point.
+//! below a point, whether two segments meet, which crossings coincide) is exact: the
+//! kernel's predicates on input points and on crossings kept as their two segments
+//! ([`crate::kernel::Crossing`]), behind cheaper exact shortcuts that only decide when
+//! they are sure: an error-bounded box around each crossing (disjoint boxes order two
+//! points), an orientation filter at a crossing, and `i128` arithmetic when every
+//! coordinate involved is an integer below 2^20 (grid data). Reported coordinates are the
+//! nearest `f64` to the exact point (the kernel's correctly rounded
+//! [`Crossing::approx`](crate::kernel::Crossing::approx)).
 //!
 //! ## Also here
 //!
-//! * [`any_intersection`] / [`any_intersection_where`]: stop at the first intersection
-//!   in sweep order (the Shamos–Hoey idea), and [`is_simple`] for polygons built on it.
+//! * [`any_intersection`] / [`any_intersection_where`]: the sweep stopped at the first
+//!   intersection in sweep order (the Shamos–Hoey idea), and [`is_simple`] for polygons
+//!   built on it.
 //! * [`red_blue_intersections`]: two sets whose members do not cross within their own set
-//!   (the map-overlay case); only red–blue intersections are reported.
+//!   (the map-overlay case); one sweep, only red–blue intersections are reported.
+//! * [`sweep_status_at`]: the status structure after a given event, for pictures.
 //! * [`brute_force_intersections`] and [`verify_intersections`]: the exact O(n²) oracle.
 //!
 //! ```
