@@ -7,6 +7,7 @@
 
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
 use super::pairwise::PARALLEL_GROUPING_FROM;
+use super::small_int::{self, Hom};
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
 use crate::kernel::{segment_intersection, ExactPoint, Segment2, SegmentIntersection};
@@ -67,9 +68,16 @@ impl PairResults {
         let records = &self.records;
         // Sort a permutation, not the (large) records themselves.
         let mut order: Vec<usize> = (0..records.len()).collect();
+        // Small-integer homogeneous coordinates, computed once per record: equal points
+        // are common (grids) and each comparison would otherwise recompute them.
+        let homs: Vec<Option<Hom>> = records.iter().map(|r| small_int::hom(&r.0.exact)).collect();
+        let same_point = |a: usize, b: usize| match (homs[a], homs[b]) {
+            (Some(p), Some(q)) => small_int::sweep_cmp(p, q),
+            _ => records[a].0.cmp(&records[b].0),
+        };
         let by_point = |a: &usize, b: &usize| {
-            let (a, b) = (&records[*a], &records[*b]);
-            a.0.cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2)))
+            same_point(*a, *b)
+                .then((records[*a].1, records[*a].2).cmp(&(records[*b].1, records[*b].2)))
         };
         // (rayon's parallel sort measured slower than this one on 2 cores.)
         order.sort_unstable_by(by_point);
@@ -77,7 +85,7 @@ impl PairResults {
         // Runs of equal points, then one intersection point per run.
         let mut starts = Vec::new();
         for k in 0..order.len() {
-            if k == 0 || records[order[k]].0 != records[order[k - 1]].0 {
+            if k == 0 || same_point(order[k], order[k - 1]) != Ordering::Equal {
                 starts.push(k);
             }
         }

@@ -20,15 +20,25 @@ fn int(v: f64) -> Option<i128> {
     (v.abs() < LIMIT && i as f64 == v).then_some(i128::from(i))
 }
 
+/// Homogeneous integer coordinates `(X, Y, D)` of a point `(X / D, Y / D)`, `D > 0`.
+pub(crate) type Hom = (i128, i128, i128);
+
+/// The sweep order (y decreasing, then x increasing) of two points, exactly.
+pub(crate) fn sweep_cmp(a: Hom, b: Hom) -> Ordering {
+    (b.1 * a.2)
+        .cmp(&(a.1 * b.2))
+        .then_with(|| (a.0 * b.2).cmp(&(b.0 * a.2)))
+}
+
 /// Homogeneous integer coordinates `(X, Y, D)` with `D > 0`.
-pub(crate) fn hom(p: &ExactPoint) -> Option<(i128, i128, i128)> {
+pub(crate) fn hom(p: &ExactPoint) -> Option<Hom> {
     match p {
         ExactPoint::Input(q) => Some((int(q.x)?, int(q.y)?, 1)),
         ExactPoint::Crossing(c) => crossing(c),
     }
 }
 
-fn crossing(c: &Crossing) -> Option<(i128, i128, i128)> {
+fn crossing(c: &Crossing) -> Option<Hom> {
     let (s, t) = (c.s, c.t);
     let (ax, ay) = (int(s.a.x)?, int(s.a.y)?);
     let (dx, dy) = (int(s.b.x)? - ax, int(s.b.y)? - ay);
@@ -92,6 +102,8 @@ mod tests {
             };
             let (p, q) = (ExactPoint::Crossing(c1), ExactPoint::Crossing(c2));
             assert_eq!(compare_coord(&p, &q, 0), Some(p.compare_x(&q)));
+            let order = q.compare_y(&p).then_with(|| p.compare_x(&q));
+            assert_eq!(sweep_cmp(hom(&p).unwrap(), hom(&q).unwrap()), order);
             assert_eq!(compare_coord(&p, &q, 1), Some(p.compare_y(&q)));
             let (u, l) = (c2.s.a, c2.t.b);
             let expected = match orient_exact(&u.into(), &l.into(), &p) {
