@@ -167,3 +167,24 @@ fn help_documents_the_json_fields() {
         assert!(text.contains(field), "help lacks {field}");
     }
 }
+
+#[test]
+fn every_algorithm_gives_the_same_output() {
+    let (_dir, path) = input("segs.csv", SEGMENTS);
+    let run = |alg: &str| {
+        let out = compgeom()
+            .args(["intersect", "--algorithm", alg])
+            .arg(&path)
+            .assert()
+            .success();
+        out.get_output().stdout.clone()
+    };
+    let default = run("default");
+    assert_eq!(run("sweep"), default);
+    assert_eq!(run("pairwise"), default);
+    compgeom()
+        .args(["intersect", "--algorithm", "nope"])
+        .arg(&path)
+        .assert()
+        .code(2);
+}
