@@ -40,9 +40,16 @@ fuzz_target!(|data: &[u8]| {
         Ok(found) => {
             assert!(finite, "non-finite input accepted");
             verify_intersections(&segments, &found).unwrap_or_else(|e| panic!("sweep: {e}"));
-            assert_eq!(pairwise_intersections(&segments).unwrap(), found, "pairwise");
+            assert_eq!(
+                pairwise_intersections(&segments).unwrap(),
+                found,
+                "pairwise"
+            );
             assert_eq!(find_intersections(&segments).unwrap(), found, "default");
-            assert_eq!(any_intersection(&segments).unwrap(), found.points.first().cloned());
+            assert_eq!(
+                any_intersection(&segments).unwrap(),
+                found.points.first().cloned()
+            );
         }
         Err(_) => assert!(!finite, "finite input rejected"),
     }
