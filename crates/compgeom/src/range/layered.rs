@@ -1,0 +1,161 @@
+//! The layered range tree of §5.6: the 2D range tree with **fractional cascading**.
+//!
+//! The associated arrays are those of [`RangeTree`](super::RangeTree) (each node's points in
+//! `(y | x | i)` order), and every entry of a node's array also stores where the first entry
+//! at or after it lies in the left child's array; where it lies in the right child's array
+//! follows by arithmetic (entries before it that went right), so one 32-bit pointer per
+//! entry suffices. A query binary-searches `[y, y']` once, in the root's array, then follows
+//! pointers down the two search paths: every canonical node gets its answer range in O(1).
+//! O(log n + k) reporting, O(log n) counting; storage O(n log n) (8 bytes per point per
+//! level, plus the root's y-values); build O(n log n).
+//!
+//! Why the pointers stay right with equal y-values: the entry at position `p` of a node is
+//! the first whose y is at least `y` (or more than `y'`); since keys are distinct composite
+//! numbers, the entries of a child at or after it in composite order are exactly the
+//! child's entries with y at least `y` (more than `y'`).
+
+use super::skeleton::{count_pieces, for_each_piece, Piece, RangeIter, Skeleton, LEAF};
+use crate::kernel::{Bbox2, Point2};
+use crate::Result;
+
+/// A static layered range tree (fractional cascading); queries report input indices.
+///
+/// ```
+/// use compgeom::range::LayeredRangeTree;
+/// use compgeom::{Bbox2, Point2};
+/// let pts: Vec<Point2> = (0..1000).map(|i| Point2::new((i % 7) as f64, (i % 13) as f64)).collect();
+/// let tree = LayeredRangeTree::new(&pts).unwrap();
+/// let rect = Bbox2 { min: Point2::new(1.0, 2.0), max: Point2::new(2.0, 2.0) };
+/// let brute: Vec<usize> = (0..1000).filter(|&i| rect.contains(pts[i])).collect();
+/// assert_eq!(tree.query(&rect), brute);
+/// assert_eq!(tree.count(&rect), brute.len());
+/// ```
+#[derive(Debug, Clone)]
+pub struct LayeredRangeTree {
+    skel: Skeleton,
+    /// y-coordinates of the root's array (the one binary search of a query).
+    root_ys: Vec<f64>,
+    /// `lefts[d][j] = a + (entries of the node before position j that go left)`: the
+    /// position in depth `d + 1` of the first left-child entry at or after entry `j`.
+    lefts: Vec<Vec<u32>>,
+}
+
+impl LayeredRangeTree {
+    /// Build the tree. `Err(NonFinite)` names the first point with a NaN or infinite
+    /// coordinate; more than `u32::MAX` points is `Err(InvalidInput)`.
+    pub fn new(points: &[Point2]) -> Result<LayeredRangeTree> {
+        let (skel, mut lefts) = Skeleton::build(points, true)?;
+        // The deepest level's pointers would lead to leaves, which are scanned instead.
+        lefts.pop();
+        let root_ys = skel
+            .level_ids
+            .first()
+            .map(|ids| ids.iter().map(|&i| points[i as usize].y).collect())
+            .unwrap_or_default();
+        Ok(LayeredRangeTree {
+            skel,
+            root_ys,
+            lefts,
+        })
+    }
+
+    /// Number of points.
+    pub fn len(&self) -> usize {
+        self.skel.len()
+    }
+
+    /// True when there are no points.
+    pub fn is_empty(&self) -> bool {
+        self.skel.len() == 0
+    }
+
+    /// Approximate heap memory in bytes.
+    pub fn memory_bytes(&self) -> usize {
+        self.skel.memory_bytes()
+            + self.root_ys.capacity() * 8
+            + self.lefts.iter().map(|v| v.capacity() * 4).sum::<usize>()
+    }
+
+    fn pieces(&self, rect: &Bbox2) -> Vec<Piece> {
+        let mut out = Vec::new();
+        if self.is_empty() || rect.is_empty() {
+            return out;
+        }
+        let (lo, hi) = self.skel.x_span(rect);
+        if lo >= hi {
+            return out;
+        }
+        if self.skel.level_ids.is_empty() {
+            out.push(Piece::Scan {
+                from: lo as u32,
+                to: hi as u32,
+            });
+            return out;
+        }
+        let p1 = self.root_ys.partition_point(|&y| y < rect.min.y);
+        let p2 = self.root_ys.partition_point(|&y| y <= rect.max.y);
+        self.descend((lo, hi), (0, self.len()), 0, (p1, p2), &mut out);
+        out
+    }
+
+    /// `ps = (p1, p2)`: at this node (depth `d`), the absolute positions of the first entry
+    /// with y >= ymin and the first with y > ymax.
+    fn descend(
+        &self,
+        span: (usize, usize),
+        node: (usize, usize),
+        d: usize,
+        ps: (usize, usize),
+        out: &mut Vec<Piece>,
+    ) {
+        let ((lo, hi), (a, b), (p1, p2)) = (span, node, ps);
+        if b <= lo || a >= hi || p1 >= p2 {
+            return;
+        }
+        if lo <= a && b <= hi {
+            out.push(Piece::Whole {
+                depth: d as u32,
+                from: p1 as u32,
+                to: p2 as u32,
+            });
+            return;
+        }
+        if b - a <= LEAF || d >= self.lefts.len() {
+            out.push(Piece::Scan {
+                from: a.max(lo) as u32,
+                to: b.min(hi) as u32,
+            });
+            return;
+        }
+        let m = a + (b - a) / 2;
+        let lefts = &self.lefts[d];
+        let left = |p: usize| if p < b { lefts[p] as usize } else { m };
+        let right = |p: usize| if p < b { m + p - lefts[p] as usize } else { b };
+        self.descend(span, (a, m), d + 1, (left(p1), left(p2)), out);
+        self.descend(span, (m, b), d + 1, (right(p1), right(p2)), out);
+    }
+
+    /// The points in the closed rectangle as a lazy iterator of input indices (in the order
+    /// of the canonical subsets). An empty rectangle (`min > max`) reports nothing.
+    pub fn iter(&self, rect: &Bbox2) -> RangeIter<'_> {
+        RangeIter::new(&self.skel, *rect, self.pieces(rect))
+    }
+
+    /// Calls `f` with the input index of each point in the closed rectangle.
+    pub fn for_each(&self, rect: &Bbox2, mut f: impl FnMut(usize)) {
+        for_each_piece(&self.skel, rect, &self.pieces(rect), &mut f);
+    }
+
+    /// The points in the closed rectangle, as input indices in ascending order.
+    pub fn query(&self, rect: &Bbox2) -> Vec<usize> {
+        let mut v = Vec::new();
+        self.for_each(rect, |i| v.push(i));
+        v.sort_unstable();
+        v
+    }
+
+    /// The number of points in the closed rectangle, in O(log n).
+    pub fn count(&self, rect: &Bbox2) -> usize {
+        count_pieces(&self.skel, rect, &self.pieces(rect))
+    }
+}
