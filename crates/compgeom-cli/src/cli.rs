@@ -20,6 +20,7 @@
 //! 4. Add tests to `tests/cli.rs`.
 
 use crate::commands::hull::HullArgs;
+use crate::commands::range::RangeArgs;
 use crate::demo::DemoArgs;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
@@ -47,6 +48,9 @@ pub enum Command {
     /// Convex hull of points in the plane (book chapter 1).
     #[command(after_long_help = crate::commands::hull::JSON_HELP)]
     Hull(HullArgs),
+    /// Orthogonal range queries: points in rectangles, counts, k nearest (book chapter 5).
+    #[command(after_long_help = crate::commands::range::JSON_HELP)]
+    Range(RangeArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

@@ -46,6 +46,7 @@ mod range_tree;
 mod range_tree_d;
 mod rects;
 mod skeleton;
+mod verify;
 
 pub use composite::{cmp_composite_x, cmp_composite_y};
 pub use distance::{compare_distance, compare_distance_to_radius};
@@ -55,6 +56,7 @@ pub use range_tree::RangeTree;
 pub use range_tree_d::RangeTreeD;
 pub use rects::read_rects;
 pub use skeleton::RangeIter;
+pub use verify::{verify_nearest, verify_query};
 
 #[cfg(doc)]
 use crate::kernel::{Bbox2, Point2};
