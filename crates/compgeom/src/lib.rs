@@ -18,6 +18,7 @@
 //! |---|---|---|
 //! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::convex_hull_indices`], [`hull::verify_convex_hull`] |
 //! | 5 | orthogonal range searching | [`range::KdTree`], [`range::RangeTree`], [`range::LayeredRangeTree`], [`range::RangeTreeD`] |
+//! | 10 | windowing: interval, priority search and segment trees | [`windowing::IntervalTree`], [`windowing::PrioritySearchTree`], [`windowing::SegmentTree`], [`windowing::AxisParallelWindow`], [`windowing::SegmentWindow`] |
 //!
 //! ## Exactness
 //!
@@ -34,6 +35,7 @@ pub mod io;
 pub mod kernel;
 pub mod range;
 pub mod render;
+pub mod windowing;
 
 pub use error::{Error, Location, Result};
 pub use kernel::{

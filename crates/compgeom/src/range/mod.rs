@@ -58,5 +58,7 @@ pub use rects::read_rects;
 pub use skeleton::RangeIter;
 pub use verify::{verify_nearest, verify_query};
 
+pub(crate) use composite::check_len as check_count;
+
 #[cfg(doc)]
 use crate::kernel::{Bbox2, Point2};

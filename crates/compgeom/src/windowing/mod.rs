@@ -1,0 +1,56 @@
+//! Windowing (book chapter 10): interval trees, priority search trees, segment trees, and
+//! the window queries built from them, which report the segments meeting a rectangle.
+//!
+//! This module owns the chapter 10 structures; it uses the kernel (exact `orient2d`,
+//! `compare_y_at_x`) and the layered range tree of [`crate::range`].
+//!
+//! | structure | book | query | build | memory |
+//! |---|---|---|---|---|
+//! | [`IntervalTree`] | §10.1 | intervals containing q: O(log n + k) | O(n log n) | O(n) |
+//! | [`PrioritySearchTree`] | §10.2 | points in (−∞:qx] × [qy:qy']: O(log n + k) | O(n log n) | O(n) |
+//! | [`SegmentTree`] | §10.3 | intervals containing q: O(log n + k) | O(n log n) | O(n log n) |
+//! | [`AxisParallelWindow`] | §10.1–10.2 | axis-parallel segments meeting a window: O(log n + k) | O(n log n) | O(n log n) |
+//! | [`SegmentWindow`] | §10.3 | non-crossing segments meeting a window: O(log² n + k) | O(n log² n) | O(n log n) |
+//!
+//! Every answer lists each item once, input indices ascending (the window queries sort
+//! their k answers, adding O(k log k)). Windows and intervals are closed. Segments that
+//! cross the window's boundary with no endpoint inside are found: that is what the
+//! chapter is about. Degenerate input (shared endpoints, point segments, vertical and
+//! horizontal segments, duplicates, zero-width windows) is ordinary input; non-finite
+//! coordinates are `Err(NonFinite)` naming the segment.
+//!
+//! Query windows are read with [`crate::range::read_rects`].
+
+mod axis_parallel;
+mod interval_tree;
+mod priority_search_tree;
+mod segment_tree;
+mod segment_window;
+
+pub use axis_parallel::AxisParallelWindow;
+pub use interval_tree::IntervalTree;
+pub use priority_search_tree::PrioritySearchTree;
+pub use segment_tree::SegmentTree;
+pub use segment_window::SegmentWindow;
+
+use crate::kernel::{Point2, Segment2};
+use crate::{Error, Result};
+
+/// The endpoints `a, b` of every segment (segment `i` gives points `2i`, `2i + 1`), after
+/// checking that all are finite.
+fn checked_endpoints(segments: &[Segment2]) -> Result<Vec<Point2>> {
+    crate::range::check_count(2 * segments.len())?;
+    let mut pts = Vec::with_capacity(2 * segments.len());
+    for (i, s) in segments.iter().enumerate() {
+        for p in [s.a, s.b] {
+            if !p.is_finite() {
+                return Err(Error::NonFinite {
+                    what: format!("segment {i}"),
+                    value: if p.x.is_finite() { p.y } else { p.x },
+                });
+            }
+            pts.push(p);
+        }
+    }
+    Ok(pts)
+}
