@@ -3,3 +3,4 @@
 
 pub mod hull;
 pub mod range;
+pub mod window;

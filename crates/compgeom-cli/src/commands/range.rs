@@ -166,7 +166,8 @@ pub fn run(args: &RangeArgs) -> Result<(), CliError> {
         )
     } else {
         let path = args.queries.clone().unwrap_or_default();
-        let text = compgeom::io::read_text(&path)?;
+        let text =
+            compgeom::io::read_text(&path).map_err(|e| CliError::bad_input(e.to_string()))?; // missing file: bad input, exit 2
         let name = if path.as_os_str() == "-" {
             "<stdin>".to_string()
         } else {

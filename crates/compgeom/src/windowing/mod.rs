@@ -54,3 +54,50 @@ fn checked_endpoints(segments: &[Segment2]) -> Result<Vec<Point2>> {
     }
     Ok(pts)
 }
+
+/// Check a window answer exactly by brute force: `result` must be the ascending list of
+/// the segments with an endpoint in the closed window or a common point with one of its
+/// edges (decided by the kernel's exact [`segment_intersection`](crate::kernel::segment_intersection)).
+/// `Err(Verification)` names the first discrepancy.
+///
+/// ```
+/// use compgeom::windowing::verify_window;
+/// use compgeom::{Bbox2, Point2, Segment2};
+/// let s = [Segment2::new(Point2::new(-1.0, 0.5), Point2::new(2.0, 0.5))];
+/// let w = Bbox2 { min: Point2::new(0.0, 0.0), max: Point2::new(1.0, 1.0) };
+/// assert!(verify_window(&s, &w, &[0]).is_ok());
+/// assert!(verify_window(&s, &w, &[]).is_err());
+/// ```
+pub fn verify_window(segments: &[Segment2], window: &crate::Bbox2, result: &[usize]) -> Result<()> {
+    use crate::kernel::{segment_intersection, SegmentIntersection};
+    let w = window;
+    let meets = |s: &Segment2| {
+        if w.is_empty() {
+            return false;
+        }
+        if w.contains(s.a) || w.contains(s.b) {
+            return true;
+        }
+        let c = [
+            w.min,
+            Point2::new(w.max.x, w.min.y),
+            w.max,
+            Point2::new(w.min.x, w.max.y),
+        ];
+        (0..4).any(|k| {
+            let e = Segment2::new(c[k], c[(k + 1) % 4]);
+            !matches!(segment_intersection(*s, e), SegmentIntersection::None)
+        })
+    };
+    let want: Vec<usize> = (0..segments.len())
+        .filter(|&i| meets(&segments[i]))
+        .collect();
+    if want != result {
+        let missing = want.iter().find(|i| !result.contains(i));
+        let extra = result.iter().find(|i| !want.contains(i));
+        return Err(Error::Verification(format!(
+            "window {w:?}: missing {missing:?}, wrongly reported {extra:?} (or out of order)"
+        )));
+    }
+    Ok(())
+}
