@@ -65,6 +65,7 @@ struct Row {
 }
 
 type Tree2 = RTree<GeomWithData<[f64; 2], u32>>;
+type SegTree = RTree<GeomWithData<Line<[f64; 2]>, u32>>;
 
 /// Run the group.
 pub fn run(quick: bool) -> Result<(), String> {
@@ -371,8 +372,7 @@ fn windowing(quick: bool, runs: usize) -> Result<(), String> {
             .map(|(i, s)| GeomWithData::new(Line::new([s.a.x, s.a.y], [s.b.x, s.b.y]), i as u32))
             .collect()
     };
-    let (rs, t_rs, b_rs): (RTree<GeomWithData<Line<[f64; 2]>, u32>>, _, _) =
-        build(runs, || RTree::bulk_load(lines()));
+    let (rs, t_rs, b_rs): (SegTree, _, _) = build(runs, || RTree::bulk_load(lines()));
     let rstar_query = |q: &Bbox2, out: &mut Vec<usize>| {
         let env = AABB::from_corners([q.min.x, q.min.y], [q.max.x, q.max.y]);
         for g in rs.locate_in_envelope_intersecting(&env) {
