@@ -837,4 +837,30 @@ mod range_commands {
             .code(2)
             .stderr(predicate::str::contains("q.csv:1"));
     }
+
+    #[test]
+    fn demo_has_the_range_and_window_pictures() {
+        let dir = TempDir::new().unwrap();
+        compgeom()
+            .args(["demo", "--out"])
+            .arg(dir.path())
+            .assert()
+            .success();
+        let files = files_in(dir.path());
+        for f in [
+            "range-kdtree.svg",
+            "range-layered.svg",
+            "range-knn.svg",
+            "window-segments.svg",
+        ] {
+            assert!(files.contains(&f.to_string()), "{f} missing from {files:?}");
+        }
+        let index = fs::read_to_string(dir.path().join("index.html")).unwrap();
+        assert!(index.contains("range searching and windowing"));
+        let svg = fs::read_to_string(dir.path().join("window-segments.svg")).unwrap();
+        assert!(
+            svg.contains("reported segments (16)"),
+            "the long segment and corner-crossing ones"
+        );
+    }
 }
