@@ -81,7 +81,7 @@ impl Node {
 
 impl KdTree {
     /// Subsets of at most this many points are leaf buckets.
-    pub const LEAF_SIZE: usize = 8;
+    pub const LEAF_SIZE: usize = 16;
 
     /// Build the tree (BUILDKDTREE). `Err(NonFinite)` names the first point with a NaN or
     /// infinite coordinate; more than `u32::MAX` points is `Err(InvalidInput)`.

@@ -14,7 +14,7 @@
 //! numbers, the entries of a child at or after it in composite order are exactly the
 //! child's entries with y at least `y` (more than `y'`).
 
-use super::skeleton::{count_pieces, for_each_piece, Piece, RangeIter, Skeleton, LEAF};
+use super::skeleton::{count_piece, for_each_piece, Piece, RangeIter, Skeleton, LEAF};
 use crate::kernel::{Bbox2, Point2};
 use crate::Result;
 
@@ -77,25 +77,30 @@ impl LayeredRangeTree {
     }
 
     fn pieces(&self, rect: &Bbox2) -> Vec<Piece> {
-        let mut out = Vec::new();
+        let mut v = Vec::new();
+        self.visit(rect, &mut |p| v.push(p));
+        v
+    }
+
+    /// Hand every canonical piece of the answer to `out`.
+    fn visit(&self, rect: &Bbox2, out: &mut impl FnMut(Piece)) {
         if self.is_empty() || rect.is_empty() {
-            return out;
+            return;
         }
         let (lo, hi) = self.skel.x_span(rect);
         if lo >= hi {
-            return out;
+            return;
         }
         if self.skel.level_ids.is_empty() {
-            out.push(Piece::Scan {
+            out(Piece::Scan {
                 from: lo as u32,
                 to: hi as u32,
             });
-            return out;
+            return;
         }
         let p1 = self.root_ys.partition_point(|&y| y < rect.min.y);
         let p2 = self.root_ys.partition_point(|&y| y <= rect.max.y);
-        self.descend((lo, hi), (0, self.len()), 0, (p1, p2), &mut out);
-        out
+        self.descend((lo, hi), (0, self.len()), 0, (p1, p2), out);
     }
 
     /// `ps = (p1, p2)`: at this node (depth `d`), the absolute positions of the first entry
@@ -106,14 +111,14 @@ impl LayeredRangeTree {
         node: (usize, usize),
         d: usize,
         ps: (usize, usize),
-        out: &mut Vec<Piece>,
+        out: &mut impl FnMut(Piece),
     ) {
         let ((lo, hi), (a, b), (p1, p2)) = (span, node, ps);
         if b <= lo || a >= hi || p1 >= p2 {
             return;
         }
         if lo <= a && b <= hi {
-            out.push(Piece::Whole {
+            out(Piece::Whole {
                 depth: d as u32,
                 from: p1 as u32,
                 to: p2 as u32,
@@ -121,7 +126,7 @@ impl LayeredRangeTree {
             return;
         }
         if b - a <= LEAF || d >= self.lefts.len() {
-            out.push(Piece::Scan {
+            out(Piece::Scan {
                 from: a.max(lo) as u32,
                 to: b.min(hi) as u32,
             });
@@ -143,7 +148,8 @@ impl LayeredRangeTree {
 
     /// Calls `f` with the input index of each point in the closed rectangle.
     pub fn for_each(&self, rect: &Bbox2, mut f: impl FnMut(usize)) {
-        for_each_piece(&self.skel, rect, &self.pieces(rect), &mut f);
+        let skel = &self.skel;
+        self.visit(rect, &mut |p| for_each_piece(skel, rect, p, &mut f));
     }
 
     /// The points in the closed rectangle, as input indices in ascending order.
@@ -156,6 +162,8 @@ impl LayeredRangeTree {
 
     /// The number of points in the closed rectangle, in O(log n).
     pub fn count(&self, rect: &Bbox2) -> usize {
-        count_pieces(&self.skel, rect, &self.pieces(rect))
+        let mut c = 0;
+        self.visit(rect, &mut |p| c += count_piece(&self.skel, rect, p));
+        c
     }
 }

@@ -10,7 +10,7 @@
 //! Equal coordinates and duplicate points need no special care: the tree orders by
 //! `(x | y | i)` and the arrays by `(y | x | i)` (§5.5).
 
-use super::skeleton::{count_pieces, for_each_piece, Piece, RangeIter, Skeleton, LEAF};
+use super::skeleton::{count_piece, for_each_piece, Piece, RangeIter, Skeleton, LEAF};
 use crate::kernel::{Bbox2, Point2};
 use crate::Result;
 
@@ -67,15 +67,20 @@ impl RangeTree {
 
     /// The canonical pieces of the answer (O(log² n)).
     fn pieces(&self, rect: &Bbox2) -> Vec<Piece> {
-        let mut out = Vec::new();
+        let mut v = Vec::new();
+        self.visit(rect, &mut |p| v.push(p));
+        v
+    }
+
+    /// Hand every canonical piece of the answer to `out`.
+    fn visit(&self, rect: &Bbox2, out: &mut impl FnMut(Piece)) {
         if self.is_empty() || rect.is_empty() {
-            return out;
+            return;
         }
         let (lo, hi) = self.skel.x_span(rect);
         if lo < hi {
-            self.descend(rect, (lo, hi), (0, self.len()), 0, &mut out);
+            self.descend(rect, (lo, hi), (0, self.len()), 0, out);
         }
-        out
     }
 
     fn descend(
@@ -84,7 +89,7 @@ impl RangeTree {
         span: (usize, usize),
         node: (usize, usize),
         d: usize,
-        out: &mut Vec<Piece>,
+        out: &mut impl FnMut(Piece),
     ) {
         let ((lo, hi), (a, b)) = (span, node);
         if b <= lo || a >= hi || a >= b {
@@ -96,7 +101,7 @@ impl RangeTree {
             let p1 = ys.partition_point(|&y| y < rect.min.y);
             let p2 = ys.partition_point(|&y| y <= rect.max.y);
             if p1 < p2 {
-                out.push(Piece::Whole {
+                out(Piece::Whole {
                     depth: d as u32,
                     from: (a + p1) as u32,
                     to: (a + p2) as u32,
@@ -105,7 +110,7 @@ impl RangeTree {
             return;
         }
         if d >= self.level_ys.len() || b - a <= LEAF {
-            out.push(Piece::Scan {
+            out(Piece::Scan {
                 from: a.max(lo) as u32,
                 to: b.min(hi) as u32,
             });
@@ -124,7 +129,8 @@ impl RangeTree {
 
     /// Calls `f` with the input index of each point in the closed rectangle.
     pub fn for_each(&self, rect: &Bbox2, mut f: impl FnMut(usize)) {
-        for_each_piece(&self.skel, rect, &self.pieces(rect), &mut f);
+        let skel = &self.skel;
+        self.visit(rect, &mut |p| for_each_piece(skel, rect, p, &mut f));
     }
 
     /// The points in the closed rectangle, as input indices in ascending order.
@@ -137,6 +143,8 @@ impl RangeTree {
 
     /// The number of points in the closed rectangle, in O(log² n).
     pub fn count(&self, rect: &Bbox2) -> usize {
-        count_pieces(&self.skel, rect, &self.pieces(rect))
+        let mut c = 0;
+        self.visit(rect, &mut |p| c += count_piece(&self.skel, rect, p));
+        c
     }
 }

@@ -15,7 +15,7 @@ use crate::Result;
 use rayon::prelude::*;
 
 /// Subsets of at most this many points are leaves: scanning them beats descending.
-pub(crate) const LEAF: usize = 8;
+pub(crate) const LEAF: usize = 32;
 
 /// The shared part of the 2D range trees.
 #[derive(Debug, Clone)]
@@ -241,39 +241,36 @@ impl Iterator for RangeIter<'_> {
     }
 }
 
-/// Count and report helpers over a list of pieces.
-pub(crate) fn count_pieces(skel: &Skeleton, rect: &Bbox2, pieces: &[Piece]) -> usize {
-    pieces
-        .iter()
-        .map(|p| match *p {
-            Piece::Whole { from, to, .. } => (to - from) as usize,
-            Piece::Scan { from, to } => skel.pts[from as usize..to as usize]
-                .iter()
-                .filter(|p| rect.contains(**p))
-                .count(),
-        })
-        .sum()
+/// The number of points a piece holds.
+#[inline]
+pub(crate) fn count_piece(skel: &Skeleton, rect: &Bbox2, piece: Piece) -> usize {
+    match piece {
+        Piece::Whole { from, to, .. } => (to - from) as usize,
+        Piece::Scan { from, to } => skel.pts[from as usize..to as usize]
+            .iter()
+            .filter(|p| rect.contains(**p))
+            .count(),
+    }
 }
 
-/// Call `f` with every input index the pieces hold.
+/// Call `f` with every input index the piece holds.
+#[inline]
 pub(crate) fn for_each_piece(
     skel: &Skeleton,
     rect: &Bbox2,
-    pieces: &[Piece],
+    piece: Piece,
     f: &mut impl FnMut(usize),
 ) {
-    for p in pieces {
-        match *p {
-            Piece::Whole { depth, from, to } => {
-                for &id in &skel.level_ids[depth as usize][from as usize..to as usize] {
-                    f(id as usize);
-                }
+    match piece {
+        Piece::Whole { depth, from, to } => {
+            for &id in &skel.level_ids[depth as usize][from as usize..to as usize] {
+                f(id as usize);
             }
-            Piece::Scan { from, to } => {
-                for r in from as usize..to as usize {
-                    if rect.contains(skel.pts[r]) {
-                        f(skel.ids[r] as usize);
-                    }
+        }
+        Piece::Scan { from, to } => {
+            for r in from as usize..to as usize {
+                if rect.contains(skel.pts[r]) {
+                    f(skel.ids[r] as usize);
                 }
             }
         }
