@@ -18,8 +18,12 @@ use crate::{Error, Result};
 pub(crate) struct Skeleton {
     /// Distinct endpoints, ascending.
     pub xs: Vec<f64>,
-    /// Canonical lists, heap-indexed over the units `0..2m-1`.
+    /// Canonical lists while building, heap-indexed over the units `0..2m-1`; emptied by
+    /// [`Skeleton::flatten`].
     pub lists: Vec<Vec<u32>>,
+    /// After `flatten`: node `k`'s list is `items[starts[k]..starts[k + 1]]`.
+    starts: Vec<u32>,
+    items: Vec<u32>,
 }
 
 impl Skeleton {
@@ -38,7 +42,30 @@ impl Skeleton {
             let ub = 2 * xs.partition_point(|&x| x < b);
             insert(&mut lists, 0, 0, units, ua, ub + 1, i as u32);
         }
-        Skeleton { xs, lists }
+        Skeleton {
+            xs,
+            lists,
+            starts: Vec::new(),
+            items: Vec::new(),
+        }
+    }
+
+    /// Pack the lists into one array (a `Vec` per node would cost 24 bytes per node).
+    pub fn flatten(&mut self) {
+        let lists = std::mem::take(&mut self.lists);
+        self.starts = Vec::with_capacity(lists.len() + 1);
+        self.items = Vec::with_capacity(lists.iter().map(Vec::len).sum());
+        self.starts.push(0);
+        for l in lists {
+            self.items.extend_from_slice(&l);
+            self.starts.push(self.items.len() as u32);
+        }
+    }
+
+    /// Node `k`'s list (after `flatten`).
+    #[inline]
+    pub fn list(&self, k: usize) -> &[u32] {
+        &self.items[self.starts[k] as usize..self.starts[k + 1] as usize]
     }
 
     /// Number of elementary units.
@@ -152,16 +179,16 @@ impl SegmentTree {
     /// a non-finite end or with `lo > hi`.
     pub fn new(intervals: &[(f64, f64)]) -> Result<SegmentTree> {
         check_intervals(intervals)?;
-        Ok(SegmentTree {
-            skel: Skeleton::new(intervals),
-        })
+        let mut skel = Skeleton::new(intervals);
+        skel.flatten();
+        Ok(SegmentTree { skel })
     }
 
     /// Calls `f` with the index of every interval containing `q` (each once).
     pub fn for_each_stabbed(&self, q: f64, mut f: impl FnMut(usize)) {
         if let Some(u) = self.skel.unit_of(q) {
             self.skel.path(u, |k, _, _| {
-                self.skel.lists[k].iter().for_each(|&i| f(i as usize))
+                self.skel.list(k).iter().for_each(|&i| f(i as usize))
             });
         }
     }

@@ -7,7 +7,8 @@
 //! every node keeps its segments sorted bottom to top (they all span the node's slab, and
 //! non-crossing segments are totally ordered there); a query walks one root-to-leaf path
 //! and binary-searches each node's list with exact orientation tests against the edge's
-//! ends. The top and bottom edges use a second tree built with x and y exchanged.
+//! ends. The bottom edge uses a second tree built with x and y exchanged (the top edge is
+//! not needed: see [`SegmentWindow::query`]).
 //! Segments of zero extent in one direction are left out of that direction's tree: a
 //! vertical segment meeting the left edge without an endpoint inside also crosses the
 //! bottom edge, and the other tree finds it. Query O(log² n + k) plus sorting the k
@@ -53,8 +54,38 @@ fn at(s: &Segment2, x: f64) -> ExactPoint {
     }
 }
 
-/// y of `s` against y of `t` at `x` (both defined there), exactly.
+/// y of `s` (with `a.x < b.x`) at `x` in its x-range, rounded, with a bound on the error
+/// (none at the endpoints); `None` if an intermediate overflowed.
+fn approx_y(s: &Segment2, x: f64) -> Option<(f64, f64)> {
+    if x == s.a.x {
+        return Some((s.a.y, 0.0));
+    }
+    if x == s.b.x {
+        return Some((s.b.y, 0.0));
+    }
+    let t = (x - s.a.x) / (s.b.x - s.a.x);
+    let y = s.a.y + (s.b.y - s.a.y) * t;
+    // Two subtractions, a division, a subtraction, a product and a sum: under 12 units of
+    // roundoff relative to |a.y| + |b.y|; 4e-15 leaves a margin of three. The absolute term
+    // covers underflow.
+    let err = 4e-15 * (s.a.y.abs() + s.b.y.abs()) + 1e-300;
+    (y.is_finite() && t.is_finite() && err.is_finite()).then_some((y, err))
+}
+
+/// y of `s` against y of `t` at `x` (both defined there), exactly: a floating-point
+/// filter, then the kernel's exact comparison.
 fn cmp_at(s: &Segment2, t: &Segment2, x: f64) -> Ordering {
+    if let (Some((ys, es)), Some((yt, et))) = (approx_y(s, x), approx_y(t, x)) {
+        if ys + es < yt - et {
+            return Ordering::Less;
+        }
+        if ys - es > yt + et {
+            return Ordering::Greater;
+        }
+        if es == 0.0 && et == 0.0 {
+            return ys.partial_cmp(&yt).unwrap_or(Ordering::Equal);
+        }
+    }
     compare_y_at_x(&at(s, x), *t)
 }
 
@@ -89,6 +120,7 @@ impl Stabber {
                 }
             }
         }
+        skel.flatten();
         Ok(Stabber { segs, ids, skel })
     }
 
@@ -99,7 +131,7 @@ impl Stabber {
         };
         let (lo, hi) = (Point2::new(qx, y1), Point2::new(qx, y2));
         self.skel.path(u, |k, _, _| {
-            let list = &self.skel.lists[k];
+            let list = self.skel.list(k);
             let seg = |i: u32| &self.segs[i as usize];
             // Below (qx, y1): the point is strictly left of (above) a → b.
             let p1 = list.partition_point(|&i| {
@@ -132,7 +164,7 @@ pub struct SegmentWindow {
     endpoints: LayeredRangeTree,
     /// For the left and right edges.
     by_x: Stabber,
-    /// For the bottom and top edges, in the frame with x and y exchanged.
+    /// For the bottom edge, in the frame with x and y exchanged.
     by_y: Stabber,
 }
 
@@ -180,8 +212,12 @@ impl SegmentWindow {
         self.endpoints.for_each(w, |i| out.push(i / 2));
         self.by_x.query(w.min.x, w.min.y, w.max.y, &mut out);
         self.by_x.query(w.max.x, w.min.y, w.max.y, &mut out);
+        // Three edges suffice: a segment meeting the window with no endpoint inside meets
+        // its boundary in two points, or in one point of a corner or along a whole edge;
+        // either way it meets the left, right or bottom edge (a segment meeting only the
+        // top edge would touch it at one interior point, which a straight segment can do
+        // only by running along it, and then it meets the left and right edges too).
         self.by_y.query(w.min.y, w.min.x, w.max.x, &mut out);
-        self.by_y.query(w.max.y, w.min.x, w.max.x, &mut out);
         out.sort_unstable();
         out.dedup();
         out
