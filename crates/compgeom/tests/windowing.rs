@@ -269,3 +269,20 @@ proptest! {
         check_window_structures(&segs, &windows(12, -1.0, 40.0, seed), false);
     }
 }
+
+#[test]
+fn infinite_and_nan_windows() {
+    let segs = non_crossing(5, 8, 77);
+    let all: Vec<usize> = (0..segs.len()).collect();
+    let inf = f64::INFINITY;
+    let sw = SegmentWindow::new(&segs).unwrap();
+    assert_eq!(sw.query(&win(-inf, -inf, inf, inf)), all);
+    let half = win(-inf, 2.0, inf, inf);
+    assert_eq!(sw.query(&half), brute(&segs, &win(-1e9, 2.0, 1e9, 1e9)));
+    assert!(sw.query(&win(f64::NAN, 0.0, 1.0, 1.0)).is_empty());
+    let ap_segs = axis_parallel(200, 8, 78);
+    let ap = AxisParallelWindow::new(&ap_segs).unwrap();
+    let strip = win(3.0, -inf, 4.0, inf);
+    assert_eq!(ap.query(&strip), brute(&ap_segs, &win(3.0, -1e9, 4.0, 1e9)));
+    assert!(ap.query(&win(0.0, f64::NAN, 1.0, 1.0)).is_empty());
+}

@@ -100,6 +100,8 @@ impl HStabber {
 #[derive(Debug, Clone)]
 pub struct AxisParallelWindow {
     endpoints: LayeredRangeTree,
+    /// The closed box of all segments: windows are clipped to it.
+    bounds: Bbox2,
     horizontal: HStabber,
     /// Vertical segments with x and y exchanged.
     vertical: HStabber,
@@ -124,6 +126,7 @@ impl AxisParallelWindow {
             }
         }
         Ok(AxisParallelWindow {
+            bounds: Bbox2::of_points(&endpoints),
             endpoints: LayeredRangeTree::new(&endpoints)?,
             horizontal: HStabber::new(&h)?,
             vertical: HStabber::new(&v)?,
@@ -131,14 +134,14 @@ impl AxisParallelWindow {
     }
 
     /// The segments meeting the closed window, each once, indices ascending. An empty
-    /// window (`min > max`) reports nothing.
+    /// window (`min > max`) or one with a NaN bound reports nothing; infinite bounds work.
     pub fn query(&self, window: &Bbox2) -> Vec<usize> {
         let mut out = Vec::new();
-        if window.is_empty() {
+        let Some(w) = super::clip(window, &self.bounds) else {
             return out;
-        }
-        self.endpoints.for_each(window, |i| out.push(i / 2));
-        let w = window;
+        };
+        let w = &w;
+        self.endpoints.for_each(w, |i| out.push(i / 2));
         self.horizontal.query(w.min.x, w.min.y, w.max.y, &mut out);
         self.vertical.query(w.min.y, w.min.x, w.max.x, &mut out);
         out.sort_unstable();

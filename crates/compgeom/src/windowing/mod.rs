@@ -36,6 +36,21 @@ pub use segment_window::SegmentWindow;
 use crate::kernel::{Point2, Segment2};
 use crate::{Error, Result};
 
+/// `window` clipped to `bounds` (the closed box of all input), which leaves the set of
+/// segments meeting it unchanged and makes infinite bounds finite; `None` if nothing can
+/// meet it (empty, NaN, or disjoint from the input).
+fn clip(window: &crate::Bbox2, bounds: &crate::Bbox2) -> Option<crate::Bbox2> {
+    let (w, b) = (window, bounds);
+    let nan = [w.min.x, w.min.y, w.max.x, w.max.y]
+        .iter()
+        .any(|v| v.is_nan());
+    let c = crate::Bbox2 {
+        min: Point2::new(w.min.x.max(b.min.x), w.min.y.max(b.min.y)),
+        max: Point2::new(w.max.x.min(b.max.x), w.max.y.min(b.max.y)),
+    };
+    (!nan && !w.is_empty() && !b.is_empty() && !c.is_empty()).then_some(c)
+}
+
 /// The endpoints `a, b` of every segment (segment `i` gives points `2i`, `2i + 1`), after
 /// checking that all are finite.
 fn checked_endpoints(segments: &[Segment2]) -> Result<Vec<Point2>> {

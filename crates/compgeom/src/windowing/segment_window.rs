@@ -162,6 +162,8 @@ impl Stabber {
 #[derive(Debug, Clone)]
 pub struct SegmentWindow {
     endpoints: LayeredRangeTree,
+    /// The closed box of all segments: windows are clipped to it.
+    bounds: Bbox2,
     /// For the left and right edges.
     by_x: Stabber,
     /// For the bottom edge, in the frame with x and y exchanged.
@@ -194,6 +196,7 @@ impl SegmentWindow {
             Stabber::new(segs, ids)
         };
         Ok(SegmentWindow {
+            bounds: Bbox2::of_points(&endpoints),
             endpoints: LayeredRangeTree::new(&endpoints)?,
             by_x: frame(false)?,
             by_y: frame(true)?,
@@ -201,14 +204,15 @@ impl SegmentWindow {
     }
 
     /// The segments meeting the closed window, each once, indices ascending. An empty
-    /// window (`min > max`) reports nothing; a zero-width or zero-height window is a
-    /// segment or a point and works.
+    /// window (`min > max`) or one with a NaN bound reports nothing; infinite bounds work
+    /// (a half-plane, a strip); a zero-width or zero-height window is a segment or a point
+    /// and works.
     pub fn query(&self, window: &Bbox2) -> Vec<usize> {
         let mut out = Vec::new();
-        if window.is_empty() || !(window.min.is_finite() && window.max.is_finite()) {
+        let Some(w) = super::clip(window, &self.bounds) else {
             return out;
-        }
-        let w = window;
+        };
+        let w = &w;
         self.endpoints.for_each(w, |i| out.push(i / 2));
         self.by_x.query(w.min.x, w.min.y, w.max.y, &mut out);
         self.by_x.query(w.max.x, w.min.y, w.max.y, &mut out);
