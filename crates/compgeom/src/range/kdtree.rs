@@ -94,9 +94,12 @@ impl KdTree {
             size = size.div_ceil(2);
             depth += 1;
         }
-        let mut ids: Vec<u32> = (0..n as u32).collect();
-        split(points, &mut ids, 0, depth);
-        let pts: Vec<Point2> = ids.iter().map(|&i| points[i as usize]).collect();
+        // Points travel with their indices: selection then compares local data instead of
+        // chasing indices into `points`.
+        let mut items: Vec<(Point2, u32)> = points.iter().copied().zip(0..n as u32).collect();
+        split(&mut items, 0, depth);
+        let pts: Vec<Point2> = items.iter().map(|e| e.0).collect();
+        let ids: Vec<u32> = items.iter().map(|e| e.1).collect();
         let mut boxes = vec![Bbox2::EMPTY; (1usize << (depth + 1)) - 1];
         if n > 0 {
             fill_boxes(&pts, &mut boxes, Self::root(n), depth);
@@ -329,30 +332,30 @@ impl KdTree {
     }
 }
 
-/// Reorder `ids` so that each node's median split holds (recursively, to `depth`).
-fn split(points: &[Point2], ids: &mut [u32], depth: u32, max_depth: u32) {
-    if depth >= max_depth || ids.len() <= KdTree::LEAF_SIZE {
+/// Reorder `items` so that each node's median split holds (recursively, to `max_depth`).
+fn split(items: &mut [(Point2, u32)], depth: u32, max_depth: u32) {
+    if depth >= max_depth || items.len() <= KdTree::LEAF_SIZE {
         return;
     }
-    let mid = ids.len() / 2;
-    let key = |&a: &u32, &b: &u32| {
-        let (p, q) = (points[a as usize], points[b as usize]);
-        if depth % 2 == 0 {
-            cmp_composite_x(p, a as usize, q, b as usize)
-        } else {
-            cmp_composite_y(p, a as usize, q, b as usize)
-        }
-    };
-    ids.select_nth_unstable_by(mid, key);
-    let (l, r) = ids.split_at_mut(mid);
+    let mid = items.len() / 2;
+    if depth % 2 == 0 {
+        items.select_nth_unstable_by(mid, |a, b| {
+            cmp_composite_x(a.0, a.1 as usize, b.0, b.1 as usize)
+        });
+    } else {
+        items.select_nth_unstable_by(mid, |a, b| {
+            cmp_composite_y(a.0, a.1 as usize, b.0, b.1 as usize)
+        });
+    }
+    let (l, r) = items.split_at_mut(mid);
     if l.len() + r.len() >= PARALLEL {
         rayon::join(
-            || split(points, l, depth + 1, max_depth),
-            || split(points, r, depth + 1, max_depth),
+            || split(l, depth + 1, max_depth),
+            || split(r, depth + 1, max_depth),
         );
     } else {
-        split(points, l, depth + 1, max_depth);
-        split(points, r, depth + 1, max_depth);
+        split(l, depth + 1, max_depth);
+        split(r, depth + 1, max_depth);
     }
 }
 

@@ -18,10 +18,9 @@ use crate::{Error, Result};
 pub(crate) struct Skeleton {
     /// Distinct endpoints, ascending.
     pub xs: Vec<f64>,
-    /// Canonical lists while building, heap-indexed over the units `0..2m-1`; emptied by
-    /// [`Skeleton::flatten`].
-    pub lists: Vec<Vec<u32>>,
-    /// After `flatten`: node `k`'s list is `items[starts[k]..starts[k + 1]]`.
+    /// Node `k`'s canonical list is `items[starts[k]..starts[k + 1]]` (heap-indexed nodes
+    /// over the units `0..2m-1`; one flat array, as a `Vec` per node would cost 24 bytes
+    /// per node).
     starts: Vec<u32>,
     items: Vec<u32>,
 }
@@ -36,33 +35,39 @@ impl Skeleton {
         xs.sort_unstable_by(f64::total_cmp);
         xs.dedup();
         let units = (2 * xs.len()).saturating_sub(1);
-        let mut lists = vec![Vec::new(); 4 * units.max(1)];
-        for (i, &(a, b)) in intervals.iter().enumerate() {
-            let ua = 2 * xs.partition_point(|&x| x < a);
-            let ub = 2 * xs.partition_point(|&x| x < b);
-            insert(&mut lists, 0, 0, units, ua, ub + 1, i as u32);
+        let nodes = 2 * units.next_power_of_two().max(1);
+        let spans: Vec<(usize, usize)> = intervals
+            .iter()
+            .map(|&(a, b)| {
+                let ua = 2 * xs.partition_point(|&x| x < a);
+                (ua, 2 * xs.partition_point(|&x| x < b) + 1)
+            })
+            .collect();
+        // Two passes: count each node's list, then fill the flat array.
+        let mut starts = vec![0u32; nodes + 1];
+        for &(ua, ub) in &spans {
+            canonical(0, 0, units, ua, ub, &mut |k| starts[k + 1] += 1);
         }
-        Skeleton {
-            xs,
-            lists,
-            starts: Vec::new(),
-            items: Vec::new(),
+        for k in 0..nodes {
+            starts[k + 1] += starts[k];
         }
+        let mut cursor = starts.clone();
+        let mut items = vec![0u32; starts[nodes] as usize];
+        for (i, &(ua, ub)) in spans.iter().enumerate() {
+            canonical(0, 0, units, ua, ub, &mut |k| {
+                items[cursor[k] as usize] = i as u32;
+                cursor[k] += 1;
+            });
+        }
+        Skeleton { xs, starts, items }
     }
 
-    /// Pack the lists into one array (a `Vec` per node would cost 24 bytes per node).
-    pub fn flatten(&mut self) {
-        let lists = std::mem::take(&mut self.lists);
-        self.starts = Vec::with_capacity(lists.len() + 1);
-        self.items = Vec::with_capacity(lists.iter().map(Vec::len).sum());
-        self.starts.push(0);
-        for l in lists {
-            self.items.extend_from_slice(&l);
-            self.starts.push(self.items.len() as u32);
-        }
+    /// Node `k`'s list, to reorder it.
+    pub fn list_mut(&mut self, k: usize) -> &mut [u32] {
+        &mut self.items[self.starts[k] as usize..self.starts[k + 1] as usize]
     }
 
-    /// Node `k`'s list (after `flatten`).
+    /// Node `k`'s list.
     #[inline]
     pub fn list(&self, k: usize) -> &[u32] {
         &self.items[self.starts[k] as usize..self.starts[k + 1] as usize]
@@ -127,19 +132,18 @@ impl Skeleton {
     }
 }
 
-/// Store interval `id` covering units `[ua, ub)` at its canonical nodes below node `k`
-/// (units `[a, b)`).
-fn insert(lists: &mut [Vec<u32>], k: usize, a: usize, b: usize, ua: usize, ub: usize, id: u32) {
+/// Call `f` with each canonical node of the units `[ua, ub)` below node `k` (units `[a, b)`).
+fn canonical(k: usize, a: usize, b: usize, ua: usize, ub: usize, f: &mut impl FnMut(usize)) {
     if ub <= a || b <= ua || a >= b {
         return;
     }
     if ua <= a && b <= ub {
-        lists[k].push(id);
+        f(k);
         return;
     }
     let m = a + (b - a) / 2;
-    insert(lists, 2 * k + 1, a, m, ua, ub, id);
-    insert(lists, 2 * k + 2, m, b, ua, ub, id);
+    canonical(2 * k + 1, a, m, ua, ub, f);
+    canonical(2 * k + 2, m, b, ua, ub, f);
 }
 
 /// Check intervals: finite, `lo <= hi`, at most `u32::MAX`.
@@ -179,9 +183,9 @@ impl SegmentTree {
     /// a non-finite end or with `lo > hi`.
     pub fn new(intervals: &[(f64, f64)]) -> Result<SegmentTree> {
         check_intervals(intervals)?;
-        let mut skel = Skeleton::new(intervals);
-        skel.flatten();
-        Ok(SegmentTree { skel })
+        Ok(SegmentTree {
+            skel: Skeleton::new(intervals),
+        })
     }
 
     /// Calls `f` with the index of every interval containing `q` (each once).

@@ -96,11 +96,11 @@ impl Stabber {
         let mut slabs = Vec::new();
         skel.for_each_node(|k, u0, u1| slabs.push((k, u0, u1)));
         for (k, u0, u1) in slabs {
-            if skel.lists[k].len() < 2 {
+            if skel.list(k).len() < 2 {
                 continue;
             }
             let (xl, xr) = skel.slab(u0, u1);
-            let list = &mut skel.lists[k];
+            let list = skel.list_mut(k);
             list.sort_by(|&i, &j| {
                 let (s, t) = (&segs[i as usize], &segs[j as usize]);
                 cmp_at(s, t, xl)
@@ -120,7 +120,6 @@ impl Stabber {
                 }
             }
         }
-        skel.flatten();
         Ok(Stabber { segs, ids, skel })
     }
 
