@@ -38,8 +38,9 @@ fn exact_dist2(a: Point2, q: Point2) -> BigRational {
     &dx * &dx + &dy * &dy
 }
 
+/// The order of two rounded squared distances when the rounding cannot change it.
 #[inline]
-fn filtered(da: f64, db: f64) -> Option<Ordering> {
+pub(crate) fn filtered(da: f64, db: f64) -> Option<Ordering> {
     let ok = |d: f64| (TINY..=HUGE).contains(&d);
     if !(ok(da) && ok(db)) {
         return None;
@@ -79,12 +80,6 @@ pub(crate) fn box_dist2_lower(q: Point2, minx: f64, miny: f64, maxx: f64, maxy: 
     let dx = (minx - q.x).max(q.x - maxx).max(0.0);
     let dy = (miny - q.y).max(q.y - maxy).max(0.0);
     (dx * dx + dy * dy) * (1.0 - 4.0 * EPS) - 4.0 * TINY
-}
-
-/// An upper bound of the exact squared distance from `q` to `a` (for pruning).
-#[inline]
-pub(crate) fn dist2_upper(a: Point2, q: Point2) -> f64 {
-    dist2(a, q) * (1.0 + 4.0 * EPS) + 4.0 * TINY
 }
 
 #[cfg(test)]

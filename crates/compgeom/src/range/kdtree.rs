@@ -19,7 +19,9 @@
 //! Memory: 20 bytes per point plus a 32-byte box per node (about `2n / LEAF_SIZE` nodes).
 
 use super::composite::{check_points, cmp_composite_x, cmp_composite_y, PARALLEL};
-use super::distance::{box_dist2_lower, compare_distance, compare_distance_to_radius, dist2_upper};
+use super::distance::{
+    box_dist2_lower, compare_distance, compare_distance_to_radius, dist2, filtered,
+};
 use crate::kernel::{Bbox2, Point2};
 use crate::Result;
 use std::cmp::Ordering;
@@ -228,16 +230,20 @@ impl KdTree {
     fn knn(&self, q: Point2, k: usize, node: Node, heap: &mut BinaryHeap<Candidate>) {
         if heap.len() == k {
             let b = &self.boxes[node.k as usize];
-            let worst = heap.peek().map_or(f64::INFINITY, |c| dist2_upper(c.p, q));
+            let worst = heap
+                .peek()
+                .map_or(f64::INFINITY, |c| c.d2 * (1.0 + 4e-15) + 4e-290);
             if box_dist2_lower(q, b.min.x, b.min.y, b.max.x, b.max.y) > worst {
                 return;
             }
         }
         if node.depth == self.depth || (node.hi - node.lo) as usize <= Self::LEAF_SIZE {
             for j in node.lo as usize..node.hi as usize {
+                let p = self.pts[j];
                 let c = Candidate {
                     q,
-                    p: self.pts[j],
+                    p,
+                    d2: dist2(p, q),
                     id: self.ids[j],
                 };
                 if heap.len() < k {
@@ -393,6 +399,8 @@ fn inside(b: &Bbox2, r: &Bbox2) -> bool {
 struct Candidate {
     q: Point2,
     p: Point2,
+    /// The rounded squared distance, for the filter.
+    d2: f64,
     id: u32,
 }
 
@@ -409,7 +417,9 @@ impl PartialOrd for Candidate {
 }
 impl Ord for Candidate {
     fn cmp(&self, o: &Self) -> Ordering {
-        compare_distance(self.q, self.p, o.p).then(self.id.cmp(&o.id))
+        filtered(self.d2, o.d2)
+            .unwrap_or_else(|| compare_distance(self.q, self.p, o.p))
+            .then(self.id.cmp(&o.id))
     }
 }
 
