@@ -18,6 +18,10 @@ use super::skeleton::{count_piece, for_each_piece, Piece, RangeIter, Skeleton, L
 use crate::kernel::{Bbox2, Point2};
 use crate::Result;
 
+/// A partly covered node with at most this many candidates (points with y in range) is
+/// filtered by a scan of its entries.
+const FEW: usize = 128;
+
 /// A static layered range tree (fractional cascading); queries report input indices.
 ///
 /// ```
@@ -122,6 +126,18 @@ impl LayeredRangeTree {
                 depth: d as u32,
                 from: p1 as u32,
                 to: p2 as u32,
+            });
+            return;
+        }
+        if p2 - p1 <= FEW {
+            // Few candidates: filter them by x-rank in one contiguous scan rather than
+            // descending further (O(1) work, so the bound O(log n + k) stands).
+            out(Piece::Ranked {
+                depth: d as u32,
+                from: p1 as u32,
+                to: p2 as u32,
+                lo: lo as u32,
+                hi: hi as u32,
             });
             return;
         }

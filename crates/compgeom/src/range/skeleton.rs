@@ -26,6 +26,9 @@ pub(crate) struct Skeleton {
     pub ids: Vec<u32>,
     /// `level_ids[d][j]`: input indices; per node of depth `d`, its points in y-order.
     pub level_ids: Vec<Vec<u32>>,
+    /// `level_ranks[d][j]`: the x-rank of `level_ids[d][j]` (layered tree only): lets a
+    /// node with few candidates be filtered by a contiguous scan instead of descending.
+    pub level_ranks: Vec<Vec<u32>>,
 }
 
 /// One partition job: a node's ranks, the destination, its range, its cascade pointers.
@@ -88,6 +91,7 @@ impl Skeleton {
             ranks.sort_unstable_by(cmp);
         }
         let mut level_ids = Vec::with_capacity(depths);
+        let mut level_ranks = Vec::new();
         let mut lefts = Vec::new();
         let mut ranges = vec![(0u32, n as u32)];
         for d in 0..depths {
@@ -96,6 +100,9 @@ impl Skeleton {
             } else {
                 ranks.iter().map(|&r| ids[r as usize]).collect()
             });
+            if cascade {
+                level_ranks.push(ranks.clone());
+            }
             if d + 1 == depths && !cascade {
                 break;
             }
@@ -148,6 +155,7 @@ impl Skeleton {
                 pts,
                 ids,
                 level_ids,
+                level_ranks,
             },
             lefts,
         ))
@@ -192,8 +200,23 @@ fn pieces_ref<'a, T>(mut v: &'a [T], ranges: &[(u32, u32)]) -> Vec<&'a [T]> {
 /// rectangle), or x-ranks `from..to` to be tested against the rectangle one by one.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Piece {
-    Whole { depth: u32, from: u32, to: u32 },
-    Scan { from: u32, to: u32 },
+    Whole {
+        depth: u32,
+        from: u32,
+        to: u32,
+    },
+    Scan {
+        from: u32,
+        to: u32,
+    },
+    /// Entries `from..to` of level `depth` whose x-rank lies in `lo..hi` (all have y in range).
+    Ranked {
+        depth: u32,
+        from: u32,
+        to: u32,
+        lo: u32,
+        hi: u32,
+    },
 }
 
 /// The lazy answer of a range-tree query: the canonical pieces are found first (O(log n) or
@@ -228,6 +251,20 @@ impl Iterator for RangeIter<'_> {
                     *from += 1;
                     return Some(id as usize);
                 }
+                Some(Piece::Ranked {
+                    depth,
+                    from,
+                    to,
+                    lo,
+                    hi,
+                }) if *from < *to => {
+                    let (d, j) = (*depth as usize, *from as usize);
+                    *from += 1;
+                    let r = self.skel.level_ranks[d][j];
+                    if *lo <= r && r < *hi {
+                        return Some(self.skel.level_ids[d][j] as usize);
+                    }
+                }
                 Some(Piece::Scan { from, to }) if *from < *to => {
                     let r = *from as usize;
                     *from += 1;
@@ -246,6 +283,16 @@ impl Iterator for RangeIter<'_> {
 pub(crate) fn count_piece(skel: &Skeleton, rect: &Bbox2, piece: Piece) -> usize {
     match piece {
         Piece::Whole { from, to, .. } => (to - from) as usize,
+        Piece::Ranked {
+            depth,
+            from,
+            to,
+            lo,
+            hi,
+        } => skel.level_ranks[depth as usize][from as usize..to as usize]
+            .iter()
+            .filter(|&&r| lo <= r && r < hi)
+            .count(),
         Piece::Scan { from, to } => skel.pts[from as usize..to as usize]
             .iter()
             .filter(|p| rect.contains(**p))
@@ -265,6 +312,23 @@ pub(crate) fn for_each_piece(
         Piece::Whole { depth, from, to } => {
             for &id in &skel.level_ids[depth as usize][from as usize..to as usize] {
                 f(id as usize);
+            }
+        }
+        Piece::Ranked {
+            depth,
+            from,
+            to,
+            lo,
+            hi,
+        } => {
+            let (d, range) = (depth as usize, from as usize..to as usize);
+            for (&r, &id) in skel.level_ranks[d][range.clone()]
+                .iter()
+                .zip(&skel.level_ids[d][range])
+            {
+                if lo <= r && r < hi {
+                    f(id as usize);
+                }
             }
         }
         Piece::Scan { from, to } => {
