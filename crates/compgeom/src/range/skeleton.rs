@@ -29,6 +29,8 @@ pub(crate) struct Skeleton {
     /// `level_ranks[d][j]`: the x-rank of `level_ids[d][j]` (layered tree only): lets a
     /// node with few candidates be filtered by a contiguous scan instead of descending.
     pub level_ranks: Vec<Vec<u32>>,
+    /// Every `SAMPLE`-th x-coordinate of `pts`.
+    pub x_samples: Vec<f64>,
 }
 
 /// One partition job: a node's ranks, the destination, its range, its cascade pointers.
@@ -36,6 +38,38 @@ type Job<'a> = (
     (&'a [u32], &'a mut [u32]),
     (&'a (u32, u32), Option<&'a mut [u32]>),
 );
+
+/// Every `SAMPLE`-th key of a large sorted array, kept apart so that the first steps of a
+/// binary search stay in cache (a search over millions of entries otherwise pays a cache
+/// miss per step).
+pub(crate) const SAMPLE: usize = 64;
+
+/// `(0..len).partition_point(pred ∘ key)` for keys sorted so that `pred` holds on a prefix,
+/// narrowed first with `samples[j] = key(j * SAMPLE)`.
+#[inline]
+pub(crate) fn sampled_partition(
+    samples: &[f64],
+    len: usize,
+    key: impl Fn(usize) -> f64,
+    pred: impl Fn(f64) -> bool,
+) -> usize {
+    let s = samples.partition_point(|&v| pred(v));
+    if s == 0 {
+        return 0;
+    }
+    let from = (s - 1) * SAMPLE + 1;
+    let to = (s * SAMPLE).min(len);
+    let (mut lo, mut hi) = (from, to);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if pred(key(mid)) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
 
 /// Number of depths that hold an internal node.
 pub(crate) fn internal_depths(n: usize) -> usize {
@@ -150,8 +184,10 @@ impl Skeleton {
             ranks = next;
             ranges = next_ranges(&ranges);
         }
+        let x_samples = pts.iter().step_by(SAMPLE).map(|p| p.x).collect();
         Ok((
             Skeleton {
+                x_samples,
                 pts,
                 ids,
                 level_ids,
@@ -169,8 +205,10 @@ impl Skeleton {
     /// The x-ranks `[lo, hi)` of the points with `xmin <= x <= xmax` (contiguous in
     /// composite x-order).
     pub fn x_span(&self, rect: &Bbox2) -> (usize, usize) {
-        let lo = self.pts.partition_point(|p| p.x < rect.min.x);
-        let hi = self.pts.partition_point(|p| p.x <= rect.max.x);
+        let n = self.pts.len();
+        let x = |i: usize| self.pts[i].x;
+        let lo = sampled_partition(&self.x_samples, n, x, |v| v < rect.min.x);
+        let hi = sampled_partition(&self.x_samples, n, x, |v| v <= rect.max.x);
         (lo, hi.max(lo))
     }
 
