@@ -56,7 +56,7 @@ fn at(s: &Segment2, x: f64) -> ExactPoint {
 
 /// y of `s` (with `a.x < b.x`) at `x` in its x-range, rounded, with a bound on the error
 /// (none at the endpoints); `None` if an intermediate overflowed.
-fn approx_y(s: &Segment2, x: f64) -> Option<(f64, f64)> {
+fn approx_y(s: &Segment2, x: f64) -> Approx {
     if x == s.a.x {
         return Some((s.a.y, 0.0));
     }
@@ -72,21 +72,28 @@ fn approx_y(s: &Segment2, x: f64) -> Option<(f64, f64)> {
     (y.is_finite() && t.is_finite() && err.is_finite()).then_some((y, err))
 }
 
+/// A rounded y-value and a bound on its error (`None`: overflow, use exact arithmetic).
+type Approx = Option<(f64, f64)>;
+
+/// The order of two rounded y-values with error bounds, when the bounds decide it.
+#[inline]
+fn filter_cmp(a: Approx, b: Approx) -> Option<Ordering> {
+    let ((ys, es), (yt, et)) = (a?, b?);
+    if ys + es < yt - et {
+        Some(Ordering::Less)
+    } else if ys - es > yt + et {
+        Some(Ordering::Greater)
+    } else if es == 0.0 && et == 0.0 {
+        ys.partial_cmp(&yt)
+    } else {
+        None
+    }
+}
+
 /// y of `s` against y of `t` at `x` (both defined there), exactly: a floating-point
 /// filter, then the kernel's exact comparison.
 fn cmp_at(s: &Segment2, t: &Segment2, x: f64) -> Ordering {
-    if let (Some((ys, es)), Some((yt, et))) = (approx_y(s, x), approx_y(t, x)) {
-        if ys + es < yt - et {
-            return Ordering::Less;
-        }
-        if ys - es > yt + et {
-            return Ordering::Greater;
-        }
-        if es == 0.0 && et == 0.0 {
-            return ys.partial_cmp(&yt).unwrap_or(Ordering::Equal);
-        }
-    }
-    compare_y_at_x(&at(s, x), *t)
+    filter_cmp(approx_y(s, x), approx_y(t, x)).unwrap_or_else(|| compare_y_at_x(&at(s, x), *t))
 }
 
 impl Stabber {
@@ -101,12 +108,28 @@ impl Stabber {
             }
             let (xl, xr) = skel.slab(u0, u1);
             let list = skel.list_mut(k);
-            list.sort_by(|&i, &j| {
-                let (s, t) = (&segs[i as usize], &segs[j as usize]);
-                cmp_at(s, t, xl)
-                    .then_with(|| cmp_at(s, t, xr))
-                    .then(ids[i as usize].cmp(&ids[j as usize]))
+            // The rounded y-values at both slab ends are computed once per entry; the exact
+            // comparison runs only where they cannot decide.
+            let mut keyed: Vec<(Approx, Approx, u32)> = list
+                .iter()
+                .map(|&i| {
+                    (
+                        approx_y(&segs[i as usize], xl),
+                        approx_y(&segs[i as usize], xr),
+                        i,
+                    )
+                })
+                .collect();
+            keyed.sort_by(|a, b| {
+                let (s, t) = (&segs[a.2 as usize], &segs[b.2 as usize]);
+                filter_cmp(a.0, b.0)
+                    .unwrap_or_else(|| cmp_at(s, t, xl))
+                    .then_with(|| filter_cmp(a.1, b.1).unwrap_or_else(|| cmp_at(s, t, xr)))
+                    .then(ids[a.2 as usize].cmp(&ids[b.2 as usize]))
             });
+            for (slot, e) in list.iter_mut().zip(&keyed) {
+                *slot = e.2;
+            }
             if xl < xr {
                 for w in list.windows(2) {
                     let (s, t) = (&segs[w[0] as usize], &segs[w[1] as usize]);
