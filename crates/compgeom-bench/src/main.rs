@@ -9,18 +9,20 @@
 mod hull;
 mod intersect;
 mod kernel;
+mod range;
 mod util;
 
 use std::process::ExitCode;
 
 /// Every group, in the order `all` runs them.
-const GROUPS: &[&str] = &["kernel", "hull", "intersect"];
+const GROUPS: &[&str] = &["kernel", "hull", "intersect", "range"];
 
 /// Run one group; `None` if the name is unknown.
 fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
     match name {
         "hull" => Some(hull::run(quick)),
         "intersect" => Some(intersect::run(quick)),
+        "range" => Some(range::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

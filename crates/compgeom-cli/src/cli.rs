@@ -21,6 +21,8 @@
 
 use crate::commands::hull::HullArgs;
 use crate::commands::intersect::IntersectArgs;
+use crate::commands::range::RangeArgs;
+use crate::commands::window::WindowArgs;
 use crate::demo::DemoArgs;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
@@ -51,6 +53,12 @@ pub enum Command {
     /// All intersection points and overlaps of line segments (book chapter 2.1).
     #[command(after_long_help = crate::commands::intersect::JSON_HELP)]
     Intersect(IntersectArgs),
+    /// Orthogonal range queries: points in rectangles, counts, k nearest (book chapter 5).
+    #[command(after_long_help = crate::commands::range::JSON_HELP)]
+    Range(RangeArgs),
+    /// Windowing: segments meeting query rectangles (book chapter 10).
+    #[command(after_long_help = crate::commands::window::JSON_HELP)]
+    Window(WindowArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

@@ -32,6 +32,8 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
     match cli.command {
         cli::Command::Hull(args) => commands::hull::run(&args),
         cli::Command::Intersect(args) => commands::intersect::run(&args),
+        cli::Command::Range(args) => commands::range::run(&args),
+        cli::Command::Window(args) => commands::window::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

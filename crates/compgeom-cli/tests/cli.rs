@@ -552,3 +552,315 @@ mod with_io_and_hull {
         assert!(h_of("the book&apos;s slow hull") >= 3);
     }
 }
+
+/// `compgeom range` and `compgeom window` (book chapters 5 and 10).
+mod range_commands {
+    use super::*;
+
+    fn json(args: &[&str]) -> Value {
+        let out = compgeom()
+            .args(args)
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        serde_json::from_slice(&out).unwrap()
+    }
+
+    fn lists(v: &Value) -> Vec<Vec<u64>> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|l| {
+                l.as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|i| i.as_u64().unwrap())
+                    .collect()
+            })
+            .collect()
+    }
+
+    const POINTS: &str = "x,y\n0,0\n1,1\n1,1\n2,0\n3,3\n1,2\n";
+    const RECTS: &str = "# xmin,ymin,xmax,ymax\n0,0,1,1\n2,2,1,1\n1,0,3,3\n1,1,1,1\n";
+
+    #[test]
+    fn every_structure_gives_the_same_closed_answers() {
+        let dir = TempDir::new().unwrap();
+        let p = dir.path().join("p.csv");
+        let q = dir.path().join("q.csv");
+        fs::write(&p, POINTS).unwrap();
+        fs::write(&q, RECTS).unwrap();
+        let want = vec![vec![0, 1, 2], vec![], vec![1, 2, 3, 4, 5], vec![1, 2]];
+        for s in ["layered", "rangetree", "kdtree"] {
+            let v = json(&[
+                "range",
+                p.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+                "--structure",
+                s,
+                "--verify",
+            ]);
+            assert_eq!(lists(&v["results"]), want, "{s}");
+            assert_eq!(v["structure"], s);
+            assert_eq!(v["input_points"], 6);
+            assert_eq!(v["queries"], 4);
+            assert_eq!(v["verified"], true);
+            let c = json(&[
+                "range",
+                p.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+                "--structure",
+                s,
+                "--count",
+            ]);
+            assert_eq!(c["counts"], serde_json::json!([3, 0, 5, 2]));
+            assert!(c.get("results").is_none());
+        }
+    }
+
+    #[test]
+    fn knn_svg_and_geometry_output() {
+        let dir = TempDir::new().unwrap();
+        let p = dir.path().join("p.csv");
+        let at = dir.path().join("at.csv");
+        let svg = dir.path().join("k.svg");
+        fs::write(&p, POINTS).unwrap();
+        fs::write(&at, "1,1\n3,3\n").unwrap();
+        let v = json(&[
+            "range",
+            p.to_str().unwrap(),
+            "--knn",
+            "3",
+            "--at",
+            at.to_str().unwrap(),
+            "--verify",
+            "--svg",
+            svg.to_str().unwrap(),
+        ]);
+        // From (1,1): the two copies of (1,1), then (1,2) at distance 1 (index 5).
+        assert_eq!(lists(&v["results"]), vec![vec![1, 2, 5], vec![4, 5, 1]]);
+        assert!(fs::read_to_string(&svg).unwrap().contains("<svg"));
+        let q = dir.path().join("q.csv");
+        fs::write(&q, "0,0,0.5,0.5\n").unwrap();
+        let ksvg = dir.path().join("kd.svg");
+        compgeom()
+            .args([
+                "range",
+                p.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+                "-f",
+                "wkt",
+                "--structure",
+                "kdtree",
+                "--svg",
+                ksvg.to_str().unwrap(),
+            ])
+            .assert()
+            .success()
+            .stdout("MULTIPOINT ((0 0))\n");
+        assert!(fs::read_to_string(&ksvg)
+            .unwrap()
+            .contains("kd-tree splitting lines"));
+    }
+
+    #[test]
+    fn bad_range_input_exits_2_with_file_and_line() {
+        let dir = TempDir::new().unwrap();
+        let p = dir.path().join("p.csv");
+        let q = dir.path().join("q.csv");
+        fs::write(&p, POINTS).unwrap();
+        fs::write(&q, "0,0,1,1\n0,0,1\n").unwrap();
+        compgeom()
+            .args([
+                "range",
+                p.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+            ])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("q.csv:2"));
+        fs::write(&q, "0,0,1,nan\n").unwrap();
+        compgeom()
+            .args([
+                "range",
+                p.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+            ])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("q.csv:1"));
+        let bad = dir.path().join("bad.csv");
+        fs::write(&bad, "0,0\n1,x\n").unwrap();
+        compgeom()
+            .args([
+                "range",
+                bad.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+            ])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("bad.csv:2"));
+        // --queries or --knn is required; --knn needs --at.
+        compgeom()
+            .args(["range", p.to_str().unwrap()])
+            .assert()
+            .code(2);
+        compgeom()
+            .args(["range", p.to_str().unwrap(), "--knn", "2"])
+            .assert()
+            .code(2);
+        compgeom()
+            .args([
+                "range",
+                p.to_str().unwrap(),
+                "--queries",
+                "/no/such/rects.csv",
+            ])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("/no/such/rects.csv"));
+    }
+
+    #[test]
+    fn window_finds_segments_crossing_without_endpoints_inside() {
+        let dir = TempDir::new().unwrap();
+        let s = dir.path().join("s.csv");
+        let q = dir.path().join("q.csv");
+        // 0 cuts the window's corner, 1 passes through it, 2 is outside, 3 touches a corner,
+        // 4 is a point inside.
+        fs::write(
+            &s,
+            "1,2.5,2.5,1\n-5,0.5,5,0.5\n5,5,6,7\n2,2,3,3\n0.5,0.5,0.5,0.5\n",
+        )
+        .unwrap();
+        fs::write(&q, "0,0,2,2\n10,10,9,9\n").unwrap();
+        let v = json(&[
+            "window",
+            s.to_str().unwrap(),
+            "--queries",
+            q.to_str().unwrap(),
+            "--verify",
+        ]);
+        assert_eq!(lists(&v["results"]), vec![vec![0, 1, 3, 4], vec![]]);
+        assert_eq!(v["structure"], "segment-tree");
+        assert_eq!(v["input_segments"], 5);
+        // Axis-parallel input through the interval-tree structure.
+        fs::write(&s, "-5,1,5,1\n1,-5,1,5\n3,3,4,3\n").unwrap();
+        let svg = dir.path().join("w.svg");
+        let v = json(&[
+            "window",
+            s.to_str().unwrap(),
+            "--queries",
+            q.to_str().unwrap(),
+            "--structure",
+            "interval-tree",
+            "--verify",
+            "--svg",
+            svg.to_str().unwrap(),
+        ]);
+        assert_eq!(lists(&v["results"]), vec![vec![0, 1], vec![]]);
+        assert!(fs::read_to_string(&svg)
+            .unwrap()
+            .contains("reported segments"));
+        compgeom()
+            .args([
+                "window",
+                s.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+                "-f",
+                "csv",
+            ])
+            .assert()
+            .success()
+            .stdout(predicate::str::contains("-5,1,5,1"));
+    }
+
+    #[test]
+    fn bad_window_input_exits_2() {
+        let dir = TempDir::new().unwrap();
+        let s = dir.path().join("s.csv");
+        let q = dir.path().join("q.csv");
+        fs::write(&q, "0,0,1,1\n").unwrap();
+        fs::write(&s, "0,0,2,2\n0,2,2,0\n").unwrap();
+        compgeom()
+            .args([
+                "window",
+                s.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+            ])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("segments 0 and 1 cross"));
+        compgeom()
+            .args([
+                "window",
+                s.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+                "--structure",
+                "interval-tree",
+            ])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("neither horizontal nor vertical"));
+        fs::write(&s, "0,0,1,1\n0,0,1\n").unwrap();
+        compgeom()
+            .args([
+                "window",
+                s.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+            ])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("s.csv:2"));
+        fs::write(&s, "0,0,1,1\n").unwrap();
+        fs::write(&q, "0,0,1,1,5\n").unwrap();
+        compgeom()
+            .args([
+                "window",
+                s.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+            ])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("q.csv:1"));
+    }
+
+    #[test]
+    fn demo_has_the_range_and_window_pictures() {
+        let dir = TempDir::new().unwrap();
+        compgeom()
+            .args(["demo", "--out"])
+            .arg(dir.path())
+            .assert()
+            .success();
+        let files = files_in(dir.path());
+        for f in [
+            "range-kdtree.svg",
+            "range-layered.svg",
+            "range-knn.svg",
+            "window-segments.svg",
+        ] {
+            assert!(files.contains(&f.to_string()), "{f} missing from {files:?}");
+        }
+        let index = fs::read_to_string(dir.path().join("index.html")).unwrap();
+        assert!(index.contains("range searching and windowing"));
+        let svg = fs::read_to_string(dir.path().join("window-segments.svg")).unwrap();
+        assert!(
+            svg.contains("reported segments (16)"),
+            "the long segment and corner-crossing ones"
+        );
+    }
+}

@@ -3,3 +3,5 @@
 
 pub mod hull;
 pub mod intersect;
+pub mod range;
+pub mod window;
