@@ -17,6 +17,7 @@
 //! | chapter | problem | entry points |
 //! |---|---|---|
 //! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::convex_hull_indices`], [`hull::verify_convex_hull`] |
+//! | 4 | half-plane intersection, linear programming, smallest enclosing disc, casting | [`lp::intersect_halfplanes`], [`lp::lp2d`], [`lp::lp_d`], [`lp::smallest_enclosing_disc`], [`lp::castability`] |
 //!
 //! ## Exactness
 //!
@@ -31,6 +32,7 @@ mod error;
 pub mod hull;
 pub mod io;
 pub mod kernel;
+pub mod lp;
 pub mod render;
 
 pub use error::{Error, Location, Result};
