@@ -47,6 +47,12 @@ pub enum Command {
     /// Convex hull of points in the plane (book chapter 1).
     #[command(after_long_help = crate::commands::hull::JSON_HELP)]
     Hull(HullArgs),
+    /// Intersection of half-planes a·x + b·y <= c (book chapter 4).
+    #[command(after_long_help = crate::commands::halfplanes::JSON_HELP)]
+    Halfplanes(crate::commands::halfplanes::HalfplanesArgs),
+    /// Linear programming: maximize c·x subject to a·x <= b (book chapter 4).
+    #[command(after_long_help = crate::commands::lp::JSON_HELP)]
+    Lp(crate::commands::lp::LpArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

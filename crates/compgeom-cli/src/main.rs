@@ -31,6 +31,8 @@ fn main() -> ExitCode {
 fn run(cli: cli::Cli) -> Result<(), error::CliError> {
     match cli.command {
         cli::Command::Hull(args) => commands::hull::run(&args),
+        cli::Command::Halfplanes(args) => commands::halfplanes::run(&args),
+        cli::Command::Lp(args) => commands::lp::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

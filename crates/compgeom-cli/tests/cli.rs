@@ -552,3 +552,156 @@ mod with_io_and_hull {
         assert!(h_of("the book&apos;s slow hull") >= 3);
     }
 }
+
+/// Chapter 4 commands: `halfplanes`, `lp`, `enclose`, `cast`.
+mod lp_commands {
+    use super::*;
+
+    fn json(args: &[&str]) -> Value {
+        let out = compgeom()
+            .args(args)
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        serde_json::from_slice(&out).expect("JSON")
+    }
+
+    fn pairs(v: &Value) -> Vec<(f64, f64)> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|p| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap()))
+            .collect()
+    }
+
+    const TRIANGLE: &str =
+        "# x >= 0, y >= 0, x + y <= 2, redundant x <= 5\n-1 0 0\n0 -1 0\n1,1,2\n1 0 5\n";
+
+    #[test]
+    fn halfplanes_polygon_json_and_svg() {
+        let (dir, path) = input("t.txt", TRIANGLE);
+        let svg = dir.path().join("r.svg");
+        let v = json(&[
+            "halfplanes",
+            path.to_str().unwrap(),
+            "--svg",
+            svg.to_str().unwrap(),
+        ]);
+        assert_eq!(v["kind"], "polygon");
+        assert_eq!(
+            pairs(&v["vertices"]),
+            vec![(0.0, 0.0), (2.0, 0.0), (0.0, 2.0)]
+        );
+        assert_eq!(v["constraints"], serde_json::json!([1, 2, 0]));
+        assert_eq!(v["input_constraints"], 4);
+        let text = fs::read_to_string(&svg).unwrap();
+        assert!(
+            text.starts_with("<") && text.contains("<svg") && text.trim_end().ends_with("</svg>")
+        );
+    }
+
+    #[test]
+    fn halfplanes_every_kind() {
+        let cases = [
+            ("1 0 0\n-1 0 -1\n", "empty"),
+            ("1 1 0\n-1 1 0\n0 -1 0\n", "point"),
+            ("1 0 0\n-1 0 0\n0 1 1\n0 -1 1\n", "segment"),
+            ("1 0 0\n-1 0 0\n0 1 0\n", "ray"),
+            ("1 0 0\n-1 0 0\n", "line"),
+            ("0 1 0\n", "unbounded"),
+        ];
+        for (text, kind) in cases {
+            let (_dir, path) = input("h.txt", text);
+            let v = json(&["halfplanes", path.to_str().unwrap()]);
+            assert_eq!(v["kind"], kind, "{text}");
+        }
+        // Geometry formats refuse unbounded results (exit 2) and print bounded ones.
+        let (_dir, path) = input("h.txt", "0 1 0\n");
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap(), "--format", "wkt"])
+            .assert()
+            .code(2);
+        let (_dir, path) = input("t.txt", TRIANGLE);
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap(), "--format", "wkt"])
+            .assert()
+            .success()
+            .stdout(predicate::str::starts_with("POLYGON"));
+    }
+
+    #[test]
+    fn halfplanes_bad_input_names_file_and_line() {
+        let (_dir, path) = input("bad.txt", "1 0 1\n\n1 x 2\n");
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("bad.txt:3"));
+        let (_dir, path) = input("short.txt", "1 0\n");
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("short.txt:1"));
+        let (_dir, path) = input("nan.txt", "1 0 nan\n");
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("nan.txt:1"));
+    }
+
+    #[test]
+    fn lp_optimal_unbounded_infeasible() {
+        let (dir, path) = input("t.txt", TRIANGLE);
+        let p = path.to_str().unwrap();
+        let v = json(&["lp", p, "--maximize", "1,1"]);
+        assert_eq!(v["status"], "optimal");
+        // The optimal edge from (0, 2) to (2, 0): the lexicographically smallest end.
+        assert_eq!(pairs(&serde_json::json!([v["point"]])), vec![(0.0, 2.0)]);
+        assert_eq!(v["value"], 2.0);
+        let v = json(&["lp", p, "--maximize=-1,-1", "--seed", "5"]);
+        assert_eq!(pairs(&serde_json::json!([v["point"]])), vec![(0.0, 0.0)]);
+        let (_d, open) = input("open.txt", "0 1 0\n");
+        let v = json(&["lp", open.to_str().unwrap(), "--maximize=1,-1"]);
+        assert_eq!(v["status"], "unbounded");
+        let ray = &v["ray"];
+        assert!(ray[0].as_f64().unwrap() - ray[1].as_f64().unwrap() > 0.0);
+        assert!(ray[1].as_f64().unwrap() <= 0.0);
+        let (_d, none) = input("none.txt", "1 0 0\n-1 0 -1\n0 1 4\n");
+        let v = json(&["lp", none.to_str().unwrap(), "--maximize", "0,1"]);
+        assert_eq!(v["status"], "infeasible");
+        assert_eq!(v["certificate"], serde_json::json!([0, 1]));
+        assert!(v.get("point").is_none());
+        let svg = dir.path().join("lp.svg");
+        compgeom()
+            .args(["lp", p, "--maximize", "1,2", "--svg", svg.to_str().unwrap()])
+            .assert()
+            .success();
+        assert!(fs::read_to_string(&svg).unwrap().contains("optimum"));
+    }
+
+    #[test]
+    fn lp_bad_input() {
+        let (_dir, path) = input("t.txt", TRIANGLE);
+        let p = path.to_str().unwrap();
+        // Zero objective, bad objective, wrong number of fields.
+        compgeom()
+            .args(["lp", p, "--maximize", "0,0"])
+            .assert()
+            .code(2);
+        compgeom()
+            .args(["lp", p, "--maximize", "1,x"])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("--maximize"));
+        compgeom()
+            .args(["lp", p, "--maximize", "1,2,3"])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("t.txt:2"));
+        compgeom().args(["lp", p]).assert().code(2);
+    }
+}

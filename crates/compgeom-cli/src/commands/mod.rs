@@ -1,4 +1,6 @@
 //! One module per command, each with its args struct and `run`. See `cli.rs` for how a
 //! command adds itself.
 
+pub mod halfplanes;
 pub mod hull;
+pub mod lp;
