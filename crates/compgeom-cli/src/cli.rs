@@ -53,6 +53,9 @@ pub enum Command {
     /// Linear programming: maximize c·x subject to a·x <= b (book chapter 4).
     #[command(after_long_help = crate::commands::lp::JSON_HELP)]
     Lp(crate::commands::lp::LpArgs),
+    /// Smallest disc enclosing points in the plane (book chapter 4).
+    #[command(after_long_help = crate::commands::enclose::JSON_HELP)]
+    Enclose(crate::commands::enclose::EncloseArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

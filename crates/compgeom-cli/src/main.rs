@@ -33,6 +33,7 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
         cli::Command::Hull(args) => commands::hull::run(&args),
         cli::Command::Halfplanes(args) => commands::halfplanes::run(&args),
         cli::Command::Lp(args) => commands::lp::run(&args),
+        cli::Command::Enclose(args) => commands::enclose::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

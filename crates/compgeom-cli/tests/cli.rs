@@ -705,3 +705,44 @@ mod lp_commands {
         compgeom().args(["lp", p]).assert().code(2);
     }
 }
+
+/// `enclose` (chapter 4).
+mod lp_enclose_command {
+    use super::*;
+
+    #[test]
+    fn enclose_json_svg_and_errors() {
+        let (dir, path) = input("p.csv", "0,0\n4,0\n2,1\n1,-1\n");
+        let svg = dir.path().join("d.svg");
+        let out = compgeom()
+            .args([
+                "enclose",
+                path.to_str().unwrap(),
+                "--verify",
+                "--svg",
+                svg.to_str().unwrap(),
+            ])
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        let v: Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(v["center"], serde_json::json!([2.0, 0.0]));
+        assert_eq!(v["radius"], 2.0);
+        assert_eq!(v["support"].as_array().unwrap().len(), 2);
+        assert_eq!(v["verified"], true);
+        assert!(fs::read_to_string(&svg).unwrap().contains("support points"));
+        let (_d, bad) = input("bad.csv", "0,0\n1,zz\n");
+        compgeom()
+            .args(["enclose", bad.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("bad.csv:2"));
+        let (_d, empty) = input("empty.csv", "# nothing\n");
+        compgeom()
+            .args(["enclose", empty.to_str().unwrap()])
+            .assert()
+            .code(2);
+    }
+}

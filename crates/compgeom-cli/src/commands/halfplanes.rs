@@ -101,11 +101,13 @@ pub fn run(args: &HalfplanesArgs) -> Result<(), CliError> {
                 RegionKind::Polygon => {
                     Shape::Polygon(Polygon::new(region.vertices.clone(), Vec::new()))
                 }
-                k => return Err(CliError::bad_input(format!(
+                k => {
+                    return Err(CliError::bad_input(format!(
                     "the intersection is a {} (unbounded): it has no {} form; use --format json",
                     k.name(),
                     format.name()
-                ))),
+                )))
+                }
             };
             write_shape(&shape, format)?
         }

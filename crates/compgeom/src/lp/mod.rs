@@ -31,7 +31,7 @@
 //! [`Error::NonFinite`](crate::Error::NonFinite) naming the constraint.
 
 // mod casting;
-// mod enclosing_disc;
+mod enclosing_disc;
 mod exact;
 mod halfplanes;
 mod lp2d;
@@ -39,7 +39,7 @@ mod lp2d;
 mod read;
 
 // pub use casting::{castability, Castability, TopFacet};
-// pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
+pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, Region, RegionKind};
 pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
 // pub use lpd::{lp_d, LpSolution};
