@@ -49,7 +49,7 @@ fn brute(pts: &[Point2]) -> Q {
     let mut best: Option<Q> = None;
     let mut consider = |s: &[Point2]| {
         if let Some((c, r2)) = disc_of(s) {
-            if encloses(&c, &r2, pts) && best.as_ref().is_none_or(|b| r2 < *b) {
+            if encloses(&c, &r2, pts) && best.as_ref().map_or(true, |b| r2 < *b) {
                 best = Some(r2);
             }
         }
