@@ -698,7 +698,7 @@ mod lp_commands {
             .code(2)
             .stderr(predicate::str::contains("--maximize"));
         compgeom()
-            .args(["lp", p, "--maximize", "1,2,3"])
+            .args(["lp", p, "--maximize", "1,2,3,4"])
             .assert()
             .code(2)
             .stderr(predicate::str::contains("t.txt:2"));
@@ -742,6 +742,39 @@ mod lp_enclose_command {
         let (_d, empty) = input("empty.csv", "# nothing\n");
         compgeom()
             .args(["enclose", empty.to_str().unwrap()])
+            .assert()
+            .code(2);
+    }
+}
+
+/// `lp` in three dimensions (chapter 4).
+mod lp_dim_command {
+    use super::*;
+
+    #[test]
+    fn lp_in_three_dimensions() {
+        let cube = "1 0 0 1\n-1 0 0 0\n0 1 0 1\n0 -1 0 0\n0 0 1 1\n0 0 -1 0\n";
+        let (_dir, path) = input("cube.txt", cube);
+        let out = compgeom()
+            .args(["lp", path.to_str().unwrap(), "--maximize", "1,1,1"])
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        let v: Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(v["status"], "optimal");
+        assert_eq!(v["point"], serde_json::json!([1.0, 1.0, 1.0]));
+        assert_eq!(v["value"], 3.0);
+        compgeom()
+            .args([
+                "lp",
+                path.to_str().unwrap(),
+                "--maximize",
+                "1,1,1",
+                "--svg",
+                "x.svg",
+            ])
             .assert()
             .code(2);
     }

@@ -8,7 +8,8 @@ use crate::output;
 use clap::Args;
 use compgeom::io::{write_shape, Shape};
 use compgeom::lp::{
-    intersect_halfplanes, lp2d, read_constraints, HalfPlane, Lp2Options, Lp2Solution,
+    intersect_halfplanes, lp2d, lp_d, read_constraints, HalfPlane, Lp2Options, Lp2Solution,
+    LpSolution,
 };
 use compgeom::render::{Layer, Style};
 use compgeom::{Point2, Segment2, Vector2};
@@ -128,10 +129,30 @@ fn solve(rows: &[Vec<f64>], c: &[f64], seed: u64) -> Result<LpJson, CliError> {
             },
         });
     }
-    Err(CliError::bad_input(format!(
-        "--maximize has {} coefficients: only two-dimensional programs are supported",
-        c.len()
-    )))
+    Ok(match lp_d(rows, c, seed)? {
+        LpSolution::Optimal {
+            point,
+            value,
+            constraints,
+        } => LpJson {
+            status: "optimal",
+            point: Some(point),
+            value: Some(value),
+            constraints: Some(constraints),
+            ..Default::default()
+        },
+        LpSolution::Unbounded { point, direction } => LpJson {
+            status: "unbounded",
+            point: Some(point),
+            ray: Some(direction),
+            ..Default::default()
+        },
+        LpSolution::Infeasible { certificate } => LpJson {
+            status: "infeasible",
+            certificate: Some(certificate),
+            ..Default::default()
+        },
+    })
 }
 
 /// Run `compgeom lp`.

@@ -35,14 +35,14 @@ mod enclosing_disc;
 mod exact;
 mod halfplanes;
 mod lp2d;
-// mod lpd;
+mod lpd;
 mod read;
 
 // pub use casting::{castability, Castability, TopFacet};
 pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, Region, RegionKind};
 pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
-// pub use lpd::{lp_d, LpSolution};
+pub use lpd::{lp_d, LpSolution};
 pub use read::{read_constraints, read_halfplanes};
 
 use crate::{Error, Result};
