@@ -282,15 +282,62 @@ pub fn lp_d(rows: &[Vec<f64>], objective: &[f64], seed: u64) -> Result<LpSolutio
             }
             continue;
         }
-        cons.push(Con {
-            a: r[..d].iter().map(|&a| rat(a)).collect(),
-            b: Mq::finite(rat(r[d])),
-            id: Some(i),
-        });
+        cons.push((
+            r[..d].iter().map(|&a| rat(a)).collect::<Vec<Q>>(),
+            rat(r[d]),
+            i,
+        ));
     }
+    let objective: Vec<Q> = objective.iter().map(|&c| rat(c)).collect();
+    let (x, v1, grow) = match run_exact(cons.clone(), &objective, seed) {
+        Exact::Infeasible(certificate) => return Ok(LpSolution::Infeasible { certificate }),
+        Exact::Solved { x, ray, grows } => (x, ray, grows),
+    };
+    let point: Vec<f64> = x.iter().map(to_f64).collect();
+    if grow {
+        let scale = v1.iter().map(|q| q.abs()).max().unwrap_or_else(Q::zero);
+        let direction = v1.iter().map(|q| to_f64(&(q / &scale))).collect();
+        return Ok(LpSolution::Unbounded { point, direction });
+    }
+    let c = &objective;
+    let value: Q = c.iter().zip(&x).map(|(a, b)| a * b).sum();
+    let mut constraints: Vec<usize> = cons
+        .iter()
+        .filter(|(a, b, _)| a.iter().zip(&x).map(|(a, b)| a * b).sum::<Q>() == *b)
+        .map(|(_, _, id)| *id)
+        .collect();
+    constraints.sort_unstable();
+    Ok(LpSolution::Optimal {
+        point,
+        value: to_f64(&value),
+        constraints,
+    })
+}
+
+/// The exact outcome of [`run_exact`].
+pub(crate) enum Exact {
+    /// Input constraints that contradict.
+    Infeasible(Vec<usize>),
+    /// `x` feasible; `ray` the direction the symbolic optimum moves along (zero when the
+    /// lexicographic optimum is finite); `grows` when the objective increases along it.
+    Solved { x: Vec<Q>, ray: Vec<Q>, grows: bool },
+}
+
+/// Exact randomized LP over constraints `a·x <= b` (`(a, b, id)`); `x` is the
+/// lexicographically smallest optimum when it exists, else a feasible point on the ray.
+pub(crate) fn run_exact(rows: Vec<(Vec<Q>, Q, usize)>, objective: &[Q], seed: u64) -> Exact {
+    let d = objective.len();
+    let mut cons: Vec<Con> = rows
+        .into_iter()
+        .map(|(a, b, id)| Con {
+            a,
+            b: Mq::finite(b),
+            id: Some(id),
+        })
+        .collect();
     Shuffler::new(seed).shuffle(&mut cons);
     // Objectives: c, then minimize x_1, x_2, ... (the book's lexicographic rule).
-    let mut objs = vec![objective.iter().map(|&c| rat(c)).collect::<Vec<Q>>()];
+    let mut objs = vec![objective.to_vec()];
     for j in 0..d {
         let mut t = vec![Q::zero(); d];
         t[j] = Q::from_integer((-1).into());
@@ -302,13 +349,12 @@ pub fn lp_d(rows: &[Vec<f64>], objective: &[f64], seed: u64) -> Result<LpSolutio
             let mut certificate: Vec<usize> = cert.into_iter().flatten().collect();
             certificate.sort_unstable();
             certificate.dedup();
-            return Ok(LpSolution::Infeasible { certificate });
+            return Exact::Infeasible(certificate);
         }
     };
     let v0: Vec<Q> = v.iter().map(|x| x.c.clone()).collect();
     let v1: Vec<Q> = v.iter().map(|x| x.m.clone()).collect();
-    let c = &objs[0];
-    let grow: Q = c.iter().zip(&v1).map(|(a, b)| a * b).sum();
+    let grow: Q = objective.iter().zip(&v1).map(|(a, b)| a * b).sum();
     // v0 + t·v1 is feasible for all large t: the smallest such t >= 0.
     let mut t = Q::zero();
     for g in &cons {
@@ -322,22 +368,9 @@ pub fn lp_d(rows: &[Vec<f64>], objective: &[f64], seed: u64) -> Result<LpSolutio
         }
     }
     let x: Vec<Q> = v0.iter().zip(&v1).map(|(a, b)| a + &t * b).collect();
-    let point: Vec<f64> = x.iter().map(to_f64).collect();
-    if grow.is_positive() {
-        let scale = v1.iter().map(|q| q.abs()).max().unwrap_or_else(Q::zero);
-        let direction = v1.iter().map(|q| to_f64(&(q / &scale))).collect();
-        return Ok(LpSolution::Unbounded { point, direction });
+    Exact::Solved {
+        x,
+        ray: v1,
+        grows: grow.is_positive(),
     }
-    let value: Q = c.iter().zip(&x).map(|(a, b)| a * b).sum();
-    let mut constraints: Vec<usize> = cons
-        .iter()
-        .filter(|g| g.a.iter().zip(&x).map(|(a, b)| a * b).sum::<Q>() == g.b.c)
-        .filter_map(|g| g.id)
-        .collect();
-    constraints.sort_unstable();
-    Ok(LpSolution::Optimal {
-        point,
-        value: to_f64(&value),
-        constraints,
-    })
 }

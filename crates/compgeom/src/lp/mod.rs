@@ -30,7 +30,7 @@
 //! problem infeasible when `c < 0`. Non-finite numbers are rejected with
 //! [`Error::NonFinite`](crate::Error::NonFinite) naming the constraint.
 
-// mod casting;
+mod casting;
 mod enclosing_disc;
 mod exact;
 mod halfplanes;
@@ -38,7 +38,7 @@ mod lp2d;
 mod lpd;
 mod read;
 
-// pub use casting::{castability, Castability, TopFacet};
+pub use casting::{castability, Castability, TopFacet};
 pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, Region, RegionKind};
 pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
