@@ -56,6 +56,9 @@ pub enum Command {
     /// Smallest disc enclosing points in the plane (book chapter 4).
     #[command(after_long_help = crate::commands::enclose::JSON_HELP)]
     Enclose(crate::commands::enclose::EncloseArgs),
+    /// Castability of a polyhedron: top facets and removal directions (book chapter 4).
+    #[command(after_long_help = crate::commands::cast::JSON_HELP)]
+    Cast(crate::commands::cast::CastArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

@@ -34,6 +34,7 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
         cli::Command::Halfplanes(args) => commands::halfplanes::run(&args),
         cli::Command::Lp(args) => commands::lp::run(&args),
         cli::Command::Enclose(args) => commands::enclose::run(&args),
+        cli::Command::Cast(args) => commands::cast::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

@@ -779,3 +779,55 @@ mod lp_dim_command {
             .code(2);
     }
 }
+
+/// `cast` (chapter 4).
+mod lp_cast_command {
+    use super::*;
+
+    const CUBE: &str = "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n\
+4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+
+    #[test]
+    fn cube_json_svg_and_errors() {
+        let (dir, path) = input("cube.off", CUBE);
+        let svg = dir.path().join("c.svg");
+        let out = compgeom()
+            .args([
+                "cast",
+                path.to_str().unwrap(),
+                "--svg",
+                svg.to_str().unwrap(),
+                "--facet",
+                "1",
+            ])
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        let v: Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(v["castable"], true);
+        assert_eq!(v["input_facets"], 6);
+        let tops = v["top_facets"].as_array().unwrap();
+        assert_eq!(tops.len(), 6);
+        assert_eq!(tops[1]["facet"], 1);
+        assert_eq!(tops[1]["direction"], serde_json::json!([0.0, 0.0, 1.0]));
+        assert!(fs::read_to_string(&svg)
+            .unwrap()
+            .contains("removal directions"));
+        // Open mesh: exit 2 naming the file.
+        let open = CUBE.replace("8 6 0", "8 5 0").replace("4 3 0 4 7\n", "");
+        let (_d, bad) = input("open.off", &open);
+        compgeom()
+            .args(["cast", bad.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("open.off"));
+        let (_d, bad) = input("bad.off", "OFF\n1 1 0\n0 0 0\n3 0 1 2\n");
+        compgeom()
+            .args(["cast", bad.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("bad.off:4"));
+    }
+}
