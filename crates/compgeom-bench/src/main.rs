@@ -8,17 +8,19 @@
 
 mod hull;
 mod kernel;
+mod lp;
 mod util;
 
 use std::process::ExitCode;
 
 /// Every group, in the order `all` runs them.
-const GROUPS: &[&str] = &["kernel", "hull"];
+const GROUPS: &[&str] = &["kernel", "hull", "lp"];
 
 /// Run one group; `None` if the name is unknown.
 fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
     match name {
         "hull" => Some(hull::run(quick)),
+        "lp" => Some(lp::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

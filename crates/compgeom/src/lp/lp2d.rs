@@ -20,7 +20,9 @@
 //! a ray that runs toward smaller x, its apex is the only optimal vertex and is reported;
 //! when it is a whole line, the point of that line nearest the origin is reported.)
 
-use super::exact::{cross2_sign, cross_sign, meet_exact, parallel_side, rat, side, to_f64, Line};
+use super::exact::{
+    cross2_sign, cross_sign, meet_exact, parallel_side, rat, side, to_f64, Line, VertexFilter,
+};
 use super::{check_finite, HalfPlane, Shuffler};
 use crate::kernel::{Point2, Vector2};
 use crate::{Error, Result};
@@ -98,12 +100,18 @@ impl Solver {
 
     /// Run the incremental algorithm over `order` (box sides first).
     fn run(&self, order: &[usize], s: f64) -> std::result::Result<Vertex, Vec<usize>> {
+        let l = &self.lines;
         let mut v = self.corner(s);
+        let mut fast = VertexFilter::new(&l[v.0], &l[v.1]);
         for pos in 4..order.len() {
             let i = order[pos];
-            let l = &self.lines;
-            if side(&l[v.0], &l[v.1], &l[i]) == Ordering::Greater {
+            let out = match fast.as_ref().and_then(|f| f.side(&l[i])) {
+                Some(o) => o,
+                None => side(&l[v.0], &l[v.1], &l[i]),
+            };
+            if out == Ordering::Greater {
                 v = self.solve_1d(i, &order[..pos], s)?;
+                fast = VertexFilter::new(&l[v.0], &l[v.1]);
             }
         }
         Ok(v)
@@ -248,14 +256,23 @@ pub fn lp2d(
         lines.push(Line::input(h.a, h.b, h.c));
         orig.push(k);
     }
+    // Shuffle the constraints themselves (not an index list) so that every 1D scan over the
+    // earlier constraints reads memory in order.
+    let mut perm: Vec<usize> = (0..orig.len()).collect();
+    Shuffler::new(options.seed).shuffle(&mut perm);
+    let lines: Vec<Line> = lines[..4]
+        .iter()
+        .copied()
+        .chain(perm.iter().map(|&k| lines[4 + k]))
+        .collect();
+    let orig: Vec<usize> = perm.iter().map(|&k| orig[k]).collect();
     let solver = Solver {
         lines,
         orig,
         cx: objective.x,
         cy: objective.y,
     };
-    let mut order: Vec<usize> = (0..solver.lines.len()).collect();
-    Shuffler::new(options.seed).shuffle(&mut order[4..]);
+    let order: Vec<usize> = (0..solver.lines.len()).collect();
 
     let v = match solver.run(&order, -1.0) {
         Ok(v) => v,

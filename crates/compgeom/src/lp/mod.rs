@@ -47,6 +47,13 @@ pub use read::{read_constraints, read_halfplanes};
 
 use crate::{Error, Result};
 
+/// Number of decisions so far (all threads) that the floating-point filter of this module
+/// could not make and that went to exact rational arithmetic. For tests and benchmarks.
+#[doc(hidden)]
+pub fn exact_fallbacks() -> u64 {
+    exact::FALLBACKS.load(std::sync::atomic::Ordering::Relaxed)
+}
+
 /// The closed half-plane `a·x + b·y <= c`.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct HalfPlane {
