@@ -36,12 +36,16 @@ fn main() -> Result<(), compgeom::Error> {
         compgeom::lp::exact_fallbacks()
     );
 
-    let region = intersect_halfplanes(&hs[..100.min(n)], 1)?;
+    let m = 2000.min(n);
+    let before = compgeom::lp::exact_fallbacks();
+    let start = Instant::now();
+    let region = intersect_halfplanes(&hs[..m], 1)?;
     println!(
-        "intersection of the first {} half-planes: {} with {} corners",
-        100.min(n),
+        "intersection of the first {m} half-planes: {} with {} corners in {:?} ({} exact fallbacks)",
         region.kind.name(),
-        region.vertices.len()
+        region.vertices.len(),
+        start.elapsed(),
+        compgeom::lp::exact_fallbacks() - before
     );
 
     let pts: Vec<Point2> = (0..n)

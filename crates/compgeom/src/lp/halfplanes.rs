@@ -195,9 +195,13 @@ fn clip(lines: &[Line], poly: &mut Vec<Corner>, i: usize, sides: &mut Vec<Orderi
     }
     // A degenerate (two-corner) region crossed by the line yields the same point twice,
     // once on each of its two coincident edges: merge equal neighbours.
+    // (A corner is trivially on its own lines; testing those would only cost exact zeros.)
     let same = |a: &Corner, b: &Corner| {
-        side(&lines[a.v.0], &lines[a.v.1], &lines[b.v.0]) == Ordering::Equal
-            && side(&lines[a.v.0], &lines[a.v.1], &lines[b.v.1]) == Ordering::Equal
+        [b.v.0, b.v.1].iter().all(|&k| {
+            k == a.v.0
+                || k == a.v.1
+                || side(&lines[a.v.0], &lines[a.v.1], &lines[k]) == Ordering::Equal
+        })
     };
     let mut merged: Vec<Corner> = Vec::with_capacity(out.len());
     for c in out {
