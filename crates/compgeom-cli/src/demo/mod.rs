@@ -7,6 +7,7 @@
 //! `compgeom::render`, and saves each picture with [`Demo::figure`].
 
 mod hull;
+mod lp;
 pub mod samples;
 
 use crate::error::CliError;
@@ -28,7 +29,7 @@ pub struct DemoArgs {
 type SectionFn = fn(&Demo) -> Result<Section, CliError>;
 
 /// The sections of the gallery, in book order. A new command appends its own.
-const SECTIONS: &[SectionFn] = &[hull::section];
+const SECTIONS: &[SectionFn] = &[hull::section, lp::section];
 
 /// What a section needs: where to put its pictures.
 pub struct Demo {
