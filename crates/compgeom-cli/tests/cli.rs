@@ -657,8 +657,9 @@ mod lp_commands {
     fn lp_optimal_unbounded_infeasible() {
         let (dir, path) = input("t.txt", TRIANGLE);
         let p = path.to_str().unwrap();
-        let v = json(&["lp", p, "--maximize", "1,1"]);
+        let v = json(&["lp", p, "--maximize", "1,1", "--verify"]);
         assert_eq!(v["status"], "optimal");
+        assert_eq!(v["verified"], true);
         // The optimal edge from (0, 2) to (2, 0): the lexicographically smallest end.
         assert_eq!(pairs(&serde_json::json!([v["point"]])), vec![(0.0, 2.0)]);
         assert_eq!(v["value"], 2.0);

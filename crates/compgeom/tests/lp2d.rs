@@ -3,7 +3,7 @@
 
 mod lp_oracle;
 
-use compgeom::lp::{lp2d, HalfPlane, Lp2Options, Lp2Solution};
+use compgeom::lp::{lp2d, verify_lp2d, HalfPlane, Lp2Options, Lp2Solution};
 use compgeom::{Error, Point2, Vector2};
 use lp_oracle::*;
 use proptest::prelude::*;
@@ -15,6 +15,8 @@ fn solve(hs: &[HalfPlane], c: (f64, f64), seed: u64) -> Lp2Solution {
 /// Check the solver's answer against the oracle, exactly where the answer is exact.
 fn check(hs: &[HalfPlane], c: (f64, f64), seed: u64) -> Result<(), TestCaseError> {
     let got = solve(hs, c, seed);
+    verify_lp2d(hs, Vector2::new(c.0, c.1), &got)
+        .map_err(|e| TestCaseError::fail(e.to_string()))?;
     match (oracle_lp(hs, c), &got) {
         (Expected::Infeasible, Lp2Solution::Infeasible { certificate }) => {
             prop_assert!(!certificate.is_empty() && certificate.len() <= 3);
@@ -187,4 +189,39 @@ fn bad_input_is_an_error() {
     );
     let e = lp2d(&[], Vector2::new(0.0, 0.0), &Lp2Options::default()).unwrap_err();
     assert!(e.to_string().contains("zero"));
+}
+
+#[test]
+fn the_verifier_rejects_wrong_answers() {
+    let hs = [
+        HalfPlane::new(1.0, 0.0, 2.0),
+        HalfPlane::new(0.0, 1.0, 3.0),
+        HalfPlane::new(1.0, 1.0, 4.0),
+    ];
+    let c = Vector2::new(1.0, 1.0);
+    let good = solve(&hs, (1.0, 1.0), 0);
+    verify_lp2d(&hs, c, &good).unwrap();
+    // The corner of x <= 2 and y <= 3 is infeasible (x + y = 5 > 4).
+    let bad = Lp2Solution::Optimal {
+        point: Point2::new(2.0, 3.0),
+        value: 5.0,
+        constraints: vec![0, 1],
+    };
+    assert!(verify_lp2d(&hs, c, &bad).is_err());
+    // A feasible but not optimal corner: (2, 2) is optimal for (1, 1) but not for (0, 1).
+    let not_opt = Lp2Solution::Optimal {
+        point: Point2::new(2.0, 2.0),
+        value: 2.0,
+        constraints: vec![0, 2],
+    };
+    assert!(verify_lp2d(&hs, Vector2::new(0.0, 1.0), &not_opt).is_err());
+    let ray = Lp2Solution::Unbounded {
+        point: Point2::new(0.0, 0.0),
+        direction: Vector2::new(1.0, 0.0),
+    };
+    assert!(verify_lp2d(&hs, c, &ray).is_err());
+    let cert = Lp2Solution::Infeasible {
+        certificate: vec![0, 1],
+    };
+    assert!(verify_lp2d(&hs, c, &cert).is_err());
 }

@@ -3,7 +3,7 @@
 
 mod lp_oracle;
 
-use compgeom::lp::{intersect_halfplanes, HalfPlane, Region, RegionKind};
+use compgeom::lp::{intersect_halfplanes, verify_region, HalfPlane, Region, RegionKind};
 use compgeom::Point2;
 use lp_oracle::*;
 use num_traits::Zero;
@@ -56,6 +56,7 @@ fn expected_kind(hs: &[HalfPlane], nv: usize) -> RegionKind {
 
 fn check(hs: &[HalfPlane], seed: u64, edges: bool) -> Result<Region, TestCaseError> {
     let got = intersect_halfplanes(hs, seed).expect("valid input");
+    verify_region(hs, &got).map_err(|e| TestCaseError::fail(e.to_string()))?;
     let exact = vertices(hs);
     let kind = expected_kind(hs, exact.len());
     prop_assert_eq!(got.kind, kind, "vertices {:?}", got.vertices);
@@ -185,4 +186,20 @@ fn many_tangents_to_a_circle() {
     let mut cs = r.constraints.clone();
     cs.sort_unstable();
     assert_eq!(cs, (0..n).collect::<Vec<_>>());
+}
+
+#[test]
+fn the_verifier_rejects_wrong_regions() {
+    let hs = [
+        HalfPlane::new(-1.0, 0.0, 0.0),
+        HalfPlane::new(0.0, -1.0, 0.0),
+        HalfPlane::new(1.0, 1.0, 2.0),
+    ];
+    let mut r = intersect_halfplanes(&hs, 0).unwrap();
+    verify_region(&hs, &r).unwrap();
+    r.vertices[1] = Point2::new(2.0, 0.5);
+    assert!(verify_region(&hs, &r).is_err());
+    let mut r = intersect_halfplanes(&hs, 0).unwrap();
+    r.kind = RegionKind::Empty;
+    assert!(verify_region(&hs, &r).is_err());
 }

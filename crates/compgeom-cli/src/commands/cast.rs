@@ -57,6 +57,9 @@ struct CastJson<'a> {
 
 /// Run `compgeom cast`.
 pub fn run(args: &CastArgs) -> Result<(), CliError> {
+    if args.output.verify {
+        return Err(CliError::bad_input("cast has no --verify check"));
+    }
     let (text, name) = read_source(&args.input)?;
     let mesh = read_off(&text, &name)?;
     let result = castability(&mesh).map_err(|e| CliError::bad_input(format!("{name}: {e}")))?;

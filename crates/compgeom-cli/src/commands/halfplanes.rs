@@ -7,7 +7,9 @@ use crate::error::CliError;
 use crate::output;
 use clap::Args;
 use compgeom::io::{write_shape, Shape};
-use compgeom::lp::{intersect_halfplanes, read_halfplanes, HalfPlane, Region, RegionKind};
+use compgeom::lp::{
+    intersect_halfplanes, read_halfplanes, verify_region, HalfPlane, Region, RegionKind,
+};
 use compgeom::render::{Layer, Picture, Style};
 use compgeom::{Point2, Polygon, Segment2};
 use serde::Serialize;
@@ -27,6 +29,7 @@ JSON output (--format json, the default) is one object:
                               boundary order (for a polygon, constraint k runs from vertex k
                               to vertex k+1)
   input_constraints           number of half-planes read
+  verified     true; present only with --verify (a failed check exits 1 instead)
 
 Other formats print the region's geometry: a polygon, a segment (line string), a point or
 nothing; unbounded regions, rays and lines have no such form (use JSON).
@@ -58,6 +61,8 @@ struct RegionJson {
     vertices: Vec<[f64; 2]>,
     constraints: Vec<usize>,
     input_constraints: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    verified: Option<bool>,
 }
 
 /// Read the whole input (a file or `-`) as text; returns the text and its name for errors.
@@ -85,12 +90,16 @@ pub fn run(args: &HalfplanesArgs) -> Result<(), CliError> {
     let (text, name) = read_source(&args.input)?;
     let hs = read_halfplanes(&text, &name)?;
     let region = intersect_halfplanes(&hs, args.seed)?;
+    if args.output.verify {
+        verify_region(&hs, &region)?;
+    }
     let text = match args.output.format.geometry_format() {
         None => serde_json::to_string(&RegionJson {
             kind: region.kind.name(),
             vertices: region.vertices.iter().map(|p| [p.x, p.y]).collect(),
             constraints: region.constraints.clone(),
             input_constraints: hs.len(),
+            verified: args.output.verify.then_some(true),
         })
         .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?,
         Some(format) => {

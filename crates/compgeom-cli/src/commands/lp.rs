@@ -8,8 +8,8 @@ use crate::output;
 use clap::Args;
 use compgeom::io::{write_shape, Shape};
 use compgeom::lp::{
-    intersect_halfplanes, lp2d, lp_d, read_constraints, HalfPlane, Lp2Options, Lp2Solution,
-    LpSolution,
+    intersect_halfplanes, lp2d, lp_d, read_constraints, verify_lp2d, HalfPlane, Lp2Options,
+    Lp2Solution, LpSolution,
 };
 use compgeom::render::{Layer, Style};
 use compgeom::{Point2, Segment2, Vector2};
@@ -29,6 +29,7 @@ JSON output (--format json, the default) is one object:
   ray          [d1, ..]  unbounded: a direction with c·d > 0 keeping every constraint
   certificate  [i, ..]   infeasible: 0-based indices of constraints that alone contradict
   constraints  [i, ..]   optimal: the constraints that are tight at the optimal vertex
+  verified     true; only with --verify (two dimensions; a failed check exits 1)
 Fields that do not apply are left out.
 
 Other formats print the optimal point (or nothing), in two dimensions only.
@@ -72,6 +73,8 @@ struct LpJson {
     certificate: Option<Vec<usize>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     constraints: Option<Vec<usize>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    verified: Option<bool>,
 }
 
 /// Parse `c1,..,cd`.
@@ -97,13 +100,16 @@ pub fn parse_objective(s: &str) -> Result<Vec<f64>, CliError> {
 }
 
 /// Solve as the JSON object; two dimensions go to `lp2d`, others to `lp_d`.
-fn solve(rows: &[Vec<f64>], c: &[f64], seed: u64) -> Result<LpJson, CliError> {
+fn solve(rows: &[Vec<f64>], c: &[f64], seed: u64, verify: bool) -> Result<LpJson, CliError> {
     if c.len() == 2 {
         let hs: Vec<HalfPlane> = rows
             .iter()
             .map(|r| HalfPlane::new(r[0], r[1], r[2]))
             .collect();
         let sol = lp2d(&hs, Vector2::new(c[0], c[1]), &Lp2Options { seed })?;
+        if verify {
+            verify_lp2d(&hs, Vector2::new(c[0], c[1]), &sol)?;
+        }
         return Ok(match sol {
             Lp2Solution::Optimal {
                 point,
@@ -128,6 +134,11 @@ fn solve(rows: &[Vec<f64>], c: &[f64], seed: u64) -> Result<LpJson, CliError> {
                 ..Default::default()
             },
         });
+    }
+    if verify {
+        return Err(CliError::bad_input(
+            "--verify is available for two-dimensional programs only",
+        ));
     }
     Ok(match lp_d(rows, c, seed)? {
         LpSolution::Optimal {
@@ -160,7 +171,8 @@ pub fn run(args: &LpArgs) -> Result<(), CliError> {
     let c = parse_objective(&args.maximize)?;
     let (text, name) = read_source(&args.input)?;
     let rows = read_constraints(&text, &name, Some(c.len() + 1))?;
-    let result = solve(&rows, &c, args.seed)?;
+    let mut result = solve(&rows, &c, args.seed, args.output.verify)?;
+    result.verified = args.output.verify.then_some(true);
     let text = match args.output.format.geometry_format() {
         None => serde_json::to_string(&result)
             .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?,

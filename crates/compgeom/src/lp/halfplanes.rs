@@ -68,7 +68,9 @@ pub struct Region {
     /// segment: its two ends; for a ray: its apex; for a line: none.
     pub vertices: Vec<Point2>,
     /// The input constraints whose lines carry the boundary, in boundary order (for a
-    /// polygon, constraint `k` runs from `vertices[k]` to `vertices[k + 1]`).
+    /// polygon, constraint `k` runs from `vertices[k]` to `vertices[k + 1]`; for a point,
+    /// segment or ray, the constraints that cut off its ends are listed too, each before
+    /// the edge leaving that end).
     pub constraints: Vec<usize>,
     /// The whole boundary as corners `base + M·dir` of the region clipped to the symbolic
     /// box (`dir` zero for finite corners), counter-clockwise. Used for drawing.
@@ -262,20 +264,21 @@ fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Region {
         }
         outline.push((base, Vector2::new(to_f64(x1), to_f64(y1))));
         let e = poly[k].edge;
-        // A one-corner region has no edges; a point's "edge" is one of its lines.
+        if n <= 2 {
+            // A point, segment, ray or line: its corners are cut by constraints that carry
+            // no edge; list them too, before the edge leaving the corner.
+            let into = poly[(k + n - 1) % n].edge;
+            for l in [poly[k].v.0, poly[k].v.1] {
+                if (n == 1 || (l != e && l != into)) && !lines[l].is_box() {
+                    constraints.push(orig[l - 4]);
+                }
+            }
+        }
         if !lines[e].is_box() && n > 1 {
             constraints.push(orig[e - 4]);
         }
     }
-    if n == 1 {
-        let c = poly[0];
-        constraints.extend(
-            [c.v.0, c.v.1]
-                .iter()
-                .filter(|&&l| l >= 4)
-                .map(|&l| orig[l - 4]),
-        );
-    }
+    constraints.dedup();
     Region {
         kind,
         vertices,

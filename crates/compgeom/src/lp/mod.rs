@@ -37,6 +37,7 @@ mod halfplanes;
 mod lp2d;
 mod lpd;
 mod read;
+mod verify;
 
 pub use casting::{castability, Castability, TopFacet};
 pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
@@ -44,6 +45,7 @@ pub use halfplanes::{intersect_halfplanes, Region, RegionKind};
 pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
 pub use lpd::{lp_d, LpSolution};
 pub use read::{read_constraints, read_halfplanes};
+pub use verify::{verify_lp2d, verify_region};
 
 use crate::{Error, Result};
 
