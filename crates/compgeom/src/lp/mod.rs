@@ -6,7 +6,8 @@
 //! | [`intersect_halfplanes`] | §4.2 half-plane intersection | randomized incremental clipping of a symbolic box | expected O(n·h), h the size of the intermediate regions (worst case O(n²)) |
 //! | [`lp_d`] | §4.5 RANDOMIZEDLP | recursive randomized incremental, exact rationals | expected O(d!·n) |
 //! | [`smallest_enclosing_disc`] | §4.7 MINIDISC | randomized incremental, exact `incircle`/`orient2d` | expected O(n) |
-//! | [`castability`] | §4.1 casting | per top facet a 2D feasibility problem (Lemma 4.1) | O(n²) expected |
+//! | [`castability`] | §4.1 casting | per top facet a feasibility problem (Lemma 4.1), exact rational LP | O(n²) expected |
+//! | [`verify_lp2d`], [`verify_region`], [`verify_enclosing_disc`] | | exact checks of a claimed answer | O(n) / O(n·h) / O(n) |
 //!
 //! # Input
 //!
@@ -28,7 +29,7 @@
 //! Parallel, identical and redundant constraints are ordinary input. A constraint with a
 //! zero normal (`0·x + 0·y <= c`) is always true when `c >= 0` and ignored, and makes the
 //! problem infeasible when `c < 0`. Non-finite numbers are rejected with
-//! [`Error::NonFinite`](crate::Error::NonFinite) naming the constraint.
+//! [`Error::NonFinite`] naming the constraint.
 
 mod casting;
 mod enclosing_disc;
