@@ -83,7 +83,7 @@ fn grid_point() -> impl Strategy<Value = Point2> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(300))]
+    #![proptest_config(ProptestConfig::with_cases(150))]
 
     #[test]
     fn small_grid_sets_with_duplicates(pts in prop::collection::vec(grid_point(), 1..12), seed in any::<u64>()) {
