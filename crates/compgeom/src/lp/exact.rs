@@ -90,6 +90,33 @@ impl Num for Filt {
     }
 }
 
+impl Filt {
+    /// A value known only to lie within `err` of `v`.
+    pub(crate) fn approx(v: f64, err: f64) -> Filt {
+        Filt { v, e: err }
+    }
+
+    /// An upper bound on the exact value (`+inf` if unknown).
+    pub(crate) fn upper(&self) -> f64 {
+        let u = self.v + self.e * SAFETY;
+        if u.is_nan() {
+            f64::INFINITY
+        } else {
+            u + u.abs() * 4.0 * U + ETA
+        }
+    }
+
+    /// A lower bound on the exact value (`-inf` if unknown).
+    pub(crate) fn lower(&self) -> f64 {
+        let l = self.v - self.e * SAFETY;
+        if l.is_nan() {
+            f64::NEG_INFINITY
+        } else {
+            l - l.abs() * 4.0 * U - ETA
+        }
+    }
+}
+
 /// An exact rational value.
 #[derive(Debug, Clone)]
 pub(crate) struct Ex(pub(crate) BigRational);

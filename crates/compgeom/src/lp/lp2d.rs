@@ -21,7 +21,8 @@
 //! when it is a whole line, the point of that line nearest the origin is reported.)
 
 use super::exact::{
-    cross2_sign, cross_sign, meet_exact, parallel_side, rat, side, to_f64, Line, VertexFilter,
+    cross2_sign, cross_sign, meet_exact, parallel_side, rat, side, to_f64, Filt, Line, Num,
+    VertexFilter,
 };
 use super::{check_finite, HalfPlane, Shuffler};
 use crate::kernel::{Point2, Vector2};
@@ -59,7 +60,8 @@ pub enum Lp2Solution {
     },
     /// The objective grows without bound.
     Unbounded {
-        /// A feasible point (nearest `f64`) from which `direction` stays feasible.
+        /// A feasible point (nearest `f64` of an exact feasible point) from which
+        /// `direction` stays feasible.
         point: Point2,
         /// A direction `d` with `c·d > 0` and `a_i·d <= 0` for every constraint (exact:
         /// either a constraint line's direction or a box diagonal `(±1, ±1)`).
@@ -331,15 +333,56 @@ fn unbounded(
             Vector2::new(dx, dy)
         }
     };
-    // v0 + M·v1 is feasible for all large M; the smallest such M >= 0 gives a feasible point.
+    // v0 + M·v1 is feasible for every M >= need_k = (n_k·v0 - c_k) / (-n_k·v1) (for each k
+    // with n_k·v1 < 0). Any M above all of them gives a feasible point: bound each need_k
+    // from above in interval arithmetic and take the exact value only where the interval
+    // of the denominator is not clearly positive (rare), so the pass stays O(n) in f64.
+    let enclose = |q: &BigRational| {
+        let v = to_f64(q);
+        Filt::approx(v, v.abs() * f64::EPSILON + f64::MIN_POSITIVE)
+    };
+    let (fx0, fy0, fx1, fy1) = (enclose(&x0), enclose(&y0), enclose(&x1), enclose(&y1));
+    let mut bound = 0.0f64;
     let mut m = BigRational::zero();
     for li in &l[4..] {
+        let (a, b) = (Filt::val(li.a), Filt::val(li.b));
+        let den = a.mul(&fx1).add(&b.mul(&fy1)); // n·v1: we need -den > 0
+        let num = a.mul(&fx0).add(&b.mul(&fy0)).sub(&Filt::val(li.c));
+        if den.upper() < 0.0 && num.upper().is_finite() {
+            if num.upper() > 0.0 {
+                // need <= num_hi / (-den_hi), rounded up.
+                let q = num.upper() / (-den.upper());
+                bound = bound.max(q + q.abs() * 4.0 * f64::EPSILON);
+            }
+            continue;
+        }
+        if den.lower() > 0.0 {
+            continue; // n·v1 > 0 cannot happen for a feasible ray; nothing to bound.
+        }
         let (a, b) = (rat(li.a), rat(li.b));
         let slope = &a * &x1 + &b * &y1;
         if slope.is_negative() {
             let need = (&a * &x0 + &b * &y0 - rat(li.c)) / (-slope);
             if need > m {
                 m = need;
+            }
+        }
+    }
+    if bound.is_finite() {
+        let b = rat(bound);
+        if b > m {
+            m = b;
+        }
+    } else {
+        // The f64 bound overflowed: fall back to the exact maximum over all constraints.
+        for li in &l[4..] {
+            let (a, b) = (rat(li.a), rat(li.b));
+            let slope = &a * &x1 + &b * &y1;
+            if slope.is_negative() {
+                let need = (&a * &x0 + &b * &y0 - rat(li.c)) / (-slope);
+                if need > m {
+                    m = need;
+                }
             }
         }
     }

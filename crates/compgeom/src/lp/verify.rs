@@ -1,10 +1,9 @@
 //! Exact verifiers for the two-dimensional results (DESIGN §2.4).
 
-use super::exact::{meet_exact, side, to_f64, Line};
+use super::exact::{cross2_sign, meet_exact, side, to_f64, Line};
 use super::{intersect_halfplanes, lp2d, HalfPlane, Lp2Options, Lp2Solution, Region, RegionKind};
 use crate::kernel::Vector2;
 use crate::{Error, Result};
-use num_rational::BigRational as Q;
 use num_traits::{Signed, Zero};
 use std::cmp::Ordering;
 
@@ -84,12 +83,13 @@ pub fn verify_lp2d(hs: &[HalfPlane], objective: Vector2, solution: &Lp2Solution)
             _ => fail("an optimum needs one or two defining constraints".into()),
         },
         Lp2Solution::Unbounded { direction, .. } => {
-            let (dx, dy) = (q(direction.x), q(direction.y));
-            if (&cx * &dx + &cy * &dy) <= Q::zero() {
+            // u·d as the cross product (ux, uy) × (-dy, dx), decided exactly.
+            let dot = |ux: f64, uy: f64| cross2_sign(ux, uy, -direction.y, direction.x);
+            if dot(objective.x, objective.y) != Ordering::Greater {
                 return fail("the ray does not improve the objective".into());
             }
             for (k, h) in hs.iter().enumerate() {
-                if q(h.a) * &dx + q(h.b) * &dy > Q::zero() {
+                if dot(h.a, h.b) == Ordering::Greater {
                     return fail(format!("the ray leaves constraint {k}"));
                 }
             }
