@@ -9,13 +9,14 @@
 mod hull;
 mod intersect;
 mod kernel;
+mod lp;
 mod range;
 mod util;
 
 use std::process::ExitCode;
 
 /// Every group, in the order `all` runs them.
-const GROUPS: &[&str] = &["kernel", "hull", "intersect", "range"];
+const GROUPS: &[&str] = &["kernel", "hull", "intersect", "lp", "range"];
 
 /// Run one group; `None` if the name is unknown.
 fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
@@ -23,6 +24,7 @@ fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
         "hull" => Some(hull::run(quick)),
         "intersect" => Some(intersect::run(quick)),
         "range" => Some(range::run(quick)),
+        "lp" => Some(lp::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

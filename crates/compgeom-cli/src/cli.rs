@@ -59,6 +59,18 @@ pub enum Command {
     /// Windowing: segments meeting query rectangles (book chapter 10).
     #[command(after_long_help = crate::commands::window::JSON_HELP)]
     Window(WindowArgs),
+    /// Intersection of half-planes a·x + b·y <= c (book chapter 4).
+    #[command(after_long_help = crate::commands::halfplanes::JSON_HELP)]
+    Halfplanes(crate::commands::halfplanes::HalfplanesArgs),
+    /// Linear programming: maximize c·x subject to a·x <= b (book chapter 4).
+    #[command(after_long_help = crate::commands::lp::JSON_HELP)]
+    Lp(crate::commands::lp::LpArgs),
+    /// Smallest disc enclosing points in the plane (book chapter 4).
+    #[command(after_long_help = crate::commands::enclose::JSON_HELP)]
+    Enclose(crate::commands::enclose::EncloseArgs),
+    /// Castability of a polyhedron: top facets and removal directions (book chapter 4).
+    #[command(after_long_help = crate::commands::cast::JSON_HELP)]
+    Cast(crate::commands::cast::CastArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

@@ -34,6 +34,10 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
         cli::Command::Intersect(args) => commands::intersect::run(&args),
         cli::Command::Range(args) => commands::range::run(&args),
         cli::Command::Window(args) => commands::window::run(&args),
+        cli::Command::Halfplanes(args) => commands::halfplanes::run(&args),
+        cli::Command::Lp(args) => commands::lp::run(&args),
+        cli::Command::Enclose(args) => commands::enclose::run(&args),
+        cli::Command::Cast(args) => commands::cast::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

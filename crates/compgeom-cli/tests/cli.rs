@@ -864,3 +864,283 @@ mod range_commands {
         );
     }
 }
+
+/// Chapter 4 commands: `halfplanes`, `lp`, `enclose`, `cast`.
+mod lp_commands {
+    use super::*;
+
+    fn json(args: &[&str]) -> Value {
+        let out = compgeom()
+            .args(args)
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        serde_json::from_slice(&out).expect("JSON")
+    }
+
+    fn pairs(v: &Value) -> Vec<(f64, f64)> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|p| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap()))
+            .collect()
+    }
+
+    const TRIANGLE: &str =
+        "# x >= 0, y >= 0, x + y <= 2, redundant x <= 5\n-1 0 0\n0 -1 0\n1,1,2\n1 0 5\n";
+
+    #[test]
+    fn halfplanes_polygon_json_and_svg() {
+        let (dir, path) = input("t.txt", TRIANGLE);
+        let svg = dir.path().join("r.svg");
+        let v = json(&[
+            "halfplanes",
+            path.to_str().unwrap(),
+            "--svg",
+            svg.to_str().unwrap(),
+        ]);
+        assert_eq!(v["kind"], "polygon");
+        assert_eq!(
+            pairs(&v["vertices"]),
+            vec![(0.0, 0.0), (2.0, 0.0), (0.0, 2.0)]
+        );
+        assert_eq!(v["constraints"], serde_json::json!([1, 2, 0]));
+        assert_eq!(v["input_constraints"], 4);
+        let text = fs::read_to_string(&svg).unwrap();
+        assert!(
+            text.starts_with("<") && text.contains("<svg") && text.trim_end().ends_with("</svg>")
+        );
+    }
+
+    #[test]
+    fn halfplanes_every_kind() {
+        let cases = [
+            ("1 0 0\n-1 0 -1\n", "empty"),
+            ("1 1 0\n-1 1 0\n0 -1 0\n", "point"),
+            ("1 0 0\n-1 0 0\n0 1 1\n0 -1 1\n", "segment"),
+            ("1 0 0\n-1 0 0\n0 1 0\n", "ray"),
+            ("1 0 0\n-1 0 0\n", "line"),
+            ("0 1 0\n", "unbounded"),
+        ];
+        for (text, kind) in cases {
+            let (_dir, path) = input("h.txt", text);
+            let v = json(&["halfplanes", path.to_str().unwrap()]);
+            assert_eq!(v["kind"], kind, "{text}");
+        }
+        // Geometry formats refuse unbounded results (exit 2) and print bounded ones.
+        let (_dir, path) = input("h.txt", "0 1 0\n");
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap(), "--format", "wkt"])
+            .assert()
+            .code(2);
+        let (_dir, path) = input("t.txt", TRIANGLE);
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap(), "--format", "wkt"])
+            .assert()
+            .success()
+            .stdout(predicate::str::starts_with("POLYGON"));
+    }
+
+    #[test]
+    fn halfplanes_bad_input_names_file_and_line() {
+        let (_dir, path) = input("bad.txt", "1 0 1\n\n1 x 2\n");
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("bad.txt:3"));
+        let (_dir, path) = input("short.txt", "1 0\n");
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("short.txt:1"));
+        let (_dir, path) = input("nan.txt", "1 0 nan\n");
+        compgeom()
+            .args(["halfplanes", path.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("nan.txt:1"));
+    }
+
+    #[test]
+    fn lp_optimal_unbounded_infeasible() {
+        let (dir, path) = input("t.txt", TRIANGLE);
+        let p = path.to_str().unwrap();
+        let v = json(&["lp", p, "--maximize", "1,1", "--verify"]);
+        assert_eq!(v["status"], "optimal");
+        assert_eq!(v["verified"], true);
+        // The optimal edge from (0, 2) to (2, 0): the lexicographically smallest end.
+        assert_eq!(pairs(&serde_json::json!([v["point"]])), vec![(0.0, 2.0)]);
+        assert_eq!(v["value"], 2.0);
+        let v = json(&["lp", p, "--maximize=-1,-1", "--seed", "5"]);
+        assert_eq!(pairs(&serde_json::json!([v["point"]])), vec![(0.0, 0.0)]);
+        let (_d, open) = input("open.txt", "0 1 0\n");
+        let v = json(&["lp", open.to_str().unwrap(), "--maximize=1,-1"]);
+        assert_eq!(v["status"], "unbounded");
+        let ray = &v["ray"];
+        assert!(ray[0].as_f64().unwrap() - ray[1].as_f64().unwrap() > 0.0);
+        assert!(ray[1].as_f64().unwrap() <= 0.0);
+        let (_d, none) = input("none.txt", "1 0 0\n-1 0 -1\n0 1 4\n");
+        let v = json(&["lp", none.to_str().unwrap(), "--maximize", "0,1"]);
+        assert_eq!(v["status"], "infeasible");
+        assert_eq!(v["certificate"], serde_json::json!([0, 1]));
+        assert!(v.get("point").is_none());
+        let svg = dir.path().join("lp.svg");
+        compgeom()
+            .args(["lp", p, "--maximize", "1,2", "--svg", svg.to_str().unwrap()])
+            .assert()
+            .success();
+        assert!(fs::read_to_string(&svg).unwrap().contains("optimum"));
+    }
+
+    #[test]
+    fn lp_bad_input() {
+        let (_dir, path) = input("t.txt", TRIANGLE);
+        let p = path.to_str().unwrap();
+        // Zero objective, bad objective, wrong number of fields.
+        compgeom()
+            .args(["lp", p, "--maximize", "0,0"])
+            .assert()
+            .code(2);
+        compgeom()
+            .args(["lp", p, "--maximize", "1,x"])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("--maximize"));
+        compgeom()
+            .args(["lp", p, "--maximize", "1,2,3,4"])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("t.txt:2"));
+        compgeom().args(["lp", p]).assert().code(2);
+    }
+}
+
+/// `enclose` (chapter 4).
+mod lp_enclose_command {
+    use super::*;
+
+    #[test]
+    fn enclose_json_svg_and_errors() {
+        let (dir, path) = input("p.csv", "0,0\n4,0\n2,1\n1,-1\n");
+        let svg = dir.path().join("d.svg");
+        let out = compgeom()
+            .args([
+                "enclose",
+                path.to_str().unwrap(),
+                "--verify",
+                "--svg",
+                svg.to_str().unwrap(),
+            ])
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        let v: Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(v["center"], serde_json::json!([2.0, 0.0]));
+        assert_eq!(v["radius"], 2.0);
+        assert_eq!(v["support"].as_array().unwrap().len(), 2);
+        assert_eq!(v["verified"], true);
+        assert!(fs::read_to_string(&svg).unwrap().contains("support points"));
+        let (_d, bad) = input("bad.csv", "0,0\n1,zz\n");
+        compgeom()
+            .args(["enclose", bad.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("bad.csv:2"));
+        let (_d, empty) = input("empty.csv", "# nothing\n");
+        compgeom()
+            .args(["enclose", empty.to_str().unwrap()])
+            .assert()
+            .code(2);
+    }
+}
+
+/// `lp` in three dimensions (chapter 4).
+mod lp_dim_command {
+    use super::*;
+
+    #[test]
+    fn lp_in_three_dimensions() {
+        let cube = "1 0 0 1\n-1 0 0 0\n0 1 0 1\n0 -1 0 0\n0 0 1 1\n0 0 -1 0\n";
+        let (_dir, path) = input("cube.txt", cube);
+        let out = compgeom()
+            .args(["lp", path.to_str().unwrap(), "--maximize", "1,1,1"])
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        let v: Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(v["status"], "optimal");
+        assert_eq!(v["point"], serde_json::json!([1.0, 1.0, 1.0]));
+        assert_eq!(v["value"], 3.0);
+        compgeom()
+            .args([
+                "lp",
+                path.to_str().unwrap(),
+                "--maximize",
+                "1,1,1",
+                "--svg",
+                "x.svg",
+            ])
+            .assert()
+            .code(2);
+    }
+}
+
+/// `cast` (chapter 4).
+mod lp_cast_command {
+    use super::*;
+
+    const CUBE: &str = "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n\
+4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+
+    #[test]
+    fn cube_json_svg_and_errors() {
+        let (dir, path) = input("cube.off", CUBE);
+        let svg = dir.path().join("c.svg");
+        let out = compgeom()
+            .args([
+                "cast",
+                path.to_str().unwrap(),
+                "--svg",
+                svg.to_str().unwrap(),
+                "--facet",
+                "1",
+            ])
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        let v: Value = serde_json::from_slice(&out).unwrap();
+        assert_eq!(v["castable"], true);
+        assert_eq!(v["input_facets"], 6);
+        let tops = v["top_facets"].as_array().unwrap();
+        assert_eq!(tops.len(), 6);
+        assert_eq!(tops[1]["facet"], 1);
+        assert_eq!(tops[1]["direction"], serde_json::json!([0.0, 0.0, 1.0]));
+        assert!(fs::read_to_string(&svg)
+            .unwrap()
+            .contains("removal directions"));
+        // Open mesh: exit 2 naming the file.
+        let open = CUBE.replace("8 6 0", "8 5 0").replace("4 3 0 4 7\n", "");
+        let (_d, bad) = input("open.off", &open);
+        compgeom()
+            .args(["cast", bad.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("open.off"));
+        let (_d, bad) = input("bad.off", "OFF\n1 1 0\n0 0 0\n3 0 1 2\n");
+        compgeom()
+            .args(["cast", bad.to_str().unwrap()])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("bad.off:4"));
+    }
+}

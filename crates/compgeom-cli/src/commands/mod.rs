@@ -1,7 +1,11 @@
 //! One module per command, each with its args struct and `run`. See `cli.rs` for how a
 //! command adds itself.
 
+pub mod cast;
+pub mod enclose;
+pub mod halfplanes;
 pub mod hull;
 pub mod intersect;
+pub mod lp;
 pub mod range;
 pub mod window;

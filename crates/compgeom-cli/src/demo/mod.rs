@@ -8,6 +8,7 @@
 
 mod hull;
 mod intersect;
+mod lp;
 mod range;
 pub mod samples;
 
@@ -30,7 +31,12 @@ pub struct DemoArgs {
 type SectionFn = fn(&Demo) -> Result<Section, CliError>;
 
 /// The sections of the gallery, in book order. A new command appends its own.
-const SECTIONS: &[SectionFn] = &[hull::section, intersect::section, range::section];
+const SECTIONS: &[SectionFn] = &[
+    hull::section,
+    intersect::section,
+    lp::section,
+    range::section,
+];
 
 /// What a section needs: where to put its pictures.
 pub struct Demo {

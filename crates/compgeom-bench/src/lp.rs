@@ -1,0 +1,250 @@
+//! Chapter 4: 2D linear programming, half-plane intersection and the smallest enclosing
+//! disc.
+//!
+//! - `lp2d` (exact, randomized incremental, expected O(n)) against microlp (a general
+//!   simplex solver, f64) and against a scan-based O(n log n) half-plane intersection
+//!   (sort by angle + deque, plain f64, written here) followed by a pass over its corners.
+//! - `intersect_halfplanes` (exact, incremental clipping) against the same scan.
+//! - `smallest_enclosing_disc` (exact MINIDISC): geo 0.33 has no minimum bounding circle,
+//!   so the peer is the same MINIDISC in plain f64 (written here): the price of exactness.
+//!
+//! Input: constraints tangent to the unit circle at random angles, offset by up to 1e-3
+//! (every constraint can matter), random objective; points uniform in a disc.
+//! Answers are compared once, outside the clock.
+
+use crate::util::{best_of, ms, Rng};
+use compgeom::lp::{
+    intersect_halfplanes, lp2d, smallest_enclosing_disc, HalfPlane, Lp2Options, Lp2Solution,
+};
+use compgeom::{Point2, Vector2};
+use microlp::{ComparisonOp, OptimizationDirection, Problem};
+
+fn constraints(n: usize, seed: u64) -> Vec<HalfPlane> {
+    let mut r = Rng::new(seed);
+    (0..n)
+        .map(|_| {
+            let t = r.unit() * std::f64::consts::TAU;
+            HalfPlane::new(t.cos(), t.sin(), 1.0 + 1e-3 * r.unit())
+        })
+        .collect()
+}
+
+fn microlp_value(hs: &[HalfPlane], c: (f64, f64)) -> Result<f64, String> {
+    let mut p = Problem::new(OptimizationDirection::Maximize);
+    let x = p.add_var(c.0, (f64::NEG_INFINITY, f64::INFINITY));
+    let y = p.add_var(c.1, (f64::NEG_INFINITY, f64::INFINITY));
+    for h in hs {
+        p.add_constraint([(x, h.a), (y, h.b)], ComparisonOp::Le, h.c);
+    }
+    p.solve().map(|s| s.objective()).map_err(|e| e.to_string())
+}
+
+/// Half-plane intersection by the angular scan (plain f64; bounded input assumed).
+fn scan_hpi(hs: &[HalfPlane]) -> Vec<(f64, f64)> {
+    let mut v: Vec<(f64, HalfPlane)> = hs.iter().map(|h| (h.b.atan2(h.a), *h)).collect();
+    v.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // Of equal angles keep the tightest (smallest c / |n|).
+    let mut lines: Vec<HalfPlane> = Vec::with_capacity(v.len());
+    for (t, h) in v {
+        if let Some(last) = lines.last() {
+            if (last.b.atan2(last.a) - t).abs() < 1e-15 {
+                let (cl, ch) = (last.c / last.a.hypot(last.b), h.c / h.a.hypot(h.b));
+                if ch < cl {
+                    *lines.last_mut().unwrap() = h;
+                }
+                continue;
+            }
+        }
+        lines.push(h);
+    }
+    let meet = |p: &HalfPlane, q: &HalfPlane| {
+        let d = p.a * q.b - q.a * p.b;
+        ((p.c * q.b - q.c * p.b) / d, (p.a * q.c - q.a * p.c) / d)
+    };
+    let out = |h: &HalfPlane, p: (f64, f64)| h.a * p.0 + h.b * p.1 > h.c;
+    let mut dq: std::collections::VecDeque<HalfPlane> = Default::default();
+    for h in lines {
+        while dq.len() >= 2 && out(&h, meet(&dq[dq.len() - 1], &dq[dq.len() - 2])) {
+            dq.pop_back();
+        }
+        while dq.len() >= 2 && out(&h, meet(&dq[0], &dq[1])) {
+            dq.pop_front();
+        }
+        dq.push_back(h);
+    }
+    while dq.len() >= 3 && out(&dq[0], meet(&dq[dq.len() - 1], &dq[dq.len() - 2])) {
+        dq.pop_back();
+    }
+    while dq.len() >= 3 && out(&dq[dq.len() - 1], meet(&dq[0], &dq[1])) {
+        dq.pop_front();
+    }
+    let n = dq.len();
+    (0..n).map(|k| meet(&dq[k], &dq[(k + 1) % n])).collect()
+}
+
+fn scan_lp(hs: &[HalfPlane], c: (f64, f64)) -> f64 {
+    scan_hpi(hs)
+        .iter()
+        .map(|p| c.0 * p.0 + c.1 * p.1)
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// MINIDISC in plain f64 (the peer for the price of exactness).
+fn f64_minidisc(p: &[Point2]) -> (f64, f64, f64) {
+    type D = (f64, f64, f64);
+    let inside = |d: &D, q: &Point2| (q.x - d.0).hypot(q.y - d.1) <= d.2 * (1.0 + 1e-12);
+    let two = |a: &Point2, b: &Point2| -> D {
+        (
+            (a.x + b.x) / 2.0,
+            (a.y + b.y) / 2.0,
+            (a.x - b.x).hypot(a.y - b.y) / 2.0,
+        )
+    };
+    let three = |a: &Point2, b: &Point2, c: &Point2| -> D {
+        let d = 2.0 * (a.x * (b.y - c.y) + b.x * (c.y - a.y) + c.x * (a.y - b.y));
+        let (na, nb, nc) = (
+            a.x * a.x + a.y * a.y,
+            b.x * b.x + b.y * b.y,
+            c.x * c.x + c.y * c.y,
+        );
+        let ux = (na * (b.y - c.y) + nb * (c.y - a.y) + nc * (a.y - b.y)) / d;
+        let uy = (na * (c.x - b.x) + nb * (a.x - c.x) + nc * (b.x - a.x)) / d;
+        (ux, uy, (a.x - ux).hypot(a.y - uy))
+    };
+    let mut d = two(&p[0], &p[1]);
+    for i in 2..p.len() {
+        if inside(&d, &p[i]) {
+            continue;
+        }
+        d = two(&p[0], &p[i]);
+        for j in 1..i {
+            if inside(&d, &p[j]) {
+                continue;
+            }
+            d = two(&p[i], &p[j]);
+            for k in 0..j {
+                if !inside(&d, &p[k]) {
+                    d = three(&p[i], &p[j], &p[k]);
+                }
+            }
+        }
+    }
+    d
+}
+
+fn disc_points(n: usize, seed: u64) -> Vec<Point2> {
+    let mut r = Rng::new(seed);
+    let mut v = Vec::with_capacity(n);
+    while v.len() < n {
+        let (x, y) = (2.0 * r.unit() - 1.0, 2.0 * r.unit() - 1.0);
+        if x * x + y * y < 1.0 {
+            v.push(Point2::new(x * 1e3, y * 1e3));
+        }
+    }
+    v
+}
+
+/// Run the group.
+pub fn run(quick: bool) -> Result<(), String> {
+    let sizes: &[usize] = if quick {
+        &[10_000, 100_000]
+    } else {
+        &[100_000, 1_000_000]
+    };
+    let c = (0.3, 0.7);
+    println!(
+        "2D linear programming: ms (best of 3), ratio = peer / compgeom (> 1 = compgeom faster)"
+    );
+    println!(
+        "{:>9} {:>12} {:>12} {:>8} {:>12} {:>8}",
+        "n", "compgeom", "microlp", "ratio", "scan hpi", "ratio"
+    );
+    let mut prev: Option<f64> = None;
+    for &n in sizes {
+        let hs = constraints(n, 42);
+        let ours = match lp2d(&hs, Vector2::new(c.0, c.1), &Lp2Options::default())
+            .map_err(|e| e.to_string())?
+        {
+            Lp2Solution::Optimal { value, .. } => value,
+            other => return Err(format!("unexpected {other:?}")),
+        };
+        let scan = scan_lp(&hs, c);
+        if (scan - ours).abs() > 1e-9 {
+            return Err(format!("scan disagrees: {scan} vs {ours}"));
+        }
+        let t_ours = best_of(3, || {
+            lp2d(&hs, Vector2::new(c.0, c.1), &Lp2Options::default())
+        });
+        let t_scan = best_of(3, || scan_lp(&hs, c));
+        // microlp: once per size (it is far slower); skipped where it would take minutes.
+        let micro = if n <= 100_000 {
+            let start = std::time::Instant::now();
+            let v = microlp_value(&hs, c)?;
+            if (v - ours).abs() > 1e-6 {
+                return Err(format!("microlp disagrees: {v} vs {ours}"));
+            }
+            Some(start.elapsed())
+        } else {
+            None
+        };
+        let micro_s = micro.map_or("skipped".to_string(), |t| format!("{:.1}", ms(t)));
+        let micro_r = micro.map_or("-".to_string(), |t| format!("{:.1}", ms(t) / ms(t_ours)));
+        println!(
+            "{:>9} {:>12.2} {:>12} {:>8} {:>12.2} {:>8.1}",
+            n,
+            ms(t_ours),
+            micro_s,
+            micro_r,
+            ms(t_scan),
+            ms(t_scan) / ms(t_ours)
+        );
+        if let Some(p) = prev {
+            println!(
+                "          compgeom growth x{:.1} for 10x the constraints",
+                ms(t_ours) / p
+            );
+        }
+        prev = Some(ms(t_ours));
+    }
+
+    let n = if quick { 2_000 } else { 10_000 };
+    let hs = constraints(n, 7);
+    let region = intersect_halfplanes(&hs, 0).map_err(|e| e.to_string())?;
+    let scan = scan_hpi(&hs);
+    if region.vertices.len() != scan.len() {
+        return Err(format!(
+            "corner counts differ: {} vs {}",
+            region.vertices.len(),
+            scan.len()
+        ));
+    }
+    let t_ours = best_of(2, || intersect_halfplanes(&hs, 0));
+    let t_scan = best_of(3, || scan_hpi(&hs));
+    println!(
+        "half-plane intersection, n = {n} ({} corners): compgeom {:.1} ms, scan {:.2} ms, ratio {:.2}",
+        scan.len(),
+        ms(t_ours),
+        ms(t_scan),
+        ms(t_scan) / ms(t_ours)
+    );
+
+    println!("smallest enclosing disc: ms (best of 3); geo 0.33 has no minimum bounding circle; peer = the same MINIDISC in plain f64");
+    for &n in sizes {
+        let pts = disc_points(n, 11);
+        let d = smallest_enclosing_disc(&pts, 0).map_err(|e| e.to_string())?;
+        let f = f64_minidisc(&pts);
+        if (d.radius - f.2).abs() > 1e-9 * d.radius {
+            return Err(format!("radius {} vs {}", d.radius, f.2));
+        }
+        let t_ours = best_of(3, || smallest_enclosing_disc(&pts, 0));
+        let t_f64 = best_of(3, || f64_minidisc(&pts));
+        println!(
+            "{:>9} compgeom {:>9.2}  plain f64 {:>9.2}  ratio {:.2}",
+            n,
+            ms(t_ours),
+            ms(t_f64),
+            ms(t_f64) / ms(t_ours)
+        );
+    }
+    Ok(())
+}

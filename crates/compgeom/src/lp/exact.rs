@@ -1,0 +1,482 @@
+//! Exact decisions on half-planes and on the constructed points where their lines meet.
+//!
+//! A line here is `a·x + b·y = c + m·M` where `a, b, c` are input `f64`s and `m` is 0 for
+//! input lines or ±1 for the four sides of a **symbolic bounding box** `|x|, |y| <= M`,
+//! with `M` larger than any finite quantity. The box makes every linear program bounded
+//! and every half-plane intersection a polygon; a result that still touches the box is
+//! unbounded, and the coefficient of `M` says in which direction.
+//!
+//! Every decision is the sign of a polynomial in the inputs (and in `M`, whose leading
+//! coefficient decides). It is evaluated first in `f64` with a rigorous running error bound
+//! ([`Filt`]); when that cannot tell, exactly with big rationals ([`Ex`]; every `f64`
+//! converts to a rational exactly).
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive, Zero};
+use std::cmp::Ordering;
+
+/// Ring operations on a filtered or an exact value.
+pub(crate) trait Num: Sized {
+    /// The exact value of a finite `f64`.
+    fn val(a: f64) -> Self;
+    /// `self + o`.
+    fn add(&self, o: &Self) -> Self;
+    /// `self - o`.
+    fn sub(&self, o: &Self) -> Self;
+    /// `self · o`.
+    fn mul(&self, o: &Self) -> Self;
+    /// The certain sign, or `None` when the filter cannot tell.
+    fn sign(&self) -> Option<Ordering>;
+}
+
+/// `f64` value `v` with a bound `e >= |v - exact|`.
+///
+/// With `u = 2^-53`: a sum or difference adds `u·|v|` to the propagated bounds, a product
+/// `|x|·e_y + |y|·e_x + e_x·e_y + u·|v|`; each step adds `ETA` for underflow. The final test
+/// asks `|v| > e·(1 + 2^-40)`, which covers the roundings of the bound itself for the
+/// short expressions used here (under 60 steps). Overflow gives `inf`/`NaN`: undecided.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Filt {
+    v: f64,
+    e: f64,
+}
+
+const U: f64 = 1.0 / 9_007_199_254_740_992.0;
+const ETA: f64 = 5e-320;
+const SAFETY: f64 = 1.0 + 1.0 / 1_099_511_627_776.0;
+
+impl Num for Filt {
+    #[inline]
+    fn val(a: f64) -> Self {
+        Filt { v: a, e: 0.0 }
+    }
+    #[inline]
+    fn add(&self, o: &Self) -> Self {
+        let v = self.v + o.v;
+        Filt {
+            v,
+            e: self.e + o.e + v.abs() * U + ETA,
+        }
+    }
+    #[inline]
+    fn sub(&self, o: &Self) -> Self {
+        let v = self.v - o.v;
+        Filt {
+            v,
+            e: self.e + o.e + v.abs() * U + ETA,
+        }
+    }
+    #[inline]
+    fn mul(&self, o: &Self) -> Self {
+        let v = self.v * o.v;
+        Filt {
+            v,
+            e: self.v.abs() * o.e + o.v.abs() * self.e + self.e * o.e + v.abs() * U + ETA,
+        }
+    }
+    #[inline]
+    fn sign(&self) -> Option<Ordering> {
+        let bound = self.e * SAFETY;
+        if self.v > bound {
+            Some(Ordering::Greater)
+        } else if -self.v > bound {
+            Some(Ordering::Less)
+        } else if self.v == 0.0 && self.e == 0.0 {
+            Some(Ordering::Equal)
+        } else {
+            None
+        }
+    }
+}
+
+impl Filt {
+    /// A value known only to lie within `err` of `v`.
+    pub(crate) fn approx(v: f64, err: f64) -> Filt {
+        Filt { v, e: err }
+    }
+
+    /// An upper bound on the exact value (`+inf` if unknown).
+    pub(crate) fn upper(&self) -> f64 {
+        let u = self.v + self.e * SAFETY;
+        if u.is_nan() {
+            f64::INFINITY
+        } else {
+            u + u.abs() * 4.0 * U + ETA
+        }
+    }
+
+    /// A lower bound on the exact value (`-inf` if unknown).
+    pub(crate) fn lower(&self) -> f64 {
+        let l = self.v - self.e * SAFETY;
+        if l.is_nan() {
+            f64::NEG_INFINITY
+        } else {
+            l - l.abs() * 4.0 * U - ETA
+        }
+    }
+}
+
+/// An exact rational value.
+#[derive(Debug, Clone)]
+pub(crate) struct Ex(pub(crate) BigRational);
+
+impl Num for Ex {
+    fn val(a: f64) -> Self {
+        Ex(rat(a))
+    }
+    fn add(&self, o: &Self) -> Self {
+        Ex(&self.0 + &o.0)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        Ex(&self.0 - &o.0)
+    }
+    fn mul(&self, o: &Self) -> Self {
+        Ex(&self.0 * &o.0)
+    }
+    fn sign(&self) -> Option<Ordering> {
+        Some(self.0.cmp(&BigRational::zero()))
+    }
+}
+
+/// The exact rational value of a finite `f64` (zero for a non-finite one; callers reject
+/// those first).
+pub(crate) fn rat(a: f64) -> BigRational {
+    BigRational::from_float(a).unwrap_or_else(|| BigRational::from_integer(BigInt::zero()))
+}
+
+/// The nearest `f64` to an exact rational (`±inf` beyond the range).
+pub(crate) fn to_f64(r: &BigRational) -> f64 {
+    r.to_f64().unwrap_or(if r.is_negative() {
+        f64::NEG_INFINITY
+    } else {
+        f64::INFINITY
+    })
+}
+
+/// Something whose sign is a polynomial in `f64` inputs.
+pub(crate) trait SignExpr {
+    /// Evaluate in the ring `N`.
+    fn eval<N: Num>(&self) -> N;
+}
+
+/// The exact sign: filter first, exact rationals when the filter cannot tell.
+#[inline]
+pub(crate) fn sign<E: SignExpr>(e: &E) -> Ordering {
+    match e.eval::<Filt>().sign() {
+        Some(s) => s,
+        None => {
+            FALLBACKS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            e.eval::<Ex>().sign().unwrap_or(Ordering::Equal)
+        }
+    }
+}
+
+/// Decisions the filter could not make (exact rational fallbacks), for tests and benchmarks.
+pub(crate) static FALLBACKS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// A line `a·x + b·y = c + m·M` and the closed half-plane `a·x + b·y <= c + m·M`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Line {
+    pub(crate) a: f64,
+    pub(crate) b: f64,
+    pub(crate) c: f64,
+    /// Coefficient of the symbolic `M` (0 for input half-planes).
+    pub(crate) m: f64,
+}
+
+impl Line {
+    /// An input half-plane.
+    pub(crate) fn input(a: f64, b: f64, c: f64) -> Line {
+        Line { a, b, c, m: 0.0 }
+    }
+
+    /// The four sides of the symbolic box: `x <= M`, `-x <= M`, `y <= M`, `-y <= M`.
+    pub(crate) fn bbox() -> [Line; 4] {
+        [
+            Line {
+                a: 1.0,
+                b: 0.0,
+                c: 0.0,
+                m: 1.0,
+            },
+            Line {
+                a: -1.0,
+                b: 0.0,
+                c: 0.0,
+                m: 1.0,
+            },
+            Line {
+                a: 0.0,
+                b: 1.0,
+                c: 0.0,
+                m: 1.0,
+            },
+            Line {
+                a: 0.0,
+                b: -1.0,
+                c: 0.0,
+                m: 1.0,
+            },
+        ]
+    }
+
+    /// True for a side of the symbolic box.
+    pub(crate) fn is_box(&self) -> bool {
+        self.m != 0.0
+    }
+}
+
+/// `x·y - z·w`.
+#[inline]
+fn det2<N: Num>(x: f64, y: f64, z: f64, w: f64) -> N {
+    N::val(x).mul(&N::val(y)).sub(&N::val(z).mul(&N::val(w)))
+}
+
+/// `a_k·X + b_k·Y - c_k·D` for the meeting point `(X/D, Y/D)` of lines `i`, `j`, with the
+/// constant column `c` (`use_m = false`) or the `M` column (`use_m = true`).
+struct SideExpr<'a> {
+    i: &'a Line,
+    j: &'a Line,
+    k: &'a Line,
+    use_m: bool,
+}
+
+impl SignExpr for SideExpr<'_> {
+    #[inline]
+    fn eval<N: Num>(&self) -> N {
+        let (i, j, k) = (self.i, self.j, self.k);
+        let (ci, cj, ck) = if self.use_m {
+            (i.m, j.m, k.m)
+        } else {
+            (i.c, j.c, k.c)
+        };
+        // X = ci·bj - cj·bi, Y = ai·cj - aj·ci, D = ai·bj - aj·bi.
+        let x: N = det2(ci, j.b, cj, i.b);
+        let y: N = det2(i.a, cj, j.a, ci);
+        let d: N = det2(i.a, j.b, j.a, i.b);
+        N::val(k.a)
+            .mul(&x)
+            .add(&N::val(k.b).mul(&y))
+            .sub(&N::val(ck).mul(&d))
+    }
+}
+
+/// The meeting point of two input lines, pre-evaluated in the filter so that testing it
+/// against many half-planes costs one short expression each (the fast path of the LP).
+pub(crate) struct VertexFilter {
+    x: Filt,
+    y: Filt,
+    d: Filt,
+    flip: bool,
+}
+
+impl VertexFilter {
+    /// `None` when a line is a box side or the filter cannot fix the sign of `D`.
+    pub(crate) fn new(i: &Line, j: &Line) -> Option<VertexFilter> {
+        if i.m != 0.0 || j.m != 0.0 {
+            return None;
+        }
+        let x: Filt = det2(i.c, j.b, j.c, i.b);
+        let y: Filt = det2(i.a, j.c, j.a, i.c);
+        let d: Filt = det2(i.a, j.b, j.a, i.b);
+        match d.sign()? {
+            Ordering::Equal => None,
+            o => Some(VertexFilter {
+                x,
+                y,
+                d,
+                flip: o == Ordering::Less,
+            }),
+        }
+    }
+
+    /// As [`side`] for an input half-plane `k`, or `None` when the filter cannot tell.
+    #[inline]
+    pub(crate) fn side(&self, k: &Line) -> Option<Ordering> {
+        if k.m != 0.0 {
+            return None;
+        }
+        let s = Filt::val(k.a)
+            .mul(&self.x)
+            .add(&Filt::val(k.b).mul(&self.y))
+            .sub(&Filt::val(k.c).mul(&self.d))
+            .sign()?;
+        Some(if self.flip { s.reverse() } else { s })
+    }
+}
+
+/// `ai·bj - aj·bi`: the sign of the cross product of the two normals.
+struct CrossExpr(f64, f64, f64, f64);
+
+impl SignExpr for CrossExpr {
+    #[inline]
+    fn eval<N: Num>(&self) -> N {
+        det2(self.0, self.3, self.2, self.1)
+    }
+}
+
+/// The exact sign of `ai·bj - aj·bi` (zero: parallel normals).
+#[inline]
+pub(crate) fn cross_sign(i: &Line, j: &Line) -> Ordering {
+    sign(&CrossExpr(i.a, i.b, j.a, j.b))
+}
+
+/// The exact sign of `x1·y2 - x2·y1` for arbitrary finite values.
+#[inline]
+pub(crate) fn cross2_sign(x1: f64, y1: f64, x2: f64, y2: f64) -> Ordering {
+    sign(&CrossExpr(x1, y1, x2, y2))
+}
+
+/// Where the meeting point of lines `i` and `j` (not parallel) lies relative to the
+/// half-plane `k`: `Less` strictly inside, `Equal` on its line, `Greater` strictly outside.
+#[inline]
+pub(crate) fn side(i: &Line, j: &Line, k: &Line) -> Ordering {
+    let d = cross_sign(i, j);
+    let s = if i.m == 0.0 && j.m == 0.0 && k.m == 0.0 {
+        sign(&SideExpr {
+            i,
+            j,
+            k,
+            use_m: false,
+        })
+    } else {
+        match sign(&SideExpr {
+            i,
+            j,
+            k,
+            use_m: true,
+        }) {
+            Ordering::Equal => sign(&SideExpr {
+                i,
+                j,
+                k,
+                use_m: false,
+            }),
+            s => s,
+        }
+    };
+    match d {
+        Ordering::Greater => s,
+        Ordering::Less => s.reverse(),
+        // Parallel lines have no meeting point; callers never ask. Answer "on".
+        Ordering::Equal => Ordering::Equal,
+    }
+}
+
+/// `a·x + b·y - c` at an input point.
+pub(crate) struct AffineExpr {
+    pub(crate) a: f64,
+    pub(crate) b: f64,
+    pub(crate) c: f64,
+    pub(crate) x: f64,
+    pub(crate) y: f64,
+}
+
+impl SignExpr for AffineExpr {
+    fn eval<N: Num>(&self) -> N {
+        N::val(self.a)
+            .mul(&N::val(self.x))
+            .add(&N::val(self.b).mul(&N::val(self.y)))
+            .sub(&N::val(self.c))
+    }
+}
+
+/// `(ni·nj)·ci - |ni|²·cj` (one column of `c` or `m`).
+struct ParallelExpr<'a> {
+    i: &'a Line,
+    j: &'a Line,
+    use_m: bool,
+}
+
+impl SignExpr for ParallelExpr<'_> {
+    fn eval<N: Num>(&self) -> N {
+        let (i, j) = (self.i, self.j);
+        let (ci, cj) = if self.use_m { (i.m, j.m) } else { (i.c, j.c) };
+        let dot = N::val(i.a)
+            .mul(&N::val(j.a))
+            .add(&N::val(i.b).mul(&N::val(j.b)));
+        let nn = N::val(i.a)
+            .mul(&N::val(i.a))
+            .add(&N::val(i.b).mul(&N::val(i.b)));
+        dot.mul(&N::val(ci)).sub(&nn.mul(&N::val(cj)))
+    }
+}
+
+/// For parallel lines `i` and `j` (normals parallel, `i` with a non-zero normal): where the
+/// line `i` lies relative to the half-plane `j` (`Less` strictly inside, `Equal` on its
+/// line, `Greater` strictly outside).
+pub(crate) fn parallel_side(i: &Line, j: &Line) -> Ordering {
+    let e = |use_m| sign(&ParallelExpr { i, j, use_m });
+    let s = if i.m == 0.0 && j.m == 0.0 {
+        e(false)
+    } else {
+        match e(true) {
+            Ordering::Equal => e(false),
+            s => s,
+        }
+    };
+    // With nj = λ·ni the line i satisfies `nj·p = λ·ci`, and the expression equals
+    // |ni|²·(λ·ci - cj): its sign says whether line i is inside j, whatever the sign of λ.
+    s
+}
+
+/// The meeting point of lines `i`, `j` (not parallel) as exact rationals
+/// `(x0 + x1·M, y0 + y1·M)`: returns `((x0, y0), (x1, y1))`.
+pub(crate) fn meet_exact(
+    i: &Line,
+    j: &Line,
+) -> ((BigRational, BigRational), (BigRational, BigRational)) {
+    let (ai, bi, aj, bj) = (rat(i.a), rat(i.b), rat(j.a), rat(j.b));
+    let d = &ai * &bj - &aj * &bi;
+    let col = |ci: f64, cj: f64| {
+        let (ci, cj) = (rat(ci), rat(cj));
+        if d.is_zero() {
+            return (BigRational::zero(), BigRational::zero());
+        }
+        let x = (&ci * &bj - &cj * &bi) / &d;
+        let y = (&ai * &cj - &aj * &ci) / &d;
+        (x, y)
+    };
+    (col(i.c, j.c), col(i.m, j.m))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn side_is_exact_near_degeneracy() {
+        // x = 0 and y = 0 meet at the origin; the half-plane x + y <= tiny is decided exactly.
+        let i = Line::input(1.0, 0.0, 0.0);
+        let j = Line::input(0.0, 1.0, 0.0);
+        assert_eq!(side(&i, &j, &Line::input(1.0, 1.0, 1e-300)), Ordering::Less);
+        assert_eq!(
+            side(&i, &j, &Line::input(1.0, 1.0, -1e-300)),
+            Ordering::Greater
+        );
+        assert_eq!(side(&i, &j, &Line::input(1.0, 1.0, 0.0)), Ordering::Equal);
+        // 0.1·x + 0.2·y = 0.3 and x = 1: y = (0.3 - 0.1)/0.2 in exact binary arithmetic.
+        let a = Line::input(0.1, 0.2, 0.3);
+        let b = Line::input(1.0, 0.0, 1.0);
+        let ((x, y), _) = meet_exact(&a, &b);
+        let k = Line::input(0.0, 1.0, to_f64(&y));
+        assert_eq!(x, rat(1.0));
+        // The rounded y is within half an ulp: the exact point is on one side or on it,
+        // and the exact test agrees with the exact rational comparison.
+        let expected = y.cmp(&rat(to_f64(&y)));
+        assert_eq!(side(&a, &b, &k), expected);
+    }
+
+    #[test]
+    fn symbolic_box_is_larger_than_everything() {
+        let bx = Line::bbox();
+        let huge = Line::input(1.0, 0.0, 1e308);
+        // The corner (M, M) is outside x <= 1e308.
+        assert_eq!(side(&bx[0], &bx[2], &huge), Ordering::Greater);
+        // x = 1e308 meets y = M inside the box side x <= M.
+        assert_eq!(side(&huge, &bx[2], &bx[0]), Ordering::Less);
+        assert_eq!(parallel_side(&huge, &bx[0]), Ordering::Less);
+        assert_eq!(parallel_side(&bx[0], &huge), Ordering::Greater);
+    }
+}
