@@ -17,6 +17,7 @@
 //! | chapter | problem | entry points |
 //! |---|---|---|
 //! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::convex_hull_indices`], [`hull::verify_convex_hull`] |
+//! | 9 | Delaunay triangulation | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::verify_delaunay`] |
 //!
 //! ## Exactness
 //!
@@ -27,6 +28,7 @@
 #![deny(missing_docs)]
 #![deny(rustdoc::broken_intra_doc_links)]
 
+pub mod delaunay;
 mod error;
 pub mod hull;
 pub mod io;
