@@ -19,6 +19,7 @@
 //!    and list it in `demo::SECTIONS`.
 //! 4. Add tests to `tests/cli.rs`.
 
+use crate::commands::delaunay::DelaunayArgs;
 use crate::commands::hull::HullArgs;
 use crate::demo::DemoArgs;
 use clap::{Args, Parser, Subcommand, ValueEnum};
@@ -47,6 +48,9 @@ pub enum Command {
     /// Convex hull of points in the plane (book chapter 1).
     #[command(after_long_help = crate::commands::hull::JSON_HELP)]
     Hull(HullArgs),
+    /// Delaunay triangulation of points in the plane (book chapter 9).
+    #[command(after_long_help = crate::commands::delaunay::JSON_HELP)]
+    Delaunay(DelaunayArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

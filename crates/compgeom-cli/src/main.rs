@@ -31,6 +31,7 @@ fn main() -> ExitCode {
 fn run(cli: cli::Cli) -> Result<(), error::CliError> {
     match cli.command {
         cli::Command::Hull(args) => commands::hull::run(&args),
+        cli::Command::Delaunay(args) => commands::delaunay::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

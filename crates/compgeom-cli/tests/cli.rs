@@ -552,3 +552,65 @@ mod with_io_and_hull {
         assert!(h_of("the book&apos;s slow hull") >= 3);
     }
 }
+
+mod delaunay_commands {
+    use super::*;
+
+    fn run_json(args: &[&str], path: &Path) -> Value {
+        let out = compgeom().args(args).arg(path).output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).unwrap()
+    }
+
+    #[test]
+    fn delaunay_json_fields_and_duplicates() {
+        let (_d, p) = input("pts.csv", "0 0\n1 0\n0 1\n1 1.5\n1 0\n");
+        for alg in ["default", "incremental"] {
+            let v = run_json(&["delaunay", "--verify", "--algorithm", alg], &p);
+            assert_eq!(v["vertices"].as_array().unwrap().len(), 4);
+            assert_eq!(v["triangles"].as_array().unwrap().len(), 2);
+            assert_eq!(v["input_to_vertex"], serde_json::json!([0, 1, 2, 3, 1]));
+            assert_eq!(v["verified"], true);
+            assert_eq!(v["algorithm"], alg);
+            // The diagonal is (1, 2): (0,0) is outside the circle through the others.
+            let tris: Vec<Vec<u64>> = serde_json::from_value(v["triangles"].clone()).unwrap();
+            assert!(tris.iter().all(|t| t.contains(&1) && t.contains(&2)));
+        }
+    }
+
+    #[test]
+    fn delaunay_collinear_input_is_not_an_error() {
+        let (_d, p) = input("line.csv", "0 0\n1 1\n2 2\n");
+        let v = run_json(&["delaunay", "--verify"], &p);
+        assert_eq!(v["triangles"].as_array().unwrap().len(), 0);
+        assert!(v["note"].as_str().unwrap().contains("collinear"));
+    }
+
+    #[test]
+    fn delaunay_geojson_and_svg() {
+        let (d, p) = input("pts.csv", "0 0\n4 0\n0 3\n4 3\n2 1\n");
+        let svg = d.path().join("t.svg");
+        let out = compgeom()
+            .args(["delaunay", "-f", "geojson", "--circumcircles", "2", "--svg"])
+            .arg(&svg)
+            .arg(&p)
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["type"], "MultiPolygon");
+        assert_eq!(v["coordinates"].as_array().unwrap().len(), 4);
+        let text = fs::read_to_string(&svg).unwrap();
+        assert!(text.contains("circumcircles"));
+    }
+
+    #[test]
+    fn delaunay_bad_input_exits_2() {
+        let (_d, p) = input("bad.csv", "0 0\n1 nan\n");
+        compgeom().arg("delaunay").arg(&p).assert().code(2);
+    }
+}

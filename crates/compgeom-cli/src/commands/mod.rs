@@ -1,4 +1,5 @@
 //! One module per command, each with its args struct and `run`. See `cli.rs` for how a
 //! command adds itself.
 
+pub mod delaunay;
 pub mod hull;
