@@ -6,6 +6,7 @@
 //! groups: see GROUPS below, or all
 //! ```
 
+mod delaunay;
 mod hull;
 mod kernel;
 mod util;
@@ -13,12 +14,13 @@ mod util;
 use std::process::ExitCode;
 
 /// Every group, in the order `all` runs them.
-const GROUPS: &[&str] = &["kernel", "hull"];
+const GROUPS: &[&str] = &["kernel", "hull", "delaunay"];
 
 /// Run one group; `None` if the name is unknown.
 fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
     match name {
         "hull" => Some(hull::run(quick)),
+        "delaunay" => Some(delaunay::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

@@ -15,11 +15,11 @@
 //! - Point location descends the history DAG: every triangle ever created is a node; a
 //!   split or flip makes the new triangles children of the destroyed ones.
 //!
-//! Expected O(n log n) time and O(n) space for a random insertion order (a fixed-seed
-//! shuffle, so runs are reproducible). Duplicates are merged before insertion (by sorting);
+//! Expected O(n log n) time and O(n) space for a random insertion order; the order is a
+//! biased randomized insertion order (`brio`, fixed seed, so runs are reproducible). Duplicates are merged before insertion (by sorting);
 //! collinear input gives no triangles.
 
-use super::fast::dedup_sorted;
+use super::fast::{dedup_sorted, hilbert_order};
 use super::mesh::{next, prev, NONE};
 use super::pred::{in_circle, orient};
 use super::triangulation::Triangulation;
@@ -279,11 +279,7 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
         .max_by(|&i, &j| lex(pts[distinct[i] as usize], pts[distinct[j] as usize]))
         .unwrap_or(0);
     let p0 = distinct.swap_remove(k0);
-    let mut rng = SplitMix(0x00C0_FFEE_D1CE_5EED);
-    for i in (1..distinct.len()).rev() {
-        let j = (rng.next() % (i as u64 + 1)) as usize;
-        distinct.swap(i, j);
-    }
+    let distinct = brio(pts, distinct);
     let mut dag = Dag {
         pts,
         v: Vec::with_capacity(27 * n),
@@ -301,4 +297,25 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
         .filter(|t| t.iter().all(|&v| v < M2))
         .collect();
     Triangulation::from_triangles(pts, &tris, &rep)
+}
+
+/// A biased randomized insertion order (Amenta, Choi & Rote 2003): each point joins round
+/// `k` with probability 2^-(k+1) (fixed seed); rounds run from the smallest to the largest,
+/// each in Hilbert order. The insertion order stays random enough for the book's expected
+/// O(n log n) analysis, and consecutive points are near each other, so the DAG paths they
+/// follow share the cache.
+fn brio(pts: &[Point2], ids: Vec<u32>) -> Vec<u32> {
+    let mut rng = SplitMix(0x00C0_FFEE_D1CE_5EED);
+    let rounds = (usize::BITS - ids.len().leading_zeros()).max(1);
+    let mut by_round: Vec<Vec<u32>> = vec![Vec::new(); rounds as usize];
+    for id in ids {
+        let k = rng.next().trailing_zeros().min(rounds - 1);
+        by_round[k as usize].push(id);
+    }
+    let mut out = Vec::new();
+    for round in by_round.into_iter().rev() {
+        let sub: Vec<Point2> = round.iter().map(|&i| pts[i as usize]).collect();
+        out.extend(hilbert_order(&sub).into_iter().map(|k| round[k as usize]));
+    }
+    out
 }

@@ -3,7 +3,9 @@
 //! Each predicate first evaluates the determinant in `f64` with Shewchuk's static error
 //! bound (stage A); when the sign is certain it is returned, otherwise (or when the
 //! magnitudes are so small that products may underflow, or so large that they overflow)
-//! the kernel's exact predicate decides. So every answer is exact; the filter only saves
+//! the kernel's exact predicate decides — except when all coordinate differences are small
+//! integers (integer grids, the common degenerate input), where the `f64` evaluation is
+//! itself exact and its sign, zero included, is the answer. So every answer is exact; the filter only saves
 //! the kernel's range checks on the common case.
 
 use crate::kernel::{incircle, orient2d, CircleSide, Orientation};
@@ -24,6 +26,18 @@ pub(crate) fn orient(a: Point2, b: Point2, c: Point2) -> i8 {
     let sum = l.abs() + r.abs();
     if det.abs() > CCW_BOUND * sum && sum > TINY && sum < f64::MAX {
         return if det > 0.0 { 1 } else { -1 };
+    }
+    // Integer coordinates with differences up to 2^25: the differences, both products and
+    // their difference are exact integers below 2^53.
+    let d = [a.x - c.x, b.y - c.y, a.y - c.y, b.x - c.x];
+    if integral(&[a, b, c]) && d.iter().all(|&v| v.abs() <= 33_554_432.0) {
+        return if det > 0.0 {
+            1
+        } else if det < 0.0 {
+            -1
+        } else {
+            0
+        };
     }
     match orient2d(a, b, c) {
         Orientation::CounterClockwise => 1,
@@ -55,11 +69,33 @@ pub(crate) fn in_circle(a: Point2, b: Point2, c: Point2, d: Point2) -> i8 {
     if det.abs() > ICC_BOUND * perm && perm > TINY && perm < f64::MAX {
         return if det > 0.0 { 1 } else { -1 };
     }
+    // Integer coordinates with small differences (integer grids): the differences are then
+    // exact integers and every product and sum above is exact (|d| <= 2^12 gives
+    // |det| < 3 * 2^50 < 2^53), so `det` is the exact value, zero included.
+    if integral(&[a, b, c, d])
+        && [adx, ady, bdx, bdy, cdx, cdy]
+            .iter()
+            .all(|&d| d.abs() <= 4096.0)
+    {
+        return if det > 0.0 {
+            1
+        } else if det < 0.0 {
+            -1
+        } else {
+            0
+        };
+    }
     match incircle(a, b, c, d) {
         CircleSide::Inside => 1,
         CircleSide::Outside => -1,
         CircleSide::OnCircle => 0,
     }
+}
+
+/// True when every coordinate is an integer.
+#[inline(always)]
+fn integral(p: &[Point2]) -> bool {
+    p.iter().all(|p| p.x == p.x.trunc() && p.y == p.y.trunc())
 }
 
 /// True when `q` lies strictly between `a` and `b` on their (common) line; the caller
@@ -99,6 +135,19 @@ mod tests {
         assert_eq!(in_circle(p, q, r, Point2::new(0.0, -1.0)), 0);
         assert_eq!(in_circle(p, q, r, Point2::new(0.0, -1.0 + 1e-16)), 1);
         assert_eq!(in_circle(p, q, r, Point2::new(1e-300, 1e-300)), 1);
+        // Integer grid with a huge offset: the differences are exact, zero is exact.
+        let o = 1e17;
+        let g = |x: f64, y: f64| Point2::new(o + x, o + y);
+        assert_eq!(
+            in_circle(g(0.0, 0.0), g(16.0, 0.0), g(16.0, 16.0), g(0.0, 16.0)),
+            0
+        );
+        assert_eq!(orient(g(0.0, 0.0), g(16.0, 16.0), g(32.0, 32.0)), 0);
+        // Non-integer tiny offsets must not take the integer path.
+        let q = Point2::new(1048576.0, 0.0);
+        let r = Point2::new(-1e-40, 0.0);
+        assert_eq!(orient(q, Point2::new(0.0, 0.0), r), 0);
+        assert_eq!(orient(q, Point2::new(0.0, 1e-300), r), 1);
         let t = 1e-300;
         assert_eq!(
             orient(
