@@ -8,6 +8,7 @@
 //! |---|---|---|
 //! | [`delaunay`] (default) | Hilbert-curve order, walking point location, Lawson flips on a mesh closed by ghost triangles (`fast.rs`) | O(n log n) |
 //! | [`delaunay_with`] + [`DelaunayAlgorithm::Incremental`] | the book's DELAUNAYTRIANGULATION (§9.3): randomized incremental insertion, history DAG, LEGALIZEEDGE, symbolic p₋₁, p₋₂ (§9.4) | O(n log n) expected |
+//! | [`constrained_delaunay`], [`polygon_delaunay`] | constrained Delaunay (segments; polygons with holes, interior kept) by Sloan's flips, then Lawson flips; [`verify_cdt`] checks it | O(n log n + flips) |
 //! | [`verify_delaunay`] | exact check: structure, every edge locally Delaunay, triangles tile the convex hull | O(n log n) |
 //!
 //! # The result: [`Triangulation`]
@@ -46,6 +47,7 @@
 //! # Ok::<(), compgeom::Error>(())
 //! ```
 
+mod cdt;
 mod fast;
 mod incremental;
 mod mesh;
@@ -53,6 +55,7 @@ mod pred;
 mod triangulation;
 mod verify;
 
+pub use cdt::{constrained_delaunay, polygon_delaunay, verify_cdt, Cdt};
 pub use triangulation::{Triangulation, NO_NEIGHBOR};
 pub use verify::verify_delaunay;
 
