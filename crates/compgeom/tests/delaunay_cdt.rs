@@ -27,10 +27,11 @@ fn non_crossing(pts: &[Point2], r: &mut Lcg, k: usize) -> Vec<Segment2> {
         let a = pts[(r.f() * pts.len() as f64) as usize];
         let b = pts[(r.f() * pts.len() as f64) as usize];
         let s = Segment2::new(a, b);
-        let ok = segs.iter().all(|t| match segment_intersection(s, *t) {
-            SegmentIntersection::None => true,
-            SegmentIntersection::Endpoint(_) => true,
-            _ => false,
+        let ok = segs.iter().all(|t| {
+            matches!(
+                segment_intersection(s, *t),
+                SegmentIntersection::None | SegmentIntersection::Endpoint(_)
+            )
         });
         if ok && a != b {
             segs.push(s);
