@@ -9,6 +9,8 @@
 //! | [`delaunay`] (default) | Hilbert-curve order, walking point location, Lawson flips on a mesh closed by ghost triangles (`fast.rs`) | O(n log n) |
 //! | [`delaunay_with`] + [`DelaunayAlgorithm::Incremental`] | the book's DELAUNAYTRIANGULATION (§9.3): randomized incremental insertion, history DAG, LEGALIZEEDGE, symbolic p₋₁, p₋₂ (§9.4) | O(n log n) expected |
 //! | [`constrained_delaunay`], [`polygon_delaunay`] | constrained Delaunay (segments; polygons with holes, interior kept) by Sloan's flips, then Lawson flips; [`verify_cdt`] checks it | O(n log n + flips) |
+//! | [`Terrain`] | piecewise-linear terrain over the triangulation; heights by walking location (§9.1) | O(n log n) build, O(√n) expected per random query, O(1) for nearby queries |
+//! | [`euclidean_mst`] | Kruskal on the Delaunay edges, exact length comparisons | O(n log n) |
 //! | [`verify_delaunay`] | exact check: structure, every edge locally Delaunay, triangles tile the convex hull | O(n log n) |
 //!
 //! # The result: [`Triangulation`]
@@ -48,14 +50,18 @@
 //! ```
 
 mod cdt;
+mod emst;
 mod fast;
 mod incremental;
 mod mesh;
 mod pred;
+mod terrain;
 mod triangulation;
 mod verify;
 
 pub use cdt::{constrained_delaunay, polygon_delaunay, verify_cdt, Cdt};
+pub use emst::euclidean_mst;
+pub use terrain::Terrain;
 pub use triangulation::{Triangulation, NO_NEIGHBOR};
 pub use verify::verify_delaunay;
 
