@@ -21,6 +21,7 @@
 
 use crate::commands::delaunay::DelaunayArgs;
 use crate::commands::hull::HullArgs;
+use crate::commands::interpolate::InterpolateArgs;
 use crate::demo::DemoArgs;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
@@ -51,6 +52,9 @@ pub enum Command {
     /// Delaunay triangulation of points in the plane (book chapter 9).
     #[command(after_long_help = crate::commands::delaunay::JSON_HELP)]
     Delaunay(DelaunayArgs),
+    /// Heights of the terrain over (x, y, z) samples at query points (book chapter 9).
+    #[command(after_long_help = crate::commands::interpolate::JSON_HELP)]
+    Interpolate(InterpolateArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

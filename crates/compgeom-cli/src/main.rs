@@ -32,6 +32,7 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
     match cli.command {
         cli::Command::Hull(args) => commands::hull::run(&args),
         cli::Command::Delaunay(args) => commands::delaunay::run(&args),
+        cli::Command::Interpolate(args) => commands::interpolate::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

@@ -609,6 +609,76 @@ mod delaunay_commands {
     }
 
     #[test]
+    fn delaunay_constraints_and_polygon() {
+        let (d, p) = input("p.csv", "0 0\n4 0\n4 4\n0 4\n2 1\n2 3\n");
+        let segs = d.path().join("s.csv");
+        fs::write(&segs, "0,0,4,4\n").unwrap();
+        let out = compgeom()
+            .args(["delaunay", "--verify", "--constraints"])
+            .arg(&segs)
+            .arg(&p)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["constraints"], serde_json::json!([[0, 2]]));
+        // Crossing constraints: bad input.
+        fs::write(&segs, "0,0,4,4\n4,0,0,4\n").unwrap();
+        compgeom()
+            .args(["delaunay", "--constraints"])
+            .arg(&segs)
+            .arg(&p)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("cross"));
+        let poly = d.path().join("poly.wkt");
+        fs::write(
+            &poly,
+            "POLYGON ((0 0, 12 0, 12 12, 0 12, 0 0), (2 2, 4 2, 4 4, 2 4, 2 2))",
+        )
+        .unwrap();
+        let (_e, empty) = input("empty.csv", "");
+        let out = compgeom()
+            .args(["delaunay", "--verify", "--polygon"])
+            .arg(&poly)
+            .arg(&empty)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["triangles"].as_array().unwrap().len(), 8);
+        assert_eq!(v["constraints"].as_array().unwrap().len(), 8);
+    }
+
+    #[test]
+    fn interpolate_heights_and_null_outside() {
+        let (d, s) = input("s.csv", "0,0,0\n4,0,4\n0,4,8\n4,4,12\n");
+        let q = d.path().join("q.csv");
+        fs::write(&q, "1 1\n5 5\n2 2\n").unwrap();
+        let out = compgeom()
+            .args(["interpolate", "--verify", "--at"])
+            .arg(&q)
+            .arg(&s)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["heights"], serde_json::json!([3.0, null, 6.0]));
+    }
+
+    #[test]
     fn delaunay_bad_input_exits_2() {
         let (_d, p) = input("bad.csv", "0 0\n1 nan\n");
         compgeom().arg("delaunay").arg(&p).assert().code(2);

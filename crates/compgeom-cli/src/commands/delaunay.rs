@@ -7,7 +7,8 @@ use crate::output;
 use crate::progress::{Spinner, LARGE_INPUT};
 use clap::{Args, ValueEnum};
 use compgeom::delaunay::{
-    delaunay_with, verify_delaunay, DelaunayAlgorithm, DelaunayOptions, Triangulation,
+    constrained_delaunay, delaunay_with, polygon_delaunay_with_points, verify_cdt, verify_delaunay,
+    DelaunayAlgorithm, DelaunayOptions, Triangulation,
 };
 use compgeom::io::{write_shape, Shape};
 use compgeom::render::{Layer, Picture, Style};
@@ -24,7 +25,13 @@ JSON output (--format json, the default) is one object:
   input_points     number of points read (duplicates included)
   note             present when there are no triangles (fewer than 3 distinct points, or all
                    collinear): not an error
+  constraints      [[u, v], ...]  constrained edges (with --constraints or --polygon; pieces of a
+                                 constraint split at input points are listed separately)
   verified         true; present only with --verify (a failed check exits 1 instead)
+
+With --constraints or --polygon, input_to_vertex covers the points, then the constraint
+endpoints (segment 0's two ends, segment 1's, ...) or the ring vertices in order, and
+--algorithm is ignored (the default triangulation is constrained).
 
 Other formats print the triangles as a multipolygon.
 
@@ -50,6 +57,17 @@ pub struct DelaunayArgs {
     /// `incremental` (the book's randomized incremental algorithm with the history DAG).
     #[arg(long, value_enum, default_value_t = AlgorithmArg::Default)]
     pub algorithm: AlgorithmArg,
+
+    /// Segment constraints (x1,y1,x2,y2 lines, WKT or GeoJSON): the constrained Delaunay
+    /// triangulation, with every segment an edge (split where input points lie on it).
+    /// Crossing constraints are an error.
+    #[arg(long, value_name = "SEGMENTS", conflicts_with = "polygon")]
+    pub constraints: Option<std::path::PathBuf>,
+
+    /// Polygons (with holes) as WKT or GeoJSON: the constrained Delaunay triangulation of
+    /// their rings and POINTS (which may be an empty file), keeping only the triangles inside.
+    #[arg(long, value_name = "POLY")]
+    pub polygon: Option<std::path::PathBuf>,
 
     /// Draw the circumcircles of this many triangles in the SVG.
     #[arg(long, value_name = "N", default_value_t = 0)]
@@ -92,6 +110,8 @@ struct DelaunayJson<'a> {
     algorithm: &'static str,
     input_points: usize,
     #[serde(skip_serializing_if = "Option::is_none")]
+    constraints: Option<&'a [(u32, u32)]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     note: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     verified: Option<bool>,
@@ -101,14 +121,42 @@ struct DelaunayJson<'a> {
 pub fn run(args: &DelaunayArgs) -> Result<(), CliError> {
     let points = args.input.read_points()?;
     let large = points.len() >= LARGE_INPUT;
+    let read_other = |path: &std::path::Path| {
+        InputArgs {
+            input: path.to_path_buf(),
+            input_format: None,
+        }
+        .read()
+    };
+    let mut constraints = None;
     let tri = {
         let _spin = Spinner::start("triangulating", large);
-        delaunay_with(&points, &args.algorithm.options())?
+        if let Some(path) = &args.constraints {
+            let src = read_other(path)?;
+            let segs = compgeom::io::read_segments(&src.text, src.format, &src.name)?;
+            let cdt = constrained_delaunay(&points, &segs)?;
+            if args.output.verify {
+                verify_cdt(&cdt)?;
+            }
+            constraints = Some(cdt.constraints);
+            cdt.triangulation
+        } else if let Some(path) = &args.polygon {
+            let src = read_other(path)?;
+            let polys = compgeom::io::read_polygons(&src.text, src.format, &src.name)?;
+            let cdt = polygon_delaunay_with_points(&points, &polys.0)?;
+            if args.output.verify {
+                verify_cdt(&cdt)?;
+            }
+            constraints = Some(cdt.constraints);
+            cdt.triangulation
+        } else {
+            let t = delaunay_with(&points, &args.algorithm.options())?;
+            if args.output.verify {
+                verify_delaunay(&t)?;
+            }
+            t
+        }
     };
-    if args.output.verify {
-        let _spin = Spinner::start("verifying", large);
-        verify_delaunay(&tri)?;
-    }
     let text = match args.output.format.geometry_format() {
         None => {
             let json = DelaunayJson {
@@ -117,6 +165,7 @@ pub fn run(args: &DelaunayArgs) -> Result<(), CliError> {
                 input_to_vertex: tri.input_to_vertex(),
                 algorithm: args.algorithm.name(),
                 input_points: points.len(),
+                constraints: constraints.as_deref(),
                 note: tri
                     .is_degenerate()
                     .then_some("no triangles: fewer than 3 distinct points, or all collinear"),

@@ -3,3 +3,4 @@
 
 pub mod delaunay;
 pub mod hull;
+pub mod interpolate;

@@ -87,7 +87,18 @@ pub fn constrained_delaunay(points: &[Point2], segments: &[Segment2]) -> Result<
 /// # Errors
 /// As [`constrained_delaunay`].
 pub fn polygon_delaunay(polygons: &[Polygon]) -> Result<Cdt> {
-    let mut all = Vec::new();
+    polygon_delaunay_with_points(&[], polygons)
+}
+
+/// As [`polygon_delaunay`], with extra `points` (Steiner points given by the caller) inserted
+/// first; those outside the polygons end up in no kept triangle. `input_to_vertex` covers the
+/// points, then the ring vertices.
+///
+/// # Errors
+/// As [`constrained_delaunay`].
+pub fn polygon_delaunay_with_points(points: &[Point2], polygons: &[Polygon]) -> Result<Cdt> {
+    ensure_finite(points, "point")?;
+    let mut all = points.to_vec();
     let mut pairs = Vec::new();
     for (pi, poly) in polygons.iter().enumerate() {
         for (ri, ring) in poly.rings().enumerate() {

@@ -59,7 +59,9 @@ mod terrain;
 mod triangulation;
 mod verify;
 
-pub use cdt::{constrained_delaunay, polygon_delaunay, verify_cdt, Cdt};
+pub use cdt::{
+    constrained_delaunay, polygon_delaunay, polygon_delaunay_with_points, verify_cdt, Cdt,
+};
 pub use emst::euclidean_mst;
 pub use terrain::Terrain;
 pub use triangulation::{Triangulation, NO_NEIGHBOR};
