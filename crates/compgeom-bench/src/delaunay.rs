@@ -9,7 +9,8 @@
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::delaunay::{
-    delaunay, delaunay_with, verify_delaunay, DelaunayAlgorithm, DelaunayOptions,
+    constrained_delaunay, delaunay, delaunay_with, polygon_delaunay, verify_delaunay,
+    DelaunayAlgorithm, DelaunayOptions,
 };
 use compgeom::Point2;
 use spade::Triangulation as _;
@@ -108,6 +109,7 @@ pub fn run(quick: bool) -> Result<(), String> {
             ms(r.book) / ms(r.default)
         );
     }
+    cdt(quick)?;
     let g = |f: fn(&Row) -> Duration| ms(f(&rows[1])) / ms(f(&rows[0]));
     println!(
         "growth {small} -> {large} (x{}): default {:.1}, book {:.1}, spade {:.1}, delaunator {:.1}",
@@ -116,6 +118,95 @@ pub fn run(quick: bool) -> Result<(), String> {
         g(|r| r.book),
         g(|r| r.spade),
         g(|r| r.delaunator)
+    );
+    Ok(())
+}
+
+/// A polygon with holes: a circle of `outer` vertices and a `k` x `k` grid of circular holes of
+/// `hole` vertices each, plus the interior points of a uniform sample.
+fn holey(outer: usize, k: usize, hole: usize) -> compgeom::Polygon {
+    let ring = |cx: f64, cy: f64, r: f64, n: usize, ccw: bool| -> Vec<Point2> {
+        (0..n)
+            .map(|i| {
+                let t = i as f64 / n as f64 * std::f64::consts::TAU;
+                let t = if ccw { t } else { -t };
+                Point2::new(cx + r * t.cos(), cy + r * t.sin())
+            })
+            .collect()
+    };
+    let mut holes = Vec::new();
+    let step = 1.2 / k as f64;
+    for i in 0..k {
+        for j in 0..k {
+            let (cx, cy) = (
+                -0.6 + (i as f64 + 0.5) * step,
+                -0.6 + (j as f64 + 0.5) * step,
+            );
+            holes.push(ring(cx, cy, step * 0.3, hole, false));
+        }
+    }
+    compgeom::Polygon::new(ring(0.0, 0.0, 1.0, outer, true), holes)
+}
+
+/// CDT of a polygon with holes: compgeom's `polygon_delaunay` (which also removes the
+/// outside and the holes) against spade's `bulk_load_cdt` (the whole hull, no removal).
+fn cdt(quick: bool) -> Result<(), String> {
+    let (outer, k, hole) = if quick {
+        (2_000, 10, 50)
+    } else {
+        (20_000, 30, 100)
+    };
+    let poly = holey(outer, k, hole);
+    let mut verts: Vec<Point2> = Vec::new();
+    let mut edges: Vec<[usize; 2]> = Vec::new();
+    for ring in poly.rings() {
+        let base = verts.len();
+        verts.extend_from_slice(ring);
+        for i in 0..ring.len() {
+            edges.push([base + i, base + (i + 1) % ring.len()]);
+        }
+    }
+    let segs: Vec<compgeom::Segment2> = edges
+        .iter()
+        .map(|e| compgeom::Segment2::new(verts[e[0]], verts[e[1]]))
+        .collect();
+    let sp: Vec<spade::Point2<f64>> = verts.iter().map(|p| spade::Point2::new(p.x, p.y)).collect();
+    // Check once: the full CDTs have the same size; the polygon CDT keeps n + 2h - 2 triangles.
+    let full = constrained_delaunay(&verts, &segs).map_err(|e| e.to_string())?;
+    let ours = polygon_delaunay(std::slice::from_ref(&poly)).map_err(|e| e.to_string())?;
+    compgeom::delaunay::verify_cdt(&ours).map_err(|e| e.to_string())?;
+    let theirs = spade::ConstrainedDelaunayTriangulation::<spade::Point2<f64>>::bulk_load_cdt(
+        sp.clone(),
+        edges.clone(),
+    )
+    .map_err(|e| format!("spade: {e:?}"))?;
+    if full.triangulation.triangles().len() != theirs.num_inner_faces() {
+        return Err(format!(
+            "CDT sizes differ: compgeom {} vs spade {}",
+            full.triangulation.triangles().len(),
+            theirs.num_inner_faces()
+        ));
+    }
+    let h = k * k;
+    if ours.triangulation.triangles().len() != verts.len() + 2 * h - 2 {
+        return Err("polygon CDT has the wrong triangle count".into());
+    }
+    let runs = 3;
+    let t_full = best_of(runs, || constrained_delaunay(&verts, &segs));
+    let t_poly = best_of(runs, || polygon_delaunay(std::slice::from_ref(&poly)));
+    let t_spade = best_of(runs, || {
+        spade::ConstrainedDelaunayTriangulation::<spade::Point2<f64>>::bulk_load_cdt(
+            sp.clone(),
+            edges.clone(),
+        )
+    });
+    println!(
+        "CDT, polygon with {h} holes, {} vertices: compgeom full {:.1} ms, compgeom polygon (holes removed) {:.1} ms, spade bulk_load_cdt {:.1} ms; ratio full/spade {:.2}",
+        verts.len(),
+        ms(t_full),
+        ms(t_poly),
+        ms(t_spade),
+        ms(t_full) / ms(t_spade)
     );
     Ok(())
 }
