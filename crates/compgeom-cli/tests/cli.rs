@@ -679,6 +679,29 @@ mod delaunay_commands {
     }
 
     #[test]
+    fn demo_has_the_delaunay_section() {
+        let dir = TempDir::new().unwrap();
+        compgeom()
+            .arg("demo")
+            .arg("--out")
+            .arg(dir.path())
+            .assert()
+            .success();
+        let html = fs::read_to_string(dir.path().join("index.html")).unwrap();
+        assert!(html.contains("Chapter 9"));
+        for f in [
+            "delaunay-disc.svg",
+            "delaunay-book.svg",
+            "delaunay-cocircular.svg",
+            "delaunay-grid.svg",
+            "delaunay-cdt.svg",
+        ] {
+            let svg = fs::read_to_string(dir.path().join(f)).unwrap();
+            assert!(svg.contains("Delaunay"), "{f}");
+        }
+    }
+
+    #[test]
     fn delaunay_bad_input_exits_2() {
         let (_d, p) = input("bad.csv", "0 0\n1 nan\n");
         compgeom().arg("delaunay").arg(&p).assert().code(2);

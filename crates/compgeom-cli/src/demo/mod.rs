@@ -6,6 +6,7 @@
 //! A section computes with the library, verifies its results (a failure exits 1), draws with
 //! `compgeom::render`, and saves each picture with [`Demo::figure`].
 
+mod delaunay;
 mod hull;
 pub mod samples;
 
@@ -28,7 +29,7 @@ pub struct DemoArgs {
 type SectionFn = fn(&Demo) -> Result<Section, CliError>;
 
 /// The sections of the gallery, in book order. A new command appends its own.
-const SECTIONS: &[SectionFn] = &[hull::section];
+const SECTIONS: &[SectionFn] = &[hull::section, delaunay::section];
 
 /// What a section needs: where to put its pictures.
 pub struct Demo {
