@@ -17,7 +17,7 @@
 //! | chapter | problem | entry points |
 //! |---|---|---|
 //! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::convex_hull_indices`], [`hull::verify_convex_hull`] |
-//! | 9 | Delaunay triangulation | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::verify_delaunay`] |
+//! | 9 | Delaunay triangulation, constrained Delaunay, terrains, EMST | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::constrained_delaunay`], [`delaunay::polygon_delaunay`], [`delaunay::Terrain`], [`delaunay::euclidean_mst`], [`delaunay::verify_delaunay`], [`delaunay::verify_cdt`] |
 //!
 //! ## Exactness
 //!

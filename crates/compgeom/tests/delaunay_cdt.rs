@@ -252,6 +252,7 @@ fn artem_ogre_cdt_inputs() {
         match constrained_delaunay(&pts, &segs) {
             Ok(cdt) => {
                 verify_cdt(&cdt).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+                compare_expected(&dir, &path, &cdt);
                 ok += 1;
             }
             Err(e) => {
@@ -262,4 +263,59 @@ fn artem_ogre_cdt_inputs() {
     }
     println!("cdt inputs: {ok} verified, rejected as crossing: {rejected:?}");
     assert!(ok >= 6, "only {ok} verified; rejected {rejected:?}");
+}
+
+/// Compares with artem-ogre's `*_ignore_super` expectation (the CDT of the input, no
+/// intersection resolution): the same triangle set, or — where the CDT is not unique
+/// (cocircular points) — the expected triangles must pass our exact CDT verifier too.
+fn compare_expected(dir: &std::path::Path, input: &std::path::Path, cdt: &compgeom::delaunay::Cdt) {
+    let stem = input.file_stem().unwrap().to_string_lossy().to_string();
+    let exp_dir = dir.join("cdt/expected");
+    let candidates = [
+        format!("{stem}__auto_ignore_super.txt"),
+        format!("{stem}__f64_auto_ignore_super.txt"),
+    ];
+    let Some(text) = candidates
+        .iter()
+        .find_map(|c| std::fs::read_to_string(exp_dir.join(c)).ok())
+    else {
+        return;
+    };
+    let map = cdt.triangulation.input_to_vertex();
+    let mut lines = text.lines();
+    let count: usize = lines.next().unwrap().trim().parse().unwrap();
+    let theirs: Vec<[u32; 3]> = lines
+        .take(count)
+        .map(|l| {
+            let n: Vec<usize> = l
+                .split_whitespace()
+                .take(3)
+                .map(|x| x.parse().unwrap())
+                .collect();
+            [map[n[0]], map[n[1]], map[n[2]]]
+        })
+        .collect();
+    assert_eq!(
+        theirs.len(),
+        cdt.triangulation.triangles().len(),
+        "{stem}: triangle count"
+    );
+    let t = compgeom::delaunay::Triangulation::from_parts(
+        cdt.triangulation.vertices().to_vec(),
+        theirs,
+        map.to_vec(),
+    )
+    .unwrap();
+    if t.canonical_triangles() != cdt.triangulation.canonical_triangles() {
+        let other = compgeom::delaunay::Cdt {
+            triangulation: t,
+            constraints: cdt.constraints.clone(),
+        };
+        verify_cdt(&other).unwrap_or_else(|e| {
+            panic!("{stem}: differs from the expected CDT, which is not a CDT by our verifier: {e}")
+        });
+        println!("{stem}: a different but valid CDT (cocircular ties)");
+    } else {
+        println!("{stem}: same triangles as expected");
+    }
 }
