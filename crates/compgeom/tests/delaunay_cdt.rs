@@ -319,3 +319,46 @@ fn compare_expected(dir: &std::path::Path, input: &std::path::Path, cdt: &compge
         println!("{stem}: same triangles as expected");
     }
 }
+
+mod degenerate {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(80))]
+
+        /// Points on a small integer grid (collinear runs, cocircular squares, duplicates)
+        /// with random constraints: either a verified CDT with every constraint present, or
+        /// (only when two constraints really cross) a clear error.
+        #[test]
+        fn grid_points_with_constraints(
+            pts in prop::collection::vec((0i32..5, 0i32..5), 3..30),
+            picks in prop::collection::vec((0usize..30, 0usize..30), 0..8),
+        ) {
+            let pts: Vec<Point2> = pts.into_iter().map(|(x, y)| Point2::new(x as f64, y as f64)).collect();
+            let segs: Vec<Segment2> = picks
+                .into_iter()
+                .map(|(i, j)| Segment2::new(pts[i % pts.len()], pts[j % pts.len()]))
+                .collect();
+            let any_crossing = segs.iter().enumerate().any(|(i, s)| {
+                // A crossing at an input point is no crossing: both constraints split there.
+                segs[..i].iter().any(|t| match segment_intersection(*s, *t) {
+                    SegmentIntersection::Crossing(c) => {
+                        !pts.iter().any(|&p| c.compare_xy_point(p) == std::cmp::Ordering::Equal)
+                    }
+                    _ => false,
+                })
+            });
+            match constrained_delaunay(&pts, &segs) {
+                Ok(cdt) => {
+                    prop_assert!(verify_cdt(&cdt).is_ok(), "{:?}", verify_cdt(&cdt));
+                    prop_assert!(!any_crossing);
+                }
+                Err(e) => {
+                    prop_assert!(any_crossing, "unexpected error: {}", e);
+                    prop_assert!(e.to_string().contains("cross"));
+                }
+            }
+        }
+    }
+}
