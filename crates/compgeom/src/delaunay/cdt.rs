@@ -118,8 +118,12 @@ pub fn polygon_delaunay_with_points(points: &[Point2], polygons: &[Polygon]) -> 
 }
 
 fn build(all: &[Point2], pairs: &[(usize, usize)], interior_only: bool) -> Result<Cdt> {
-    if all.len() >= u32::MAX as usize - 1 {
-        return Err(Error::InvalidInput("too many points".into()));
+    if all.len() > super::MAX_POINTS {
+        return Err(Error::InvalidInput(format!(
+            "{} points and constraint endpoints: at most {} are supported",
+            all.len(),
+            super::MAX_POINTS
+        )));
     }
     let (mesh, rep) = fast::triangulate(all);
     let Some(mut mesh) = mesh else {

@@ -104,11 +104,16 @@ impl DelaunayOptions {
     }
 }
 
+/// The most points [`DelaunayAlgorithm::Default`] accepts (its `u32` half-edge indices).
+pub const MAX_POINTS: usize = 700_000_000;
+/// The most points [`DelaunayAlgorithm::Incremental`] accepts (its history DAG is larger).
+pub const MAX_POINTS_INCREMENTAL: usize = 150_000_000;
+
 /// The Delaunay triangulation of `points` by the default (fastest) algorithm.
 ///
 /// # Errors
 /// `Error::NonFinite` for a NaN or infinite coordinate; `Error::InvalidInput` for more than
-/// `u32::MAX - 1` points.
+/// [`MAX_POINTS`] points.
 pub fn delaunay(points: &[Point2]) -> Result<Triangulation> {
     delaunay_with(points, &DelaunayOptions::new())
 }
@@ -130,11 +135,15 @@ pub fn delaunay(points: &[Point2]) -> Result<Triangulation> {
 /// As [`delaunay`].
 pub fn delaunay_with(points: &[Point2], options: &DelaunayOptions) -> Result<Triangulation> {
     ensure_finite(points, "point")?;
-    if points.len() >= u32::MAX as usize - 1 {
+    // Half-edge indices are u32: about 6n for the default mesh, 27n for the book's DAG.
+    let limit = match options.algorithm {
+        DelaunayAlgorithm::Default => MAX_POINTS,
+        DelaunayAlgorithm::Incremental => MAX_POINTS_INCREMENTAL,
+    };
+    if points.len() > limit {
         return Err(Error::InvalidInput(format!(
-            "{} points: at most {} are supported",
-            points.len(),
-            u32::MAX - 2
+            "{} points: at most {limit} are supported by this algorithm",
+            points.len()
         )));
     }
     Ok(match options.algorithm {
