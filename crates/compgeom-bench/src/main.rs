@@ -6,6 +6,7 @@
 //! groups: see GROUPS below, or all
 //! ```
 
+mod delaunay;
 mod hull;
 mod intersect;
 mod kernel;
@@ -16,7 +17,7 @@ mod util;
 use std::process::ExitCode;
 
 /// Every group, in the order `all` runs them.
-const GROUPS: &[&str] = &["kernel", "hull", "intersect", "lp", "range"];
+const GROUPS: &[&str] = &["kernel", "hull", "intersect", "lp", "range", "delaunay"];
 
 /// Run one group; `None` if the name is unknown.
 fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
@@ -25,6 +26,7 @@ fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
         "intersect" => Some(intersect::run(quick)),
         "range" => Some(range::run(quick)),
         "lp" => Some(lp::run(quick)),
+        "delaunay" => Some(delaunay::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

@@ -19,7 +19,9 @@
 //!    and list it in `demo::SECTIONS`.
 //! 4. Add tests to `tests/cli.rs`.
 
+use crate::commands::delaunay::DelaunayArgs;
 use crate::commands::hull::HullArgs;
+use crate::commands::interpolate::InterpolateArgs;
 use crate::commands::intersect::IntersectArgs;
 use crate::commands::range::RangeArgs;
 use crate::commands::window::WindowArgs;
@@ -71,6 +73,12 @@ pub enum Command {
     /// Castability of a polyhedron: top facets and removal directions (book chapter 4).
     #[command(after_long_help = crate::commands::cast::JSON_HELP)]
     Cast(crate::commands::cast::CastArgs),
+    /// Delaunay triangulation of points in the plane (book chapter 9).
+    #[command(after_long_help = crate::commands::delaunay::JSON_HELP)]
+    Delaunay(DelaunayArgs),
+    /// Heights of the terrain over (x, y, z) samples at query points (book chapter 9).
+    #[command(after_long_help = crate::commands::interpolate::JSON_HELP)]
+    Interpolate(InterpolateArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

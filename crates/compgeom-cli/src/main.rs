@@ -38,6 +38,8 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
         cli::Command::Lp(args) => commands::lp::run(&args),
         cli::Command::Enclose(args) => commands::enclose::run(&args),
         cli::Command::Cast(args) => commands::cast::run(&args),
+        cli::Command::Delaunay(args) => commands::delaunay::run(&args),
+        cli::Command::Interpolate(args) => commands::interpolate::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

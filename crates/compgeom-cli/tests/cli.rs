@@ -1144,3 +1144,158 @@ mod lp_cast_command {
             .stderr(predicate::str::contains("bad.off:4"));
     }
 }
+
+mod delaunay_commands {
+    use super::*;
+
+    fn run_json(args: &[&str], path: &Path) -> Value {
+        let out = compgeom().args(args).arg(path).output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).unwrap()
+    }
+
+    #[test]
+    fn delaunay_json_fields_and_duplicates() {
+        let (_d, p) = input("pts.csv", "0 0\n1 0\n0 1\n1 1.5\n1 0\n");
+        for alg in ["default", "incremental"] {
+            let v = run_json(&["delaunay", "--verify", "--algorithm", alg], &p);
+            assert_eq!(v["vertices"].as_array().unwrap().len(), 4);
+            assert_eq!(v["triangles"].as_array().unwrap().len(), 2);
+            assert_eq!(v["input_to_vertex"], serde_json::json!([0, 1, 2, 3, 1]));
+            assert_eq!(v["verified"], true);
+            assert_eq!(v["algorithm"], alg);
+            // The diagonal is (1, 2): (0,0) is outside the circle through the others.
+            let tris: Vec<Vec<u64>> = serde_json::from_value(v["triangles"].clone()).unwrap();
+            assert!(tris.iter().all(|t| t.contains(&1) && t.contains(&2)));
+        }
+    }
+
+    #[test]
+    fn delaunay_collinear_input_is_not_an_error() {
+        let (_d, p) = input("line.csv", "0 0\n1 1\n2 2\n");
+        let v = run_json(&["delaunay", "--verify"], &p);
+        assert_eq!(v["triangles"].as_array().unwrap().len(), 0);
+        assert!(v["note"].as_str().unwrap().contains("collinear"));
+    }
+
+    #[test]
+    fn delaunay_geojson_and_svg() {
+        let (d, p) = input("pts.csv", "0 0\n4 0\n0 3\n4 3\n2 1\n");
+        let svg = d.path().join("t.svg");
+        let out = compgeom()
+            .args(["delaunay", "-f", "geojson", "--circumcircles", "2", "--svg"])
+            .arg(&svg)
+            .arg(&p)
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["type"], "MultiPolygon");
+        assert_eq!(v["coordinates"].as_array().unwrap().len(), 4);
+        let text = fs::read_to_string(&svg).unwrap();
+        assert!(text.contains("circumcircles"));
+    }
+
+    #[test]
+    fn delaunay_constraints_and_polygon() {
+        let (d, p) = input("p.csv", "0 0\n4 0\n4 4\n0 4\n2 1\n2 3\n");
+        let segs = d.path().join("s.csv");
+        fs::write(&segs, "0,0,4,4\n").unwrap();
+        let out = compgeom()
+            .args(["delaunay", "--verify", "--constraints"])
+            .arg(&segs)
+            .arg(&p)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["constraints"], serde_json::json!([[0, 2]]));
+        // Crossing constraints: bad input.
+        fs::write(&segs, "0,0,4,4\n4,0,0,4\n").unwrap();
+        compgeom()
+            .args(["delaunay", "--constraints"])
+            .arg(&segs)
+            .arg(&p)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("cross"));
+        let poly = d.path().join("poly.wkt");
+        fs::write(
+            &poly,
+            "POLYGON ((0 0, 12 0, 12 12, 0 12, 0 0), (2 2, 4 2, 4 4, 2 4, 2 2))",
+        )
+        .unwrap();
+        let (_e, empty) = input("empty.csv", "");
+        let out = compgeom()
+            .args(["delaunay", "--verify", "--polygon"])
+            .arg(&poly)
+            .arg(&empty)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["triangles"].as_array().unwrap().len(), 8);
+        assert_eq!(v["constraints"].as_array().unwrap().len(), 8);
+    }
+
+    #[test]
+    fn interpolate_heights_and_null_outside() {
+        let (d, s) = input("s.csv", "0,0,0\n4,0,4\n0,4,8\n4,4,12\n");
+        let q = d.path().join("q.csv");
+        fs::write(&q, "1 1\n5 5\n2 2\n").unwrap();
+        let out = compgeom()
+            .args(["interpolate", "--verify", "--at"])
+            .arg(&q)
+            .arg(&s)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["heights"], serde_json::json!([3.0, null, 6.0]));
+    }
+
+    #[test]
+    fn demo_has_the_delaunay_section() {
+        let dir = TempDir::new().unwrap();
+        compgeom()
+            .arg("demo")
+            .arg("--out")
+            .arg(dir.path())
+            .assert()
+            .success();
+        let html = fs::read_to_string(dir.path().join("index.html")).unwrap();
+        assert!(html.contains("Chapter 9"));
+        for f in [
+            "delaunay-disc.svg",
+            "delaunay-book.svg",
+            "delaunay-cocircular.svg",
+            "delaunay-grid.svg",
+            "delaunay-cdt.svg",
+        ] {
+            let svg = fs::read_to_string(dir.path().join(f)).unwrap();
+            assert!(svg.contains("Delaunay"), "{f}");
+        }
+    }
+
+    #[test]
+    fn delaunay_bad_input_exits_2() {
+        let (_d, p) = input("bad.csv", "0 0\n1 nan\n");
+        compgeom().arg("delaunay").arg(&p).assert().code(2);
+    }
+}

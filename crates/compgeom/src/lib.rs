@@ -21,6 +21,7 @@
 //! | 5 | orthogonal range searching | [`range::KdTree`], [`range::RangeTree`], [`range::LayeredRangeTree`], [`range::RangeTreeD`] |
 //! | 10 | windowing: interval, priority search and segment trees | [`windowing::IntervalTree`], [`windowing::PrioritySearchTree`], [`windowing::SegmentTree`], [`windowing::AxisParallelWindow`], [`windowing::SegmentWindow`] |
 //! | 4 | half-plane intersection, linear programming, smallest enclosing disc, casting | [`lp::intersect_halfplanes`], [`lp::lp2d`], [`lp::lp_d`], [`lp::smallest_enclosing_disc`], [`lp::castability`] |
+//! | 9 | Delaunay triangulation, constrained Delaunay, terrains, EMST | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::constrained_delaunay`], [`delaunay::polygon_delaunay`], [`delaunay::Terrain`], [`delaunay::euclidean_mst`], [`delaunay::verify_delaunay`], [`delaunay::verify_cdt`] |
 //!
 //! ## Exactness
 //!
@@ -31,6 +32,7 @@
 #![deny(missing_docs)]
 #![deny(rustdoc::broken_intra_doc_links)]
 
+pub mod delaunay;
 mod error;
 pub mod hull;
 pub mod intersect;

@@ -2,9 +2,11 @@
 //! command adds itself.
 
 pub mod cast;
+pub mod delaunay;
 pub mod enclose;
 pub mod halfplanes;
 pub mod hull;
+pub mod interpolate;
 pub mod intersect;
 pub mod lp;
 pub mod range;

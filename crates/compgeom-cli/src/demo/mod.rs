@@ -6,6 +6,7 @@
 //! A section computes with the library, verifies its results (a failure exits 1), draws with
 //! `compgeom::render`, and saves each picture with [`Demo::figure`].
 
+mod delaunay;
 mod hull;
 mod intersect;
 mod lp;
@@ -36,6 +37,7 @@ const SECTIONS: &[SectionFn] = &[
     intersect::section,
     lp::section,
     range::section,
+    delaunay::section,
 ];
 
 /// What a section needs: where to put its pictures.

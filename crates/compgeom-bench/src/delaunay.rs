@@ -1,0 +1,212 @@
+//! Delaunay triangulation (book chapter 9): compgeom's default and the book's incremental
+//! variant against spade (`bulk_load`) and delaunator, on uniform points and an integer
+//! grid; the 1e5 → 1e6 growth of each.
+//!
+//! Each peer gets its own point type built outside the clock. Answers are checked once,
+//! outside the clock: compgeom's result by its exact verifier (on the smaller inputs), and
+//! every library must report the same number of triangles (the count is unique, even on
+//! the cocircular grid).
+
+use crate::util::{best_of, ms, Rng};
+use compgeom::delaunay::{
+    constrained_delaunay, delaunay, delaunay_with, polygon_delaunay, verify_delaunay,
+    DelaunayAlgorithm, DelaunayOptions,
+};
+use compgeom::Point2;
+use spade::Triangulation as _;
+use std::time::Duration;
+
+struct Row {
+    name: String,
+    n: usize,
+    default: Duration,
+    book: Duration,
+    spade: Duration,
+    delaunator: Duration,
+}
+
+fn uniform(n: usize, seed: u64) -> Vec<Point2> {
+    let mut r = Rng::new(seed);
+    (0..n).map(|_| Point2::new(r.unit(), r.unit())).collect()
+}
+
+fn grid(side: usize) -> Vec<Point2> {
+    (0..side * side)
+        .map(|i| Point2::new((i % side) as f64, (i / side) as f64))
+        .collect()
+}
+
+fn measure(name: String, pts: &[Point2], runs: usize, verify: bool) -> Result<Row, String> {
+    let book_opts = DelaunayOptions::new().with_algorithm(DelaunayAlgorithm::Incremental);
+    let sp: Vec<spade::Point2<f64>> = pts.iter().map(|p| spade::Point2::new(p.x, p.y)).collect();
+    let dl: Vec<delaunator::Point> = pts
+        .iter()
+        .map(|p| delaunator::Point { x: p.x, y: p.y })
+        .collect();
+
+    // Check once, outside the clock.
+    let ours = delaunay(pts).map_err(|e| e.to_string())?;
+    if verify {
+        verify_delaunay(&ours).map_err(|e| e.to_string())?;
+    }
+    let book = delaunay_with(pts, &book_opts).map_err(|e| e.to_string())?;
+    let spade_t = spade::DelaunayTriangulation::<spade::Point2<f64>>::bulk_load(sp.clone())
+        .map_err(|e| format!("spade: {e:?}"))?;
+    let dl_t = delaunator::triangulate(&dl);
+    let counts = [
+        ours.triangles().len(),
+        book.triangles().len(),
+        spade_t.num_inner_faces(),
+        dl_t.triangles.len() / 3,
+    ];
+    if counts.iter().any(|&c| c != counts[0]) {
+        return Err(format!(
+            "{name}: triangle counts differ (compgeom, book, spade, delaunator) = {counts:?}"
+        ));
+    }
+
+    Ok(Row {
+        default: best_of(runs, || delaunay(pts)),
+        book: best_of(runs, || delaunay_with(pts, &book_opts)),
+        spade: best_of(runs, || {
+            spade::DelaunayTriangulation::<spade::Point2<f64>>::bulk_load(sp.clone())
+        }),
+        delaunator: best_of(runs, || delaunator::triangulate(&dl)),
+        name,
+        n: pts.len(),
+    })
+}
+
+/// Run the group.
+pub fn run(quick: bool) -> Result<(), String> {
+    let (small, large, side) = if quick {
+        (10_000, 100_000, 300)
+    } else {
+        (100_000, 1_000_000, 1000)
+    };
+    let runs = if quick { 2 } else { 3 };
+    let rows = [
+        measure(format!("uniform {small}"), &uniform(small, 1), runs, true)?,
+        measure(format!("uniform {large}"), &uniform(large, 2), runs, !quick)?,
+        measure(format!("grid {side}x{side}"), &grid(side), runs, true)?,
+    ];
+    println!("Delaunay: times in ms (best of {runs}); ratio = compgeom default / fastest peer (< 1 = compgeom faster)");
+    println!(
+        "{:<18} {:>9} {:>10} {:>10} {:>10} {:>11} {:>7} {:>10}",
+        "input", "n", "default", "book", "spade", "delaunator", "ratio", "book/def"
+    );
+    for r in &rows {
+        let peer = r.spade.min(r.delaunator);
+        println!(
+            "{:<18} {:>9} {:>10.1} {:>10.1} {:>10.1} {:>11.1} {:>7.2} {:>10.2}",
+            r.name,
+            r.n,
+            ms(r.default),
+            ms(r.book),
+            ms(r.spade),
+            ms(r.delaunator),
+            ms(r.default) / ms(peer),
+            ms(r.book) / ms(r.default)
+        );
+    }
+    cdt(quick)?;
+    let g = |f: fn(&Row) -> Duration| ms(f(&rows[1])) / ms(f(&rows[0]));
+    println!(
+        "growth {small} -> {large} (x{}): default {:.1}, book {:.1}, spade {:.1}, delaunator {:.1}",
+        large / small,
+        g(|r| r.default),
+        g(|r| r.book),
+        g(|r| r.spade),
+        g(|r| r.delaunator)
+    );
+    Ok(())
+}
+
+/// A polygon with holes: a circle of `outer` vertices and a `k` x `k` grid of circular holes of
+/// `hole` vertices each, plus the interior points of a uniform sample.
+fn holey(outer: usize, k: usize, hole: usize) -> compgeom::Polygon {
+    let ring = |cx: f64, cy: f64, r: f64, n: usize, ccw: bool| -> Vec<Point2> {
+        (0..n)
+            .map(|i| {
+                let t = i as f64 / n as f64 * std::f64::consts::TAU;
+                let t = if ccw { t } else { -t };
+                Point2::new(cx + r * t.cos(), cy + r * t.sin())
+            })
+            .collect()
+    };
+    let mut holes = Vec::new();
+    let step = 1.2 / k as f64;
+    for i in 0..k {
+        for j in 0..k {
+            let (cx, cy) = (
+                -0.6 + (i as f64 + 0.5) * step,
+                -0.6 + (j as f64 + 0.5) * step,
+            );
+            holes.push(ring(cx, cy, step * 0.3, hole, false));
+        }
+    }
+    compgeom::Polygon::new(ring(0.0, 0.0, 1.0, outer, true), holes)
+}
+
+/// CDT of a polygon with holes: compgeom's `polygon_delaunay` (which also removes the
+/// outside and the holes) against spade's `bulk_load_cdt` (the whole hull, no removal).
+fn cdt(quick: bool) -> Result<(), String> {
+    let (outer, k, hole) = if quick {
+        (2_000, 10, 50)
+    } else {
+        (20_000, 30, 100)
+    };
+    let poly = holey(outer, k, hole);
+    let mut verts: Vec<Point2> = Vec::new();
+    let mut edges: Vec<[usize; 2]> = Vec::new();
+    for ring in poly.rings() {
+        let base = verts.len();
+        verts.extend_from_slice(ring);
+        for i in 0..ring.len() {
+            edges.push([base + i, base + (i + 1) % ring.len()]);
+        }
+    }
+    let segs: Vec<compgeom::Segment2> = edges
+        .iter()
+        .map(|e| compgeom::Segment2::new(verts[e[0]], verts[e[1]]))
+        .collect();
+    let sp: Vec<spade::Point2<f64>> = verts.iter().map(|p| spade::Point2::new(p.x, p.y)).collect();
+    // Check once: the full CDTs have the same size; the polygon CDT keeps n + 2h - 2 triangles.
+    let full = constrained_delaunay(&verts, &segs).map_err(|e| e.to_string())?;
+    let ours = polygon_delaunay(std::slice::from_ref(&poly)).map_err(|e| e.to_string())?;
+    compgeom::delaunay::verify_cdt(&ours).map_err(|e| e.to_string())?;
+    let theirs = spade::ConstrainedDelaunayTriangulation::<spade::Point2<f64>>::bulk_load_cdt(
+        sp.clone(),
+        edges.clone(),
+    )
+    .map_err(|e| format!("spade: {e:?}"))?;
+    if full.triangulation.triangles().len() != theirs.num_inner_faces() {
+        return Err(format!(
+            "CDT sizes differ: compgeom {} vs spade {}",
+            full.triangulation.triangles().len(),
+            theirs.num_inner_faces()
+        ));
+    }
+    let h = k * k;
+    if ours.triangulation.triangles().len() != verts.len() + 2 * h - 2 {
+        return Err("polygon CDT has the wrong triangle count".into());
+    }
+    let runs = 3;
+    let t_full = best_of(runs, || constrained_delaunay(&verts, &segs));
+    let t_poly = best_of(runs, || polygon_delaunay(std::slice::from_ref(&poly)));
+    let t_spade = best_of(runs, || {
+        spade::ConstrainedDelaunayTriangulation::<spade::Point2<f64>>::bulk_load_cdt(
+            sp.clone(),
+            edges.clone(),
+        )
+    });
+    println!(
+        "CDT, polygon with {h} holes, {} vertices: compgeom full {:.1} ms, compgeom polygon (holes removed) {:.1} ms, spade bulk_load_cdt {:.1} ms; ratio full/spade {:.2}",
+        verts.len(),
+        ms(t_full),
+        ms(t_poly),
+        ms(t_spade),
+        ms(t_full) / ms(t_spade)
+    );
+    Ok(())
+}

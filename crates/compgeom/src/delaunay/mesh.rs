@@ -1,0 +1,330 @@
+//! The working triangulation: triangles as half-edge triples, closed by ghost triangles.
+//!
+//! Triangle `t` owns half-edges `3t, 3t+1, 3t+2`; half-edge `h` runs from `v[h]` to
+//! `v[next(h)]`, counter-clockwise around its triangle, and `twin[h]` is the opposite
+//! half-edge in the neighbouring triangle. Every hull edge `a → b` of a real triangle
+//! has a *ghost* triangle `(b, a, GHOST)` on its outer side, so every half-edge has a twin
+//! and the hull needs no special cases. The ghost vertex is the "point at infinity" of the
+//! closed surface: a ghost triangle `(u, w, GHOST)` contains the open half-plane to the left
+//! of `u → w` (outside the hull), and the in-circle test against it is the orientation
+//! test of `u → w` — the exact limit of a circle through `u`, `w` and a point moving to
+//! infinity, with no big coordinates anywhere.
+//!
+//! Vertex ids are indices into the caller's point slice (`u32`).
+
+use super::pred::{in_circle, orient, strictly_between};
+use crate::Point2;
+
+/// The vertex at infinity of ghost triangles.
+pub(crate) const GHOST: u32 = u32::MAX;
+/// "No half-edge / triangle".
+pub(crate) const NONE: u32 = u32::MAX;
+
+#[inline(always)]
+pub(crate) fn next(h: u32) -> u32 {
+    if h % 3 == 2 {
+        h - 2
+    } else {
+        h + 1
+    }
+}
+
+#[inline(always)]
+pub(crate) fn prev(h: u32) -> u32 {
+    if h % 3 == 0 {
+        h + 2
+    } else {
+        h - 1
+    }
+}
+
+/// Where a point was found by [`Mesh::locate`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Found {
+    /// Strictly inside real triangle `t`, or strictly outside the hull beyond the real edge of
+    /// ghost triangle `t`.
+    Face(u32),
+    /// In the relative interior of the edge of half-edge `h` (`h` in a real triangle).
+    Edge(u32),
+    /// Equal to vertex `v`.
+    Vertex(u32),
+}
+
+/// A Delaunay triangulation under construction (see the module docs).
+pub(crate) struct Mesh<'a> {
+    pub(crate) pts: &'a [Point2],
+    pub(crate) v: Vec<u32>,
+    pub(crate) twin: Vec<u32>,
+    /// Some real triangle (a start for walks).
+    pub(crate) last: u32,
+    /// Flip stack, kept to avoid reallocation.
+    stack: Vec<u32>,
+}
+
+impl<'a> Mesh<'a> {
+    /// The triangle `a, b, c` (counter-clockwise, distinct, not collinear) with its three
+    /// ghosts.
+    pub(crate) fn new(pts: &'a [Point2], a: u32, b: u32, c: u32, capacity: usize) -> Self {
+        let mut m = Mesh {
+            pts,
+            v: Vec::with_capacity(capacity * 6),
+            twin: Vec::with_capacity(capacity * 6),
+            last: 0,
+            stack: Vec::new(),
+        };
+        let t = m.add(a, b, c);
+        let g_ab = m.add(b, a, GHOST);
+        let g_bc = m.add(c, b, GHOST);
+        let g_ca = m.add(a, c, GHOST);
+        m.link(3 * t, 3 * g_ab);
+        m.link(3 * t + 1, 3 * g_bc);
+        m.link(3 * t + 2, 3 * g_ca);
+        m.link(3 * g_ab + 2, 3 * g_bc + 1);
+        m.link(3 * g_bc + 2, 3 * g_ca + 1);
+        m.link(3 * g_ca + 2, 3 * g_ab + 1);
+        m.last = t;
+        m
+    }
+
+    #[inline(always)]
+    fn add(&mut self, a: u32, b: u32, c: u32) -> u32 {
+        let t = (self.v.len() / 3) as u32;
+        self.v.extend_from_slice(&[a, b, c]);
+        self.twin.extend_from_slice(&[NONE, NONE, NONE]);
+        t
+    }
+
+    #[inline(always)]
+    fn set(&mut self, t: u32, a: u32, b: u32, c: u32) {
+        let i = 3 * t as usize;
+        self.v[i] = a;
+        self.v[i + 1] = b;
+        self.v[i + 2] = c;
+    }
+
+    #[inline(always)]
+    pub(crate) fn link(&mut self, h: u32, g: u32) {
+        self.twin[h as usize] = g;
+        self.twin[g as usize] = h;
+    }
+
+    #[inline(always)]
+    pub(crate) fn pt(&self, v: u32) -> Point2 {
+        self.pts[v as usize]
+    }
+
+    /// Number of triangle slots (real and ghost).
+    pub(crate) fn slots(&self) -> u32 {
+        (self.v.len() / 3) as u32
+    }
+
+    #[inline(always)]
+    pub(crate) fn is_ghost(&self, t: u32) -> bool {
+        let i = 3 * t as usize;
+        self.v[i] == GHOST || self.v[i + 1] == GHOST || self.v[i + 2] == GHOST
+    }
+
+    /// Walks from `self.last` towards `p` (the visibility walk; it terminates in a Delaunay
+    /// triangulation). Every test is an exact orientation.
+    pub(crate) fn locate(&self, p: Point2) -> Found {
+        let mut t = self.last;
+        if self.is_ghost(t) {
+            t = self.real_neighbour_of_ghost(t);
+        }
+        // The half-edge we entered through; p is known to be strictly left of it.
+        let mut from = NONE;
+        // A cheap, deterministic rotation of the first edge tested, so that the walk cannot
+        // be steered into a long zig-zag by the same edge order each time.
+        let mut rot = 0u32;
+        loop {
+            let base = 3 * t;
+            let mut zero_mask = 0u32;
+            let mut moved = false;
+            for k in 0..3 {
+                let h = base + (k + rot) % 3;
+                if h == from {
+                    continue;
+                }
+                let a = self.v[h as usize];
+                let b = self.v[next(h) as usize];
+                let s = orient(self.pt(a), self.pt(b), p);
+                if s < 0 {
+                    let g = self.twin[h as usize];
+                    t = g / 3;
+                    from = g;
+                    moved = true;
+                    break;
+                } else if s == 0 {
+                    zero_mask |= 1 << (h - base);
+                }
+            }
+            rot = (rot + 1) % 3;
+            if !moved {
+                return self.classify(base, zero_mask);
+            }
+            if self.is_ghost(t) {
+                return Found::Face(t);
+            }
+        }
+    }
+
+    fn classify(&self, base: u32, zero_mask: u32) -> Found {
+        match zero_mask.count_ones() {
+            0 => Found::Face(base / 3),
+            1 => Found::Edge(base + zero_mask.trailing_zeros()),
+            _ => {
+                // Two edges through p: p is their common vertex.
+                let i = if zero_mask & 1 != 0 && zero_mask & 2 != 0 {
+                    1
+                } else if zero_mask & 2 != 0 && zero_mask & 4 != 0 {
+                    2
+                } else {
+                    0
+                };
+                Found::Vertex(self.v[(base + i) as usize])
+            }
+        }
+    }
+
+    pub(crate) fn real_neighbour_of_ghost(&self, t: u32) -> u32 {
+        for k in 0..3 {
+            let h = 3 * t + k;
+            if self.v[h as usize] != GHOST && self.v[next(h) as usize] != GHOST {
+                return self.twin[h as usize] / 3;
+            }
+        }
+        unreachable_ghost()
+    }
+
+    /// Inserts vertex `p` (an index into `pts`) found at `at`, then restores the Delaunay
+    /// property by flips. `at` must not be `Found::Vertex`.
+    pub(crate) fn insert(&mut self, p: u32, at: Found) {
+        match at {
+            Found::Face(t) => self.split_face(t, p),
+            Found::Edge(h) => self.split_edge(h, p),
+            Found::Vertex(_) => {}
+        }
+        self.legalize_all(p);
+    }
+
+    fn split_face(&mut self, t: u32, p: u32) {
+        let i = 3 * t as usize;
+        let (a, b, c) = (self.v[i], self.v[i + 1], self.v[i + 2]);
+        let (ta, tb, tc) = (self.twin[i], self.twin[i + 1], self.twin[i + 2]);
+        self.set(t, a, b, p);
+        let t1 = self.add(b, c, p);
+        let t2 = self.add(c, a, p);
+        self.link(3 * t, ta);
+        self.link(3 * t1, tb);
+        self.link(3 * t2, tc);
+        self.link(3 * t + 1, 3 * t1 + 2);
+        self.link(3 * t1 + 1, 3 * t2 + 2);
+        self.link(3 * t2 + 1, 3 * t + 2);
+        self.stack.extend_from_slice(&[3 * t, 3 * t1, 3 * t2]);
+        self.last = if self.is_ghost(t) { t1 } else { t };
+        if self.is_ghost(self.last) {
+            self.last = t2;
+        }
+    }
+
+    fn split_edge(&mut self, h: u32, p: u32) {
+        let f = self.twin[h as usize];
+        let (t, u) = (h / 3, f / 3);
+        let a = self.v[h as usize];
+        let b = self.v[next(h) as usize];
+        let c = self.v[prev(h) as usize];
+        let d = self.v[prev(f) as usize];
+        let tw_bc = self.twin[next(h) as usize];
+        let tw_ca = self.twin[prev(h) as usize];
+        let tw_ad = self.twin[next(f) as usize];
+        let tw_db = self.twin[prev(f) as usize];
+        self.set(t, b, c, p);
+        self.set(u, c, a, p);
+        let t2 = self.add(a, d, p);
+        let t3 = self.add(d, b, p);
+        self.link(3 * t, tw_bc);
+        self.link(3 * u, tw_ca);
+        self.link(3 * t2, tw_ad);
+        self.link(3 * t3, tw_db);
+        self.link(3 * t + 1, 3 * u + 2);
+        self.link(3 * u + 1, 3 * t2 + 2);
+        self.link(3 * t2 + 1, 3 * t3 + 2);
+        self.link(3 * t3 + 1, 3 * t + 2);
+        self.stack
+            .extend_from_slice(&[3 * t, 3 * u, 3 * t2, 3 * t3]);
+        self.last = t;
+    }
+
+    /// Is `q` strictly inside the circumcircle of triangle `(a, b, c)` (ccw; one of them may
+    /// be the ghost vertex)?
+    #[inline(always)]
+    pub(crate) fn inside(&self, a: u32, b: u32, c: u32, q: Point2) -> bool {
+        let (u, w) = if c == GHOST {
+            (a, b)
+        } else if a == GHOST {
+            (b, c)
+        } else if b == GHOST {
+            (c, a)
+        } else {
+            return in_circle(self.pt(a), self.pt(b), self.pt(c), q) > 0;
+        };
+        let (pu, pw) = (self.pt(u), self.pt(w));
+        match orient(pu, pw, q) {
+            1 => true,
+            0 => strictly_between(pu, pw, q),
+            _ => false,
+        }
+    }
+
+    /// LEGALIZEEDGE for every half-edge on the stack (each has the new point `p` opposite).
+    fn legalize_all(&mut self, p: u32) {
+        let pp = self.pt(p);
+        while let Some(h) = self.stack.pop() {
+            let f = self.twin[h as usize];
+            let a = self.v[h as usize];
+            let b = self.v[next(h) as usize];
+            let d = self.v[prev(f) as usize];
+            if d == GHOST || !self.inside(b, a, d, pp) {
+                continue;
+            }
+            self.flip(h);
+            let (t, u) = (h / 3, f / 3);
+            self.stack.push(3 * t + 1);
+            self.stack.push(3 * u + 1);
+        }
+    }
+
+    /// Flips the edge of half-edge `h` (triangle `(a, b, p)` with `h = a → b`, and its twin
+    /// triangle `(b, a, d)`) into `(p, a, d)`, `(p, d, b)`, reusing both slots.
+    pub(crate) fn flip(&mut self, h: u32) {
+        let f = self.twin[h as usize];
+        let (t, u) = (h / 3, f / 3);
+        let a = self.v[h as usize];
+        let b = self.v[next(h) as usize];
+        let p = self.v[prev(h) as usize];
+        let d = self.v[prev(f) as usize];
+        let tw_pa = self.twin[prev(h) as usize];
+        let tw_bp = self.twin[next(h) as usize];
+        let tw_ad = self.twin[next(f) as usize];
+        let tw_db = self.twin[prev(f) as usize];
+        self.set(t, p, a, d);
+        self.set(u, p, d, b);
+        self.link(3 * t, tw_pa);
+        self.link(3 * t + 1, tw_ad);
+        self.link(3 * t + 2, 3 * u);
+        self.link(3 * u + 1, tw_db);
+        self.link(3 * u + 2, tw_bp);
+        if !self.is_ghost(t) {
+            self.last = t;
+        } else if !self.is_ghost(u) {
+            self.last = u;
+        }
+    }
+}
+
+#[cold]
+fn unreachable_ghost() -> u32 {
+    // A ghost triangle always has exactly one real edge; reaching here would be a bug in
+    // the mesh updates, which the tests' validation would catch first.
+    0
+}

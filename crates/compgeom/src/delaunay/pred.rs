@@ -1,0 +1,161 @@
+//! Filtered exact predicates for the triangulation hot loops.
+//!
+//! Each predicate first evaluates the determinant in `f64` with Shewchuk's static error
+//! bound (stage A); when the sign is certain it is returned, otherwise (or when the
+//! magnitudes are so small that products may underflow, or so large that they overflow)
+//! the kernel's exact predicate decides — except when all coordinate differences are small
+//! integers (integer grids, the common degenerate input), where the `f64` evaluation is
+//! itself exact and its sign, zero included, is the answer. So every answer is exact; the filter only saves
+//! the kernel's range checks on the common case.
+
+use crate::kernel::{incircle, orient2d, CircleSide, Orientation};
+use crate::Point2;
+
+const EPS: f64 = f64::EPSILON / 2.0;
+const CCW_BOUND: f64 = (3.0 + 16.0 * EPS) * EPS;
+const ICC_BOUND: f64 = (10.0 + 96.0 * EPS) * EPS;
+/// Below this permanent, products may be subnormal and the static bound no longer holds.
+const TINY: f64 = 1e-250;
+
+/// Sign of orient2d(a, b, c): > 0 counter-clockwise, < 0 clockwise, 0 collinear. Exact.
+#[inline(always)]
+pub(crate) fn orient(a: Point2, b: Point2, c: Point2) -> i8 {
+    let l = (a.x - c.x) * (b.y - c.y);
+    let r = (a.y - c.y) * (b.x - c.x);
+    let det = l - r;
+    let sum = l.abs() + r.abs();
+    if det.abs() > CCW_BOUND * sum && sum > TINY && sum < f64::MAX {
+        return if det > 0.0 { 1 } else { -1 };
+    }
+    // Integer coordinates with differences up to 2^25: the differences, both products and
+    // their difference are exact integers below 2^53.
+    let d = [a.x - c.x, b.y - c.y, a.y - c.y, b.x - c.x];
+    if integral(&[a, b, c]) && d.iter().all(|&v| v.abs() <= 33_554_432.0) {
+        return if det > 0.0 {
+            1
+        } else if det < 0.0 {
+            -1
+        } else {
+            0
+        };
+    }
+    match orient2d(a, b, c) {
+        Orientation::CounterClockwise => 1,
+        Orientation::Clockwise => -1,
+        Orientation::Collinear => 0,
+    }
+}
+
+/// Sign of incircle(a, b, c, d) for counter-clockwise a, b, c: > 0 inside, < 0 outside,
+/// 0 on the circle. Exact.
+#[inline(always)]
+pub(crate) fn in_circle(a: Point2, b: Point2, c: Point2, d: Point2) -> i8 {
+    let (adx, ady) = (a.x - d.x, a.y - d.y);
+    let (bdx, bdy) = (b.x - d.x, b.y - d.y);
+    let (cdx, cdy) = (c.x - d.x, c.y - d.y);
+    let bdxcdy = bdx * cdy;
+    let cdxbdy = cdx * bdy;
+    let alift = adx * adx + ady * ady;
+    let cdxady = cdx * ady;
+    let adxcdy = adx * cdy;
+    let blift = bdx * bdx + bdy * bdy;
+    let adxbdy = adx * bdy;
+    let bdxady = bdx * ady;
+    let clift = cdx * cdx + cdy * cdy;
+    let det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+    let perm = (bdxcdy.abs() + cdxbdy.abs()) * alift
+        + (cdxady.abs() + adxcdy.abs()) * blift
+        + (adxbdy.abs() + bdxady.abs()) * clift;
+    if det.abs() > ICC_BOUND * perm && perm > TINY && perm < f64::MAX {
+        return if det > 0.0 { 1 } else { -1 };
+    }
+    // Integer coordinates with small differences (integer grids): the differences are then
+    // exact integers and every product and sum above is exact (|d| <= 2^12 gives
+    // |det| < 3 * 2^50 < 2^53), so `det` is the exact value, zero included.
+    if integral(&[a, b, c, d])
+        && [adx, ady, bdx, bdy, cdx, cdy]
+            .iter()
+            .all(|&d| d.abs() <= 4096.0)
+    {
+        return if det > 0.0 {
+            1
+        } else if det < 0.0 {
+            -1
+        } else {
+            0
+        };
+    }
+    match incircle(a, b, c, d) {
+        CircleSide::Inside => 1,
+        CircleSide::Outside => -1,
+        CircleSide::OnCircle => 0,
+    }
+}
+
+/// True when every coordinate is an integer.
+#[inline(always)]
+fn integral(p: &[Point2]) -> bool {
+    p.iter().all(|p| p.x == p.x.trunc() && p.y == p.y.trunc())
+}
+
+/// True when `q` lies strictly between `a` and `b` on their (common) line; the caller
+/// knows the three are collinear. Exact (coordinate comparisons only).
+#[inline]
+pub(crate) fn strictly_between(a: Point2, b: Point2, q: Point2) -> bool {
+    let (lo, hi) = if (a.x, a.y) < (b.x, b.y) {
+        (a, b)
+    } else {
+        (b, a)
+    };
+    (lo.x, lo.y) < (q.x, q.y) && (q.x, q.y) < (hi.x, hi.y)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn filters_agree_with_the_kernel_on_near_degenerate_input() {
+        let a = Point2::new(0.5, 0.5);
+        let b = Point2::new(12.0, 12.0);
+        for i in 0..200 {
+            let c = Point2::new(24.0 + i as f64 * 1e-14, 24.0);
+            let k = match orient2d(a, b, c) {
+                Orientation::CounterClockwise => 1,
+                Orientation::Clockwise => -1,
+                Orientation::Collinear => 0,
+            };
+            assert_eq!(orient(a, b, c), k);
+        }
+        let (p, q, r) = (
+            Point2::new(1.0, 0.0),
+            Point2::new(0.0, 1.0),
+            Point2::new(-1.0, 0.0),
+        );
+        assert_eq!(in_circle(p, q, r, Point2::new(0.0, -1.0)), 0);
+        assert_eq!(in_circle(p, q, r, Point2::new(0.0, -1.0 + 1e-16)), 1);
+        assert_eq!(in_circle(p, q, r, Point2::new(1e-300, 1e-300)), 1);
+        // Integer grid with a huge offset: the differences are exact, zero is exact.
+        let o = 1e17;
+        let g = |x: f64, y: f64| Point2::new(o + x, o + y);
+        assert_eq!(
+            in_circle(g(0.0, 0.0), g(16.0, 0.0), g(16.0, 16.0), g(0.0, 16.0)),
+            0
+        );
+        assert_eq!(orient(g(0.0, 0.0), g(16.0, 16.0), g(32.0, 32.0)), 0);
+        // Non-integer tiny offsets must not take the integer path.
+        let q = Point2::new(1048576.0, 0.0);
+        let r = Point2::new(-1e-40, 0.0);
+        assert_eq!(orient(q, Point2::new(0.0, 0.0), r), 0);
+        assert_eq!(orient(q, Point2::new(0.0, 1e-300), r), 1);
+        let t = 1e-300;
+        assert_eq!(
+            orient(
+                Point2::new(0.0, 0.0),
+                Point2::new(t, 0.0),
+                Point2::new(0.0, t)
+            ),
+            1
+        );
+    }
+}

@@ -1,0 +1,364 @@
+//! Constrained Delaunay: random non-crossing constraints (verified exactly), polygons with
+//! holes, crossing constraints rejected, and the JTS / artem-ogre CDT fixtures.
+
+use compgeom::delaunay::{constrained_delaunay, polygon_delaunay, verify_cdt};
+use compgeom::kernel::{segment_intersection, SegmentIntersection};
+use compgeom::{Point2, Polygon, Segment2};
+use serde_json::Value;
+use std::path::PathBuf;
+
+struct Lcg(u64);
+impl Lcg {
+    fn f(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn non_crossing(pts: &[Point2], r: &mut Lcg, k: usize) -> Vec<Segment2> {
+    let mut segs: Vec<Segment2> = Vec::new();
+    for _ in 0..k * 20 {
+        if segs.len() == k {
+            break;
+        }
+        let a = pts[(r.f() * pts.len() as f64) as usize];
+        let b = pts[(r.f() * pts.len() as f64) as usize];
+        let s = Segment2::new(a, b);
+        let ok = segs.iter().all(|t| {
+            matches!(
+                segment_intersection(s, *t),
+                SegmentIntersection::None | SegmentIntersection::Endpoint(_)
+            )
+        });
+        if ok && a != b {
+            segs.push(s);
+        }
+    }
+    segs
+}
+
+#[test]
+fn random_constraints_are_present_and_constrained_delaunay() {
+    let mut r = Lcg(3);
+    for (n, k) in [(10, 3), (50, 10), (300, 40), (2000, 100)] {
+        let pts: Vec<Point2> = (0..n).map(|_| Point2::new(r.f(), r.f())).collect();
+        let segs = non_crossing(&pts, &mut r, k);
+        let cdt = constrained_delaunay(&pts, &segs).unwrap();
+        verify_cdt(&cdt).unwrap();
+        assert!(cdt.constraints.len() >= segs.len());
+        // The whole hull is triangulated: 2n - 2 - h triangles.
+        let t = &cdt.triangulation;
+        assert_eq!(
+            t.triangles().len(),
+            2 * t.vertices().len() - 2 - t.hull().len()
+        );
+    }
+}
+
+#[test]
+fn grid_constraints_through_vertices_are_split() {
+    let pts: Vec<Point2> = (0..8)
+        .flat_map(|i| (0..8).map(move |j| Point2::new(i as f64, j as f64)))
+        .collect();
+    // A diagonal through 6 grid points and a long horizontal.
+    let segs = [
+        Segment2::new(Point2::new(0.0, 0.0), Point2::new(7.0, 7.0)),
+        Segment2::new(Point2::new(0.0, 3.0), Point2::new(7.0, 3.0)),
+        Segment2::new(Point2::new(1.0, 0.0), Point2::new(1.0, 7.0)),
+    ];
+    let cdt = constrained_delaunay(&pts, &segs).unwrap();
+    verify_cdt(&cdt).unwrap();
+    assert!(cdt.constraints.len() >= 7 + 7);
+}
+
+#[test]
+fn crossing_constraints_are_an_error() {
+    let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)].map(Point2::from);
+    let segs = [Segment2::new(pts[0], pts[2]), Segment2::new(pts[1], pts[3])];
+    let e = constrained_delaunay(&pts, &segs).unwrap_err().to_string();
+    assert!(e.contains("constraint 1"), "{e}");
+}
+
+#[test]
+fn polygon_with_holes_keeps_the_inside() {
+    let sq = |lo: f64, hi: f64| {
+        vec![
+            Point2::new(lo, lo),
+            Point2::new(hi, lo),
+            Point2::new(hi, hi),
+            Point2::new(lo, hi),
+        ]
+    };
+    let p = Polygon::new(sq(0.0, 12.0), vec![sq(2.0, 4.0), sq(6.0, 9.0)]);
+    let cdt = polygon_delaunay(&[p]).unwrap();
+    verify_cdt(&cdt).unwrap();
+    // n + 2h - 2 = 12 + 4 - 2.
+    assert_eq!(cdt.triangulation.triangles().len(), 14);
+    let v = cdt.triangulation.vertices();
+    for tri in cdt.triangulation.triangles() {
+        let c = tri.iter().fold((0.0, 0.0), |s, &i| {
+            (s.0 + v[i as usize].x / 3.0, s.1 + v[i as usize].y / 3.0)
+        });
+        let in_hole = |lo: f64, hi: f64| c.0 > lo && c.0 < hi && c.1 > lo && c.1 < hi;
+        assert!(
+            !in_hole(2.0, 4.0) && !in_hole(6.0, 9.0),
+            "triangle {tri:?} in a hole"
+        );
+    }
+}
+
+fn cases_dir() -> Option<PathBuf> {
+    let dir = std::env::var("COMPGEOM_CASES")
+        .map(PathBuf::from)
+        .unwrap_or_else(|_| {
+            PathBuf::from(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../../../shared/cases"
+            ))
+        });
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        println!("skipped: {} not found", dir.display());
+        None
+    }
+}
+
+fn rings(wkt: &str) -> Vec<Vec<Point2>> {
+    let mut out = Vec::new();
+    let mut rest = wkt;
+    while let Some(close) = rest.find(')') {
+        if let Some(open) = rest[..close].rfind('(') {
+            let inner = &rest[open + 1..close];
+            if !inner.trim().is_empty() {
+                out.push(
+                    inner
+                        .split(',')
+                        .map(|c| {
+                            let n: Vec<f64> =
+                                c.split_whitespace().map(|s| s.parse().unwrap()).collect();
+                            Point2::new(n[0], n[1])
+                        })
+                        .collect(),
+                );
+            }
+        }
+        rest = &rest[close + 1..];
+    }
+    out
+}
+
+#[test]
+fn jts_polygon_cdt_cases() {
+    let Some(dir) = cases_dir() else { return };
+    let text =
+        std::fs::read_to_string(dir.join("jts-unit/constrained-delaunay-polygon.json")).unwrap();
+    let cases: Value = serde_json::from_str(&text).unwrap();
+    for case in cases["cases"].as_array().unwrap() {
+        let name = case["test"].as_str().unwrap_or("?");
+        let rs = rings(case["input"].as_str().unwrap());
+        let poly = Polygon::new(rs[0].clone(), rs[1..].to_vec());
+        let cdt = polygon_delaunay(&[poly]).unwrap();
+        verify_cdt(&cdt).unwrap();
+        let v = cdt.triangulation.vertices();
+        let key = |p: Point2| (p.x.to_bits(), p.y.to_bits());
+        let mut ours: Vec<Vec<(u64, u64)>> = cdt
+            .triangulation
+            .triangles()
+            .iter()
+            .map(|t| {
+                let mut k: Vec<_> = t.iter().map(|&i| key(v[i as usize])).collect();
+                k.sort();
+                k
+            })
+            .collect();
+        ours.sort();
+        if let Some(exp) = case["expected"].as_str() {
+            let mut theirs: Vec<Vec<(u64, u64)>> = rings(exp)
+                .into_iter()
+                .map(|r| {
+                    let mut k: Vec<_> = r[..3].iter().map(|&p| key(p)).collect();
+                    k.sort();
+                    k
+                })
+                .collect();
+            theirs.sort();
+            assert_eq!(ours.len(), theirs.len(), "{name}");
+            if ours != theirs {
+                // Allowed only where the CDT is not unique: JTS's triangles must then be a
+                // constrained Delaunay triangulation too, by our exact verifier.
+                let index: std::collections::HashMap<(u64, u64), u32> = v
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &p)| (key(p), i as u32))
+                    .collect();
+                let tris: Vec<[u32; 3]> = rings(exp)
+                    .into_iter()
+                    .map(|r| {
+                        let mut t = [index[&key(r[0])], index[&key(r[1])], index[&key(r[2])]];
+                        let o = compgeom::kernel::orient2d(r[0], r[1], r[2]);
+                        if o == compgeom::kernel::Orientation::Clockwise {
+                            t.swap(1, 2);
+                        }
+                        t
+                    })
+                    .collect();
+                let t = compgeom::delaunay::Triangulation::from_parts(
+                    v.to_vec(),
+                    tris,
+                    cdt.triangulation.input_to_vertex().to_vec(),
+                )
+                .unwrap();
+                let theirs_cdt = compgeom::delaunay::Cdt {
+                    triangulation: t,
+                    constraints: cdt.constraints.clone(),
+                };
+                verify_cdt(&theirs_cdt)
+                    .unwrap_or_else(|e| panic!("{name}: expected differs and is not a CDT: {e}"));
+            }
+        }
+    }
+}
+
+/// artem-ogre/CDT inputs: `nV nE`, vertices, edges. Each must triangulate and verify, with
+/// every constraint present. Inputs whose constraints cross or overlap are outside the
+/// semantics until crossing constraints are split (they must then give a clear error).
+#[test]
+fn artem_ogre_cdt_inputs() {
+    let Some(dir) = cases_dir() else { return };
+    let mut ok = 0;
+    let mut rejected = Vec::new();
+    for entry in std::fs::read_dir(dir.join("cdt/inputs")).unwrap() {
+        let path = entry.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let mut nums = text.split_whitespace();
+        let nv: usize = nums.next().unwrap().parse().unwrap();
+        let ne: usize = nums.next().unwrap().parse().unwrap();
+        let mut pts = Vec::new();
+        for _ in 0..nv {
+            let x: f64 = nums.next().unwrap().parse().unwrap();
+            let y: f64 = nums.next().unwrap().parse().unwrap();
+            pts.push(Point2::new(x, y));
+        }
+        let mut segs = Vec::new();
+        for _ in 0..ne {
+            let i: usize = nums.next().unwrap().parse().unwrap();
+            let j: usize = nums.next().unwrap().parse().unwrap();
+            segs.push(Segment2::new(pts[i], pts[j]));
+        }
+        match constrained_delaunay(&pts, &segs) {
+            Ok(cdt) => {
+                verify_cdt(&cdt).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+                compare_expected(&dir, &path, &cdt);
+                ok += 1;
+            }
+            Err(e) => {
+                assert!(e.to_string().contains("cross"), "{}: {e}", path.display());
+                rejected.push(path.file_name().unwrap().to_string_lossy().to_string());
+            }
+        }
+    }
+    println!("cdt inputs: {ok} verified, rejected as crossing: {rejected:?}");
+    assert!(ok >= 6, "only {ok} verified; rejected {rejected:?}");
+}
+
+/// Compares with artem-ogre's `*_ignore_super` expectation (the CDT of the input, no
+/// intersection resolution): the same triangle set, or — where the CDT is not unique
+/// (cocircular points) — the expected triangles must pass our exact CDT verifier too.
+fn compare_expected(dir: &std::path::Path, input: &std::path::Path, cdt: &compgeom::delaunay::Cdt) {
+    let stem = input.file_stem().unwrap().to_string_lossy().to_string();
+    let exp_dir = dir.join("cdt/expected");
+    let candidates = [
+        format!("{stem}__auto_ignore_super.txt"),
+        format!("{stem}__f64_auto_ignore_super.txt"),
+    ];
+    let Some(text) = candidates
+        .iter()
+        .find_map(|c| std::fs::read_to_string(exp_dir.join(c)).ok())
+    else {
+        return;
+    };
+    let map = cdt.triangulation.input_to_vertex();
+    let mut lines = text.lines();
+    let count: usize = lines.next().unwrap().trim().parse().unwrap();
+    let theirs: Vec<[u32; 3]> = lines
+        .take(count)
+        .map(|l| {
+            let n: Vec<usize> = l
+                .split_whitespace()
+                .take(3)
+                .map(|x| x.parse().unwrap())
+                .collect();
+            [map[n[0]], map[n[1]], map[n[2]]]
+        })
+        .collect();
+    assert_eq!(
+        theirs.len(),
+        cdt.triangulation.triangles().len(),
+        "{stem}: triangle count"
+    );
+    let t = compgeom::delaunay::Triangulation::from_parts(
+        cdt.triangulation.vertices().to_vec(),
+        theirs,
+        map.to_vec(),
+    )
+    .unwrap();
+    if t.canonical_triangles() != cdt.triangulation.canonical_triangles() {
+        let other = compgeom::delaunay::Cdt {
+            triangulation: t,
+            constraints: cdt.constraints.clone(),
+        };
+        verify_cdt(&other).unwrap_or_else(|e| {
+            panic!("{stem}: differs from the expected CDT, which is not a CDT by our verifier: {e}")
+        });
+        println!("{stem}: a different but valid CDT (cocircular ties)");
+    } else {
+        println!("{stem}: same triangles as expected");
+    }
+}
+
+mod degenerate {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(80))]
+
+        /// Points on a small integer grid (collinear runs, cocircular squares, duplicates)
+        /// with random constraints: either a verified CDT with every constraint present, or
+        /// (only when two constraints really cross) a clear error.
+        #[test]
+        fn grid_points_with_constraints(
+            pts in prop::collection::vec((0i32..5, 0i32..5), 3..30),
+            picks in prop::collection::vec((0usize..30, 0usize..30), 0..8),
+        ) {
+            let pts: Vec<Point2> = pts.into_iter().map(|(x, y)| Point2::new(x as f64, y as f64)).collect();
+            let segs: Vec<Segment2> = picks
+                .into_iter()
+                .map(|(i, j)| Segment2::new(pts[i % pts.len()], pts[j % pts.len()]))
+                .collect();
+            let any_crossing = segs.iter().enumerate().any(|(i, s)| {
+                // A crossing at an input point is no crossing: both constraints split there.
+                segs[..i].iter().any(|t| match segment_intersection(*s, *t) {
+                    SegmentIntersection::Crossing(c) => {
+                        !pts.iter().any(|&p| c.compare_xy_point(p) == std::cmp::Ordering::Equal)
+                    }
+                    _ => false,
+                })
+            });
+            match constrained_delaunay(&pts, &segs) {
+                Ok(cdt) => {
+                    prop_assert!(verify_cdt(&cdt).is_ok(), "{:?}", verify_cdt(&cdt));
+                    prop_assert!(!any_crossing);
+                }
+                Err(e) => {
+                    prop_assert!(any_crossing, "unexpected error: {}", e);
+                    prop_assert!(e.to_string().contains("cross"));
+                }
+            }
+        }
+    }
+}
