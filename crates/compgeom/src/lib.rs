@@ -17,6 +17,7 @@
 //! | chapter | problem | entry points |
 //! |---|---|---|
 //! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::convex_hull_indices`], [`hull::verify_convex_hull`] |
+//! | 7 | Voronoi diagram (Fortune) | [`voronoi::voronoi_diagram`], [`voronoi::fortune_voronoi`], [`voronoi::clip_cells`], [`voronoi::verify_voronoi`], [`voronoi::NearestSite`] |
 //!
 //! ## Exactness
 //!
@@ -32,6 +33,7 @@ pub mod hull;
 pub mod io;
 pub mod kernel;
 pub mod render;
+pub mod voronoi;
 
 pub use error::{Error, Location, Result};
 pub use kernel::{
