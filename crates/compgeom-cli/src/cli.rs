@@ -20,6 +20,7 @@
 //! 4. Add tests to `tests/cli.rs`.
 
 use crate::commands::hull::HullArgs;
+use crate::commands::voronoi::VoronoiArgs;
 use crate::demo::DemoArgs;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
@@ -47,6 +48,9 @@ pub enum Command {
     /// Convex hull of points in the plane (book chapter 1).
     #[command(after_long_help = crate::commands::hull::JSON_HELP)]
     Hull(HullArgs),
+    /// Voronoi diagram of points, cells clipped to a rectangle or convex polygon (chapter 7).
+    #[command(after_long_help = crate::commands::voronoi::JSON_HELP)]
+    Voronoi(VoronoiArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

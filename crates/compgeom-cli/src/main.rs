@@ -31,6 +31,7 @@ fn main() -> ExitCode {
 fn run(cli: cli::Cli) -> Result<(), error::CliError> {
     match cli.command {
         cli::Command::Hull(args) => commands::hull::run(&args),
+        cli::Command::Voronoi(args) => commands::voronoi::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

@@ -2,3 +2,4 @@
 //! command adds itself.
 
 pub mod hull;
+pub mod voronoi;

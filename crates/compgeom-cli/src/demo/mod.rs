@@ -8,6 +8,7 @@
 
 mod hull;
 pub mod samples;
+mod voronoi;
 
 use crate::error::CliError;
 use crate::output;
@@ -28,7 +29,7 @@ pub struct DemoArgs {
 type SectionFn = fn(&Demo) -> Result<Section, CliError>;
 
 /// The sections of the gallery, in book order. A new command appends its own.
-const SECTIONS: &[SectionFn] = &[hull::section];
+const SECTIONS: &[SectionFn] = &[hull::section, voronoi::section];
 
 /// What a section needs: where to put its pictures.
 pub struct Demo {
