@@ -9,16 +9,18 @@
 mod hull;
 mod kernel;
 mod util;
+mod voronoi;
 
 use std::process::ExitCode;
 
 /// Every group, in the order `all` runs them.
-const GROUPS: &[&str] = &["kernel", "hull"];
+const GROUPS: &[&str] = &["kernel", "hull", "voronoi"];
 
 /// Run one group; `None` if the name is unknown.
 fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
     match name {
         "hull" => Some(hull::run(quick)),
+        "voronoi" => Some(voronoi::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

@@ -121,10 +121,16 @@ pub fn ring_area(ring: &[Point2]) -> f64 {
 /// a power-of-two `scale` this avoids overflow for huge coordinates.
 pub(crate) fn ring_area_scaled(ring: &[Point2], scale: f64) -> f64 {
     let k = ring.len();
+    let Some(&o) = ring.first() else {
+        return 0.0;
+    };
+    // Relative to the first vertex: no cancellation against large absolute coordinates.
     let mut s = 0.0;
     for i in 0..k {
         let (a, b) = (ring[i], ring[(i + 1) % k]);
-        s += (a.x / scale) * (b.y / scale) - (a.y / scale) * (b.x / scale);
+        let (ax, ay) = ((a.x - o.x) / scale, (a.y - o.y) / scale);
+        let (bx, by) = ((b.x - o.x) / scale, (b.y - o.y) / scale);
+        s += ax * by - ay * bx;
     }
     s / 2.0
 }
@@ -173,11 +179,68 @@ fn cut(poly: &[Point2], s: Point2, t: Point2) -> Vec<Point2> {
 /// assert_eq!(cells[0], vec![Point2::new(0.0, 0.0), Point2::new(2.0, 0.0), Point2::new(2.0, 2.0), Point2::new(0.0, 2.0)]);
 /// ```
 pub fn clip_cells(d: &VoronoiDiagram, region: &ClipRegion) -> Vec<Vec<Point2>> {
-    let adj = d.neighbours();
+    let ring = &region.ring;
+    let k = ring.len();
+    // Strictly inside the region (f64; a vertex within rounding of the boundary takes the
+    // general path below, which gives the same polygon up to rounding).
+    let inside = |p: Point2| {
+        (0..k).all(|i| {
+            let (a, b) = (ring[i], ring[(i + 1) % k]);
+            (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) > 0.0
+        })
+    };
     (0..d.sites.len())
         .map(|s| {
-            let mut poly = region.ring.clone();
-            for &t in &adj[s] {
+            // A bounded cell whose vertices are all inside: its own vertices, in order.
+            if let Some(start) = d.site_half_edge[s] {
+                let mut poly = Vec::new();
+                let mut h = start;
+                loop {
+                    let e = &d.half_edges[h];
+                    match (e.origin, e.next) {
+                        (Some(v), Some(n)) if inside(d.vertices[v].point) => {
+                            poly.push(d.vertices[v].point);
+                            h = n;
+                        }
+                        _ => {
+                            poly.clear();
+                            break;
+                        }
+                    }
+                    if h == start || poly.len() > d.half_edges.len() {
+                        break;
+                    }
+                }
+                if h == start && poly.len() >= 3 {
+                    return poly;
+                }
+            }
+            // Otherwise: the region cut by the bisector half-planes of the neighbours.
+            let mut poly = ring.clone();
+            let mut h = d.site_half_edge[s];
+            let mut neighbours: Vec<usize> = Vec::new();
+            if let Some(start) = h {
+                // Neighbours along the chain from `start`; a strip (collinear sites) or a
+                // cell with a second chain needs the full list.
+                let mut count = 0;
+                while let Some(x) = h {
+                    neighbours.push(d.half_edges[d.half_edges[x].twin].site);
+                    count += 1;
+                    h = d.half_edges[x].next;
+                    if h == Some(start) || count > d.half_edges.len() {
+                        break;
+                    }
+                }
+                if h.is_none() && d.vertices.is_empty() {
+                    neighbours = d
+                        .half_edges
+                        .iter()
+                        .filter(|e| e.site == s)
+                        .map(|e| d.half_edges[e.twin].site)
+                        .collect();
+                }
+            }
+            for &t in &neighbours {
                 if poly.is_empty() {
                     break;
                 }

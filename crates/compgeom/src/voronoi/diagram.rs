@@ -99,6 +99,14 @@ impl VoronoiDiagram {
     /// one closed chain for a bounded cell; one open chain (from infinity to infinity) for an
     /// unbounded cell, or two for a strip between parallel edges (collinear sites).
     pub fn cell_chains(&self, site: usize) -> Vec<Vec<usize>> {
+        let own: Vec<usize> = (0..self.half_edges.len())
+            .filter(|&i| self.half_edges[i].site == site)
+            .collect();
+        self.chains_of(site, &own)
+    }
+
+    /// [`Self::cell_chains`] given the half-edges `own` of the cell (O(|own|)).
+    fn chains_of(&self, site: usize, own: &[usize]) -> Vec<Vec<usize>> {
         let mut chains = Vec::new();
         let Some(start) = self.site_half_edge.get(site).copied().flatten() else {
             return chains;
@@ -106,11 +114,11 @@ impl VoronoiDiagram {
         let mut seen = std::collections::HashSet::new();
         // Starts: the given half-edge, and for open chains every half-edge without prev.
         let mut starts = vec![start];
-        for (i, h) in self.half_edges.iter().enumerate() {
-            if h.site == site && h.prev.is_none() && i != start {
-                starts.push(i);
-            }
-        }
+        starts.extend(
+            own.iter()
+                .copied()
+                .filter(|&i| i != start && self.half_edges[i].prev.is_none()),
+        );
         for s in starts {
             if seen.contains(&s) {
                 continue;
@@ -185,14 +193,18 @@ impl VoronoiDiagram {
             }
         }
         if self.sites.len() >= 2 {
-            for s in 0..self.sites.len() {
+            let mut own: Vec<Vec<usize>> = vec![Vec::new(); self.sites.len()];
+            for (i, h) in self.half_edges.iter().enumerate() {
+                own[h.site].push(i);
+            }
+            for (s, own_s) in own.iter().enumerate() {
                 match self.site_half_edge[s] {
                     Some(h) if self.half_edges[h].site == s => {}
                     _ => return fail(format!("site {s} has no cell boundary")),
                 }
-                let chains = self.cell_chains(s);
+                let chains = self.chains_of(s, own_s);
                 let total: usize = chains.iter().map(|c| c.len()).sum();
-                let count = self.half_edges.iter().filter(|h| h.site == s).count();
+                let count = own_s.len();
                 let closed = chains.len() == 1
                     && self.half_edges[*chains[0].last().unwrap_or(&0)]
                         .next

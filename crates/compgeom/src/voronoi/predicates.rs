@@ -54,6 +54,62 @@ fn decide(fast: impl FnOnce() -> Option<Ordering>, exact: impl FnOnce() -> Order
     exact()
 }
 
+/// `f64` arithmetic that knows whether every operation so far was exact (error-free
+/// transformations: a sum is exact when its TwoSum error is zero, a product when
+/// `fma(a, b, −p)` is zero). When all were exact, the value is exact and its sign —
+/// including zero — is decided. This settles exact ties (grids, cocircular sites) with
+/// small integer-like values without big integers; otherwise the caller goes on to the
+/// dyadic fallback.
+#[derive(Debug, Clone, Copy)]
+struct Exactish {
+    v: f64,
+    exact: bool,
+}
+
+/// Results below this magnitude may have lost bits to underflow unnoticed: not trusted.
+const TINY: f64 = 1e-290;
+
+impl Exactish {
+    fn sum(a: f64, b: f64, exact: bool) -> Self {
+        let s = a + b;
+        let bb = s - a;
+        let err = (a - (s - bb)) + (b - bb);
+        let ok = exact && err == 0.0 && s.is_finite() && (s == 0.0 || s.abs() >= TINY);
+        Exactish { v: s, exact: ok }
+    }
+}
+
+impl Arith for Exactish {
+    fn val(a: f64) -> Self {
+        Exactish { v: a, exact: true }
+    }
+    fn diff(a: f64, b: f64) -> Self {
+        Exactish::sum(a, -b, true)
+    }
+    fn plus(&self, o: &Self) -> Self {
+        Exactish::sum(self.v, o.v, self.exact && o.exact)
+    }
+    fn minus(&self, o: &Self) -> Self {
+        Exactish::sum(self.v, -o.v, self.exact && o.exact)
+    }
+    fn times(&self, o: &Self) -> Self {
+        let p = self.v * o.v;
+        let ok = self.exact
+            && o.exact
+            && p.is_finite()
+            && ((p == 0.0 && (self.v == 0.0 || o.v == 0.0)) || p.abs() >= TINY)
+            && self.v.mul_add(o.v, -p) == 0.0;
+        Exactish { v: p, exact: ok }
+    }
+    fn sign(&self) -> Option<Ordering> {
+        if self.exact {
+            self.v.partial_cmp(&0.0)
+        } else {
+            None
+        }
+    }
+}
+
 fn sign_exact(d: &Dyadic) -> Ordering {
     d.sign().unwrap_or(Ordering::Equal)
 }
@@ -82,7 +138,11 @@ fn lower_poly<T: Arith>(q: Point2, pi: Point2, pj: Point2) -> T {
 fn lower_sign(q: Point2, pi: Point2, pj: Point2) -> Ordering {
     decide(
         || lower_poly::<Bounded>(q, pi, pj).sign(),
-        || sign_exact(&lower_poly::<Dyadic>(q, pi, pj)),
+        || {
+            lower_poly::<Exactish>(q, pi, pj)
+                .sign()
+                .unwrap_or_else(|| sign_exact(&lower_poly::<Dyadic>(q, pi, pj)))
+        },
     )
 }
 
@@ -93,7 +153,11 @@ pub(crate) fn cmp_dist(q: Point2, a: Point2, b: Point2) -> Ordering {
     }
     decide(
         || poly::<Bounded>(q, a, b).sign(),
-        || sign_exact(&poly::<Dyadic>(q, a, b)),
+        || {
+            poly::<Exactish>(q, a, b)
+                .sign()
+                .unwrap_or_else(|| sign_exact(&poly::<Dyadic>(q, a, b)))
+        },
     )
 }
 
@@ -300,7 +364,11 @@ pub(crate) fn cmp_event_site(e: &CircleKey, s: Point2) -> Ordering {
     }
     let dy = decide(
         || cmp_event_y_site::<Bounded>(e, s),
-        || cmp_event_y_site::<Dyadic>(e, s).unwrap_or(Ordering::Equal),
+        || {
+            cmp_event_y_site::<Exactish>(e, s)
+                .or_else(|| cmp_event_y_site::<Dyadic>(e, s))
+                .unwrap_or(Ordering::Equal)
+        },
     );
     match dy {
         Ordering::Greater => Ordering::Less,
@@ -313,7 +381,11 @@ pub(crate) fn cmp_event_site(e: &CircleKey, s: Point2) -> Ordering {
             } else {
                 decide(
                     || cmp_event_x_site::<Bounded>(e, s),
-                    || cmp_event_x_site::<Dyadic>(e, s).unwrap_or(Ordering::Equal),
+                    || {
+                        cmp_event_x_site::<Exactish>(e, s)
+                            .or_else(|| cmp_event_x_site::<Dyadic>(e, s))
+                            .unwrap_or(Ordering::Equal)
+                    },
                 )
             };
             match dx {
@@ -410,7 +482,11 @@ pub(crate) fn cmp_events(e: &CircleKey, f: &CircleKey) -> Ordering {
     } else {
         decide(
             || cmp_events_y::<Bounded>(e, f),
-            || cmp_events_y::<Dyadic>(e, f).unwrap_or(Ordering::Equal),
+            || {
+                cmp_events_y::<Exactish>(e, f)
+                    .or_else(|| cmp_events_y::<Dyadic>(e, f))
+                    .unwrap_or(Ordering::Equal)
+            },
         )
     };
     match dy {
@@ -424,7 +500,11 @@ pub(crate) fn cmp_events(e: &CircleKey, f: &CircleKey) -> Ordering {
             } else {
                 decide(
                     || cmp_events_x::<Bounded>(e, f),
-                    || cmp_events_x::<Dyadic>(e, f).unwrap_or(Ordering::Equal),
+                    || {
+                        cmp_events_x::<Exactish>(e, f)
+                            .or_else(|| cmp_events_x::<Dyadic>(e, f))
+                            .unwrap_or(Ordering::Equal)
+                    },
                 )
             }
         }
