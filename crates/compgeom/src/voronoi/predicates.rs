@@ -215,6 +215,21 @@ pub(crate) struct CircleKey {
     pub y: (f64, f64),
     /// Enclosure of the centre's `x`.
     pub x: (f64, f64),
+    /// `(D, N_x, N_y)` when they are exactly representable in `f64` (computed without any
+    /// rounding, e.g. for integer grids): comparisons then start from these exact values
+    /// instead of recomputing them.
+    pub exact_parts: Option<[f64; 3]>,
+}
+
+/// The circle parts of an event: the cached exact values, or computed in `T`.
+fn parts<T: Arith>(e: &CircleKey) -> (T, T, T) {
+    match e.exact_parts {
+        Some([d, x, y]) => (T::val(d), T::val(x), T::val(y)),
+        None => {
+            let [a, b, c] = e.sites;
+            circle_parts::<T>(a, b, c)
+        }
+    }
 }
 
 /// A rigorous enclosure of the computed interval `[lo, hi]` whose ends each carry at most a
@@ -306,10 +321,13 @@ impl CircleKey {
         } else {
             (wide, wide)
         };
+        let (ed, ex, ey) = circle_parts::<Exactish>(a, b, c);
+        let exact_parts = (ed.exact && ex.exact && ey.exact).then_some([ed.v, ex.v, ey.v]);
         Some(CircleKey {
             sites: [a, b, c],
             y,
             x,
+            exact_parts,
         })
     }
 
@@ -333,8 +351,8 @@ pub(crate) fn circumcentre(a: Point2, b: Point2, c: Point2) -> Point2 {
 fn cmp_event_y_site<T: Arith>(e: &CircleKey, s: Point2) -> Option<Ordering> {
     // y_e − s.y = (a.y − s.y) + N_y/D − √(N_x²+N_y²)/|D|; times |D| = −D:
     //   P − √Q with P = −D (a.y − s.y) − N_y, Q = N_x² + N_y².
-    let [a, b, c] = e.sites;
-    let (d, nx, ny) = circle_parts::<T>(a, b, c);
+    let a = e.sites[0];
+    let (d, nx, ny) = parts::<T>(e);
     let p = neg(&d).times(&T::diff(a.y, s.y)).minus(&ny);
     let q = nx.times(&nx).plus(&ny.times(&ny));
     let sp = p.sign()?;
@@ -348,8 +366,8 @@ fn cmp_event_y_site<T: Arith>(e: &CircleKey, s: Point2) -> Option<Ordering> {
 /// Sign of `(event centre x) − s.x`, exactly.
 fn cmp_event_x_site<T: Arith>(e: &CircleKey, s: Point2) -> Option<Ordering> {
     // (a.x − s.x) + N_x/D, times −D > 0.
-    let [a, b, c] = e.sites;
-    let (d, nx, _) = circle_parts::<T>(a, b, c);
+    let a = e.sites[0];
+    let (d, nx, _) = parts::<T>(e);
     neg(&d).times(&T::diff(a.x, s.x)).minus(&nx).sign()
 }
 
@@ -401,10 +419,9 @@ fn cmp_events_y<T: Arith>(e: &CircleKey, f: &CircleKey) -> Option<Ordering> {
     // y = a.y + (−N_y − √Q)/(−D) with −D > 0. Let E = −D_e, G = −D_f (both > 0),
     // P_e = −N_ye, P_f = −N_yf. Times E·G:
     //   X + √(E² Q_f) − √(G² Q_e), X = E G (a_e.y − a_f.y) + G P_e − E P_f.
-    let [a1, b1, c1] = e.sites;
-    let [a2, b2, c2] = f.sites;
-    let (d1, nx1, ny1) = circle_parts::<T>(a1, b1, c1);
-    let (d2, nx2, ny2) = circle_parts::<T>(a2, b2, c2);
+    let (a1, a2) = (e.sites[0], f.sites[0]);
+    let (d1, nx1, ny1) = parts::<T>(e);
+    let (d2, nx2, ny2) = parts::<T>(f);
     let ee = neg(&d1);
     let gg = neg(&d2);
     let q1 = nx1.times(&nx1).plus(&ny1.times(&ny1));
@@ -459,10 +476,9 @@ fn cmp_events_y<T: Arith>(e: &CircleKey, f: &CircleKey) -> Option<Ordering> {
 /// Sign of `x_e − x_f` (centres), exactly.
 fn cmp_events_x<T: Arith>(e: &CircleKey, f: &CircleKey) -> Option<Ordering> {
     // x = a.x + (−N_x)/(−D); times E·G: E G (a_e.x − a_f.x) − G N_xe + E N_xf.
-    let [a1, b1, c1] = e.sites;
-    let [a2, b2, c2] = f.sites;
-    let (d1, nx1, _) = circle_parts::<T>(a1, b1, c1);
-    let (d2, nx2, _) = circle_parts::<T>(a2, b2, c2);
+    let (a1, a2) = (e.sites[0], f.sites[0]);
+    let (d1, nx1, _) = parts::<T>(e);
+    let (d2, nx2, _) = parts::<T>(f);
     let ee = neg(&d1);
     let gg = neg(&d2);
     ee.times(&gg)
