@@ -20,8 +20,15 @@
 //! new site's position relative to a breakpoint, the order of circle events (the lowest
 //! point of a circle, which involves a square root) against sites and each other,
 //! whether two vertices coincide — is decided exactly (see [`predicates`]): a rigorous
-//! floating-point filter, then exact big-integer arithmetic. Reported coordinates of
-//! vertices are rounded to `f64`; the topology never depends on them.
+//! floating-point filter (running error bounds), then an exact-in-`f64` stage (error-free
+//! transformations; settles the exact ties of grids and cocircular sites cheaply), then
+//! exact dyadic big-integer arithmetic. Reported coordinates of vertices are rounded to
+//! `f64`; the topology never depends on them. Clipped cell corners are computed in `f64`.
+//!
+//! ## Not (yet) here
+//!
+//! The dual-of-Delaunay method (waits for `compgeom::delaunay`), clipping to non-convex
+//! polygons (rejected with an error), and the farthest-point Voronoi diagram.
 //!
 //! ## Degenerate input
 //!
