@@ -9,6 +9,29 @@ use compgeom::voronoi::{
 use compgeom::Point2;
 
 fn main() -> Result<(), compgeom::Error> {
+    if std::env::args().nth(1).as_deref() == Some("uniform") {
+        // `cargo run --release --example voronoi uniform`: time the sweep and the clipping.
+        let mut s: u64 = 1;
+        let mut rnd = || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let pts: Vec<Point2> = (0..100_000).map(|_| Point2::new(rnd(), rnd())).collect();
+        let t = std::time::Instant::now();
+        let d = fortune_voronoi(&pts)?;
+        let t1 = t.elapsed();
+        let region = ClipRegion::rect(0.0, 0.0, 1.0, 1.0)?;
+        let t = std::time::Instant::now();
+        let cells = clip_cells(&d, &region);
+        println!(
+            "1e5 uniform: sweep {t1:?}, clip {:?} ({} cells)",
+            t.elapsed(),
+            cells.len()
+        );
+        return Ok(());
+    }
     if let Some(k) = std::env::args()
         .nth(1)
         .and_then(|a| a.parse::<usize>().ok())
