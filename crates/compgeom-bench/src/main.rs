@@ -13,11 +13,20 @@ mod kernel;
 mod lp;
 mod range;
 mod util;
+mod voronoi;
 
 use std::process::ExitCode;
 
 /// Every group, in the order `all` runs them.
-const GROUPS: &[&str] = &["kernel", "hull", "intersect", "lp", "range", "delaunay"];
+const GROUPS: &[&str] = &[
+    "kernel",
+    "hull",
+    "intersect",
+    "lp",
+    "range",
+    "voronoi",
+    "delaunay",
+];
 
 /// Run one group; `None` if the name is unknown.
 fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
@@ -27,6 +36,7 @@ fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
         "range" => Some(range::run(quick)),
         "lp" => Some(lp::run(quick)),
         "delaunay" => Some(delaunay::run(quick)),
+        "voronoi" => Some(voronoi::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

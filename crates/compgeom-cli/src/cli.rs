@@ -24,6 +24,7 @@ use crate::commands::hull::HullArgs;
 use crate::commands::interpolate::InterpolateArgs;
 use crate::commands::intersect::IntersectArgs;
 use crate::commands::range::RangeArgs;
+use crate::commands::voronoi::VoronoiArgs;
 use crate::commands::window::WindowArgs;
 use crate::demo::DemoArgs;
 use clap::{Args, Parser, Subcommand, ValueEnum};
@@ -79,6 +80,9 @@ pub enum Command {
     /// Heights of the terrain over (x, y, z) samples at query points (book chapter 9).
     #[command(after_long_help = crate::commands::interpolate::JSON_HELP)]
     Interpolate(InterpolateArgs),
+    /// Voronoi diagram of points, cells clipped to a rectangle or convex polygon (chapter 7).
+    #[command(after_long_help = crate::commands::voronoi::JSON_HELP)]
+    Voronoi(VoronoiArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

@@ -40,6 +40,7 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
         cli::Command::Cast(args) => commands::cast::run(&args),
         cli::Command::Delaunay(args) => commands::delaunay::run(&args),
         cli::Command::Interpolate(args) => commands::interpolate::run(&args),
+        cli::Command::Voronoi(args) => commands::voronoi::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

@@ -1299,3 +1299,127 @@ mod delaunay_commands {
         compgeom().arg("delaunay").arg(&p).assert().code(2);
     }
 }
+
+/// `compgeom voronoi` (book chapter 7).
+mod voronoi_commands {
+    use super::*;
+
+    fn run_json(args: &[&str], content: &str) -> Value {
+        let (_dir, path) = input("points.csv", content);
+        let out = compgeom()
+            .arg("voronoi")
+            .arg(&path)
+            .args(args)
+            .assert()
+            .success();
+        serde_json::from_slice(&out.get_output().stdout).unwrap()
+    }
+
+    #[test]
+    fn square_with_centre_and_duplicate() {
+        let v = run_json(
+            &["--clip", "0,0,4,4", "--verify"],
+            "0,0\n4,0\n0,4\n4,4\n2,2\n0,0\n",
+        );
+        assert_eq!(v["verified"], true);
+        let cells = v["cells"].as_array().unwrap();
+        // One cell per distinct point, in input order; the duplicate maps to cell 0.
+        let sites: Vec<u64> = cells.iter().map(|c| c["site"].as_u64().unwrap()).collect();
+        assert_eq!(sites, vec![0, 1, 2, 3, 4]);
+        assert_eq!(v["input_to_cell"], serde_json::json!([0, 1, 2, 3, 4, 0]));
+        // The centre's cell is the diamond (2,0),(4,2),(2,4),(0,2), counter-clockwise.
+        let centre: Vec<(f64, f64)> = cells[4]["polygon"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap()))
+            .collect();
+        assert_eq!(centre.len(), 4);
+        for corner in [(2.0, 0.0), (4.0, 2.0), (2.0, 4.0), (0.0, 2.0)] {
+            assert!(centre.contains(&corner), "{centre:?}");
+        }
+        assert_eq!(v["vertices"].as_array().unwrap().len(), 4);
+        assert_eq!(v["edges"].as_array().unwrap().len(), 8);
+        assert_eq!(v["algorithm"], "default");
+        assert_eq!(v["input_points"], 6);
+    }
+
+    #[test]
+    fn cocircular_points_share_one_vertex() {
+        let v = run_json(
+            &["--algorithm", "fortune", "--verify"],
+            "0,0\n2,0\n2,2\n0,2\n",
+        );
+        assert_eq!(v["vertices"], serde_json::json!([[1.0, 1.0]]));
+        assert_eq!(v["vertex_sites"], serde_json::json!([[0, 1, 2, 3]]));
+    }
+
+    #[test]
+    fn clip_polygon_geojson_and_svg() {
+        let (dir, poly) = input("region.wkt", "POLYGON ((-1 -1, 5 -1, 2 6, -1 -1))");
+        let pts = dir.path().join("p.csv");
+        fs::write(&pts, "0,0\n3,0\n1,2\n2,1\n").unwrap();
+        let svg = dir.path().join("v.svg");
+        let out = compgeom()
+            .arg("voronoi")
+            .arg(&pts)
+            .arg("--clip-polygon")
+            .arg(&poly)
+            .args(["--format", "geojson", "--verify", "--svg"])
+            .arg(&svg)
+            .assert()
+            .success();
+        let v: Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
+        assert_eq!(v["type"], "FeatureCollection");
+        assert_eq!(v["features"].as_array().unwrap().len(), 4);
+        let text = fs::read_to_string(&svg).unwrap();
+        assert!(text.starts_with("<svg") && text.contains("Voronoi"));
+    }
+
+    #[test]
+    fn bad_clip_and_bad_points_exit_2() {
+        let (_dir, path) = input("p.csv", "0,0\n1,1\n");
+        compgeom()
+            .arg("voronoi")
+            .arg(&path)
+            .args(["--clip", "0,0,1"])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("--clip"));
+        compgeom()
+            .arg("voronoi")
+            .arg(&path)
+            .args(["--clip", "2,0,1,1"])
+            .assert()
+            .code(2);
+        let (_d2, poly) = input("r.wkt", "POLYGON ((0 0, 4 0, 2 1, 4 4, 0 4, 0 0))");
+        compgeom()
+            .arg("voronoi")
+            .arg(&path)
+            .arg("--clip-polygon")
+            .arg(&poly)
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("convex"));
+    }
+
+    #[test]
+    fn collinear_points_have_no_vertices() {
+        let v = run_json(&["--verify"], "0,0\n1,1\n2,2\n3,3\n");
+        assert_eq!(v["vertices"].as_array().unwrap().len(), 0);
+        let edges = v["edges"].as_array().unwrap();
+        assert_eq!(edges.len(), 3);
+        assert!(edges
+            .iter()
+            .all(|e| e["vertices"] == serde_json::json!([null, null])));
+    }
+
+    #[test]
+    fn help_documents_voronoi_json() {
+        compgeom()
+            .args(["voronoi", "--help"])
+            .assert()
+            .success()
+            .stdout(predicate::str::contains("input_to_cell"));
+    }
+}

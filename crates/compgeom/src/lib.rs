@@ -22,6 +22,7 @@
 //! | 10 | windowing: interval, priority search and segment trees | [`windowing::IntervalTree`], [`windowing::PrioritySearchTree`], [`windowing::SegmentTree`], [`windowing::AxisParallelWindow`], [`windowing::SegmentWindow`] |
 //! | 4 | half-plane intersection, linear programming, smallest enclosing disc, casting | [`lp::intersect_halfplanes`], [`lp::lp2d`], [`lp::lp_d`], [`lp::smallest_enclosing_disc`], [`lp::castability`] |
 //! | 9 | Delaunay triangulation, constrained Delaunay, terrains, EMST | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::constrained_delaunay`], [`delaunay::polygon_delaunay`], [`delaunay::Terrain`], [`delaunay::euclidean_mst`], [`delaunay::verify_delaunay`], [`delaunay::verify_cdt`] |
+//! | 7 | Voronoi diagram (Fortune) | [`voronoi::voronoi_diagram`], [`voronoi::fortune_voronoi`], [`voronoi::clip_cells`], [`voronoi::verify_voronoi`], [`voronoi::NearestSite`] |
 //!
 //! ## Exactness
 //!
@@ -41,6 +42,7 @@ pub mod kernel;
 pub mod lp;
 pub mod range;
 pub mod render;
+pub mod voronoi;
 pub mod windowing;
 
 pub use error::{Error, Location, Result};

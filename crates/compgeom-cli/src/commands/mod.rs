@@ -10,4 +10,5 @@ pub mod interpolate;
 pub mod intersect;
 pub mod lp;
 pub mod range;
+pub mod voronoi;
 pub mod window;

@@ -12,6 +12,7 @@ mod intersect;
 mod lp;
 mod range;
 pub mod samples;
+mod voronoi;
 
 use crate::error::CliError;
 use crate::output;
@@ -37,6 +38,7 @@ const SECTIONS: &[SectionFn] = &[
     intersect::section,
     lp::section,
     range::section,
+    voronoi::section,
     delaunay::section,
 ];
 

@@ -66,6 +66,14 @@ const ETA: f64 = 5e-320; // between 2^-1061 and 2^-1060: thousands of 2^-1075
 /// Final relative safety factor on the bound (covers the bound's own roundings).
 const SAFETY: f64 = 1.0 + 1.0 / 1_099_511_627_776.0; // 1 + 2^-40
 
+impl Bounded {
+    /// The computed value and its error bound `(v, e)`, `|v - exact| <= e` (up to the
+    /// bound's own roundings, covered by a factor `1 + 2^-40`).
+    pub(crate) fn parts(&self) -> (f64, f64) {
+        (self.v, self.e)
+    }
+}
+
 impl Arith for Bounded {
     fn val(a: f64) -> Self {
         Bounded { v: a, e: 0.0 }

@@ -16,10 +16,10 @@
 //! Non-finite coordinates are rejected by the algorithms ([`ensure_finite`]) before any
 //! predicate runs; the predicates themselves never panic on them and return a
 //! documented degenerate answer.
-mod arith;
+pub(crate) mod arith;
 mod crossing;
-mod exact;
-mod filter;
+pub(crate) mod exact;
+pub(crate) mod filter;
 mod intersection;
 mod predicates;
 mod types;
