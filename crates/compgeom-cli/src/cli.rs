@@ -56,12 +56,6 @@ pub enum Command {
     /// All intersection points and overlaps of line segments (book chapter 2.1).
     #[command(after_long_help = crate::commands::intersect::JSON_HELP)]
     Intersect(IntersectArgs),
-    /// Orthogonal range queries: points in rectangles, counts, k nearest (book chapter 5).
-    #[command(after_long_help = crate::commands::range::JSON_HELP)]
-    Range(RangeArgs),
-    /// Windowing: segments meeting query rectangles (book chapter 10).
-    #[command(after_long_help = crate::commands::window::JSON_HELP)]
-    Window(WindowArgs),
     /// Intersection of half-planes a·x + b·y <= c (book chapter 4).
     #[command(after_long_help = crate::commands::halfplanes::JSON_HELP)]
     Halfplanes(crate::commands::halfplanes::HalfplanesArgs),
@@ -74,15 +68,21 @@ pub enum Command {
     /// Castability of a polyhedron: top facets and removal directions (book chapter 4).
     #[command(after_long_help = crate::commands::cast::JSON_HELP)]
     Cast(crate::commands::cast::CastArgs),
+    /// Orthogonal range queries: points in rectangles, counts, k nearest (book chapter 5).
+    #[command(after_long_help = crate::commands::range::JSON_HELP)]
+    Range(RangeArgs),
+    /// Voronoi diagram of points, cells clipped to a rectangle or convex polygon (chapter 7).
+    #[command(after_long_help = crate::commands::voronoi::JSON_HELP)]
+    Voronoi(VoronoiArgs),
     /// Delaunay triangulation of points in the plane (book chapter 9).
     #[command(after_long_help = crate::commands::delaunay::JSON_HELP)]
     Delaunay(DelaunayArgs),
     /// Heights of the terrain over (x, y, z) samples at query points (book chapter 9).
     #[command(after_long_help = crate::commands::interpolate::JSON_HELP)]
     Interpolate(InterpolateArgs),
-    /// Voronoi diagram of points, cells clipped to a rectangle or convex polygon (chapter 7).
-    #[command(after_long_help = crate::commands::voronoi::JSON_HELP)]
-    Voronoi(VoronoiArgs),
+    /// Windowing: segments meeting query rectangles (book chapter 10).
+    #[command(after_long_help = crate::commands::window::JSON_HELP)]
+    Window(WindowArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

@@ -18,11 +18,11 @@
 //! |---|---|---|
 //! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::convex_hull_indices`], [`hull::verify_convex_hull`] |
 //! | 2.1 | line segment intersection (plane sweep) | [`intersect::find_intersections`], [`intersect::sweep_intersections`], [`intersect::any_intersection`], [`intersect::is_simple`], [`intersect::red_blue_intersections`], [`intersect::verify_intersections`] |
-//! | 5 | orthogonal range searching | [`range::KdTree`], [`range::RangeTree`], [`range::LayeredRangeTree`], [`range::RangeTreeD`] |
-//! | 10 | windowing: interval, priority search and segment trees | [`windowing::IntervalTree`], [`windowing::PrioritySearchTree`], [`windowing::SegmentTree`], [`windowing::AxisParallelWindow`], [`windowing::SegmentWindow`] |
 //! | 4 | half-plane intersection, linear programming, smallest enclosing disc, casting | [`lp::intersect_halfplanes`], [`lp::lp2d`], [`lp::lp_d`], [`lp::smallest_enclosing_disc`], [`lp::castability`] |
-//! | 9 | Delaunay triangulation, constrained Delaunay, terrains, EMST | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::constrained_delaunay`], [`delaunay::polygon_delaunay`], [`delaunay::Terrain`], [`delaunay::euclidean_mst`], [`delaunay::verify_delaunay`], [`delaunay::verify_cdt`] |
+//! | 5 | orthogonal range searching | [`range::KdTree`], [`range::RangeTree`], [`range::LayeredRangeTree`], [`range::RangeTreeD`] |
 //! | 7 | Voronoi diagram (Fortune) | [`voronoi::voronoi_diagram`], [`voronoi::fortune_voronoi`], [`voronoi::clip_cells`], [`voronoi::verify_voronoi`], [`voronoi::NearestSite`] |
+//! | 9 | Delaunay triangulation, constrained Delaunay, terrains, EMST | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::constrained_delaunay`], [`delaunay::polygon_delaunay`], [`delaunay::Terrain`], [`delaunay::euclidean_mst`], [`delaunay::verify_delaunay`], [`delaunay::verify_cdt`] |
+//! | 10 | windowing: interval, priority search and segment trees | [`windowing::IntervalTree`], [`windowing::PrioritySearchTree`], [`windowing::SegmentTree`], [`windowing::AxisParallelWindow`], [`windowing::SegmentWindow`] |
 //!
 //! ## Exactness
 //!
