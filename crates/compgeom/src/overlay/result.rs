@@ -168,7 +168,9 @@ fn ring_points<V, F>(d: &Dcel<V, Carrier, F>, ring: &[HalfEdgeId], keep: bool) -
         let p = d.half_edge(ring[(k + n - 1) % n]).data;
         let c = d.half_edge(h).data;
         let straight = p.turn(&c) == Orientation::Collinear && p.angle_cmp(&c) == Ordering::Equal;
-        if straight && !keep {
+        // A vertex where other boundary edges meet (rings touching there) is kept, so
+        // that rings only ever touch at vertices of both.
+        if straight && !keep && d.around(d.half_edge(h).origin).nth(2).is_none() {
             continue;
         }
         let q = d.vertex(d.half_edge(h).origin).approx;
