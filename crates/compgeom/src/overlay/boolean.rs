@@ -7,7 +7,9 @@
 //! turns a winding number into inside/outside: even-odd (the default: odd winding, i.e.
 //! an odd number of boundary crossings, is inside; ring orientation is irrelevant) or
 //! non-zero (each polygon is first oriented with its exterior counter-clockwise and
-//! holes clockwise by the exact sign of its area; inside when the winding is not zero).
+//! holes clockwise by the exact sign of its area; inside when the winding is not zero)
+//! or positive (oriented the same way; inside when the winding is positive: polygons
+//! united, each its shell minus its holes).
 //! The result is the boundary between chosen and other faces, made into valid polygons
 //! ([`super::faces_to_polygons`]).
 //!
@@ -65,6 +67,11 @@ pub enum FillRule {
     /// Inside iff the winding number is not zero, after orienting each polygon's
     /// exterior counter-clockwise and its holes clockwise.
     NonZero,
+    /// Inside iff the winding number is positive, after orienting each polygon's exterior
+    /// counter-clockwise and its holes clockwise: each polygon is its exterior minus its
+    /// holes (a hole reaching outside its shell removes nothing there) and the polygons
+    /// of a set are united. The rule of GeoJSON-style polygon sets.
+    Positive,
 }
 
 impl FillRule {
@@ -73,6 +80,7 @@ impl FillRule {
         match self {
             FillRule::EvenOdd => w % 2 != 0,
             FillRule::NonZero => w != 0,
+            FillRule::Positive => w > 0,
         }
     }
 }
@@ -195,17 +203,16 @@ pub fn boolean_with(
     ))
 }
 
-/// The union of all polygons of a set in one sweep. Each polygon is oriented (exterior
-/// counter-clockwise, holes clockwise) and a point is in the union when its winding
-/// number is positive, i.e. it lies in at least one polygon (exact for valid polygons;
-/// a self-intersecting polygon counts as its non-zero region).
+/// The union of all polygons of a set in one sweep ([`FillRule::Positive`]): each
+/// polygon is its exterior minus its holes, and a point is in the union when it lies in
+/// at least one polygon.
 pub fn union_all(polygons: &MultiPolygon) -> Result<MultiPolygon> {
     boolean_with(
         polygons,
         &MultiPolygon::default(),
         BooleanOp::Union,
         &BooleanOptions {
-            fill_rule: FillRule::NonZero,
+            fill_rule: FillRule::Positive,
             keep_collinear: false,
         },
     )
