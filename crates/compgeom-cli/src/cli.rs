@@ -19,8 +19,10 @@
 //!    and list it in `demo::SECTIONS`.
 //! 4. Add tests to `tests/cli.rs`.
 
+use crate::commands::boolean::{BooleanArgs, MakeValidArgs};
 use crate::commands::hull::HullArgs;
 use crate::commands::intersect::IntersectArgs;
+use crate::commands::overlay::OverlayArgs;
 use crate::demo::DemoArgs;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
@@ -51,6 +53,14 @@ pub enum Command {
     /// All intersection points and overlaps of line segments (book chapter 2.1).
     #[command(after_long_help = crate::commands::intersect::JSON_HELP)]
     Intersect(IntersectArgs),
+    /// Overlay of two polygon layers, faces labelled by the polygons containing them (book 2.3).
+    #[command(after_long_help = crate::commands::overlay::JSON_HELP)]
+    Overlay(OverlayArgs),
+    /// Boolean operation on polygon sets: intersection, union, difference, xor (book 2.4).
+    #[command(after_long_help = crate::commands::boolean::JSON_HELP)]
+    Boolean(BooleanArgs),
+    /// Repair polygons into valid ones, reading rings by a fill rule (book 2.4).
+    MakeValid(MakeValidArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

@@ -32,6 +32,9 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
     match cli.command {
         cli::Command::Hull(args) => commands::hull::run(&args),
         cli::Command::Intersect(args) => commands::intersect::run(&args),
+        cli::Command::Overlay(args) => commands::overlay::run(&args),
+        cli::Command::Boolean(args) => commands::boolean::run(&args),
+        cli::Command::MakeValid(args) => commands::boolean::run_make_valid(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

@@ -217,3 +217,28 @@ pub fn union_all(polygons: &MultiPolygon) -> Result<MultiPolygon> {
         },
     )
 }
+
+/// Repair a polygon set into a valid one: the region the fill rule reads from its rings
+/// (self-crossing rings, overlapping parts, holes outside shells, wrong orientations,
+/// repeated or collinear points), as valid polygons. Errors as [`boolean_with`].
+///
+/// ```
+/// use compgeom::overlay::{make_valid, FillRule};
+/// use compgeom::{MultiPolygon, Point2, Polygon};
+/// // A bow tie: one self-crossing ring becomes two triangles.
+/// let p = |x, y| Point2::new(x, y);
+/// let bow = MultiPolygon(vec![Polygon::new(vec![p(0., 0.), p(2., 2.), p(2., 0.), p(0., 2.)], vec![])]);
+/// let fixed = make_valid(&bow, FillRule::EvenOdd).unwrap();
+/// assert_eq!(fixed.0.len(), 2);
+/// ```
+pub fn make_valid(polygons: &MultiPolygon, rule: FillRule) -> Result<MultiPolygon> {
+    boolean_with(
+        polygons,
+        &MultiPolygon::default(),
+        BooleanOp::Union,
+        &BooleanOptions {
+            fill_rule: rule,
+            keep_collinear: false,
+        },
+    )
+}

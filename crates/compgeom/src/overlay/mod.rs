@@ -38,8 +38,8 @@ mod boolean;
 mod result;
 
 pub use boolean::{
-    boolean, boolean_dcel, boolean_with, union_all, BooleanEdge, BooleanOp, BooleanOptions,
-    FillRule,
+    boolean, boolean_dcel, boolean_with, make_valid, union_all, BooleanEdge, BooleanOp,
+    BooleanOptions, FillRule,
 };
 pub use result::faces_to_polygons;
 
