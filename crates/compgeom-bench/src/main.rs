@@ -6,6 +6,7 @@
 //! groups: see GROUPS below, or all
 //! ```
 
+mod boolean;
 mod hull;
 mod intersect;
 mod kernel;
@@ -14,13 +15,14 @@ mod util;
 use std::process::ExitCode;
 
 /// Every group, in the order `all` runs them.
-const GROUPS: &[&str] = &["kernel", "hull", "intersect"];
+const GROUPS: &[&str] = &["kernel", "hull", "intersect", "boolean"];
 
 /// Run one group; `None` if the name is unknown.
 fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
     match name {
         "hull" => Some(hull::run(quick)),
         "intersect" => Some(intersect::run(quick)),
+        "boolean" => Some(boolean::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

@@ -197,8 +197,18 @@ impl<E> Dcel<(), E, ()> {
     /// Half-edge `2i` runs `edges[i].0 → edges[i].1`, `2i + 1` is its twin.
     pub fn from_arrangement(
         arr: &Arrangement,
-        mut edge_data: impl FnMut(&[Source], Carrier) -> E,
+        edge_data: impl FnMut(&[Source], Carrier) -> E,
     ) -> Result<Dcel<(), E, ()>> {
+        Ok(Self::linked(arr, edge_data, true))
+    }
+
+    /// As [`Dcel::from_arrangement`]; with `resolve_holes` false every inner cycle is put
+    /// in the unbounded face (no ray shooting: for callers that know the containment).
+    pub(crate) fn linked(
+        arr: &Arrangement,
+        mut edge_data: impl FnMut(&[Source], Carrier) -> E,
+        resolve_holes: bool,
+    ) -> Dcel<(), E, ()> {
         let n = arr.vertices.len();
         let mut half_edges = Vec::with_capacity(2 * arr.edges.len());
         let mut carriers = Vec::with_capacity(2 * arr.edges.len());
@@ -234,7 +244,13 @@ impl<E> Dcel<(), E, ()> {
                 out[o].push(id);
             }
         }
-        Ok(link(arr.vertices.clone(), half_edges, &carriers, &mut out))
+        link(
+            arr.vertices.clone(),
+            half_edges,
+            &carriers,
+            &mut out,
+            resolve_holes,
+        )
     }
 }
 
@@ -328,6 +344,7 @@ fn link<E>(
     mut half_edges: Vec<HalfEdge<E>>,
     carriers: &[Carrier],
     out: &mut [Vec<usize>],
+    resolve_holes: bool,
 ) -> Dcel<(), E, ()> {
     // Angular order and next/prev.
     for list in out.iter_mut() {
@@ -412,7 +429,7 @@ fn link<E>(
     // Holes: the cycle hit by a ray to the left of the leftmost vertex.
     let hit: Vec<Option<usize>> = (0..cycles.len())
         .map(|c| {
-            if is_outer[c] {
+            if is_outer[c] || !resolve_holes {
                 None
             } else {
                 let v = half_edges[lowest[c]].origin.0;

@@ -2,8 +2,9 @@
 //!
 //! The boundary of the chosen region is the set of edges with a chosen face on one side
 //! only. These edges (no new intersections: they are edges of the subdivision) are linked
-//! into a DCEL of their own, whose bounded faces are either wholly inside or wholly
-//! outside the region. Each inside face gives one polygon: its boundary cycles are split
+//! into boundary cycles of their own. The connected parts of the region are the classes
+//! of faces joined across non-boundary edges (union–find, linear; no ray shooting), and
+//! each cycle belongs to the part on its left. Each part gives one polygon: its boundary cycles are split
 //! at repeated vertices into simple rings (a cycle touching itself at a vertex becomes a
 //! shell plus a hole touching it, or two holes touching each other, as OGC requires); the
 //! one counter-clockwise ring is the shell, the clockwise ones are holes. Vertices where
@@ -75,46 +76,72 @@ pub fn faces_to_polygons<V, E, F>(
         edges,
         segments,
     };
-    let sub = Dcel::from_arrangement(&arr, |_, c| c).expect("linking cannot fail");
+    // Containment comes from the subdivision itself, not from ray shooting: the regions
+    // of the result are the classes of faces joined across edges that are not on the
+    // boundary, and each boundary cycle lies in the region on its left.
+    let mut class: Vec<usize> = (0..d.face_count()).collect();
+    fn find(p: &mut [usize], mut x: usize) -> usize {
+        while p[x] != x {
+            p[x] = p[p[x]];
+            x = p[x];
+        }
+        x
+    }
+    for i in 0..ne {
+        let f = d.half_edge(HalfEdgeId(2 * i)).face.0;
+        let g = d.half_edge(HalfEdgeId(2 * i + 1)).face.0;
+        if inside(FaceId(f)) == inside(FaceId(g)) {
+            let (a, b) = (find(&mut class, f), find(&mut class, g));
+            class[a] = b;
+        }
+    }
+    let sub = Dcel::linked(&arr, |_, c| c, false);
     // Sub half-edge 2k + s lies on original edge chosen[k]; find which original
     // half-edge runs the same way to read the face on its left.
     let orig_half = |h: HalfEdgeId| -> HalfEdgeId {
-        let k = h.0 / 2;
-        let i = chosen[k];
+        let i = chosen[h.0 / 2];
         let o = HalfEdgeId(2 * i);
-        let same = new_id[d.half_edge(o).origin.0] == sub.half_edge(h).origin.0;
-        if same {
+        if new_id[d.half_edge(o).origin.0] == sub.half_edge(h).origin.0 {
             o
         } else {
             HalfEdgeId(2 * i + 1)
         }
     };
-    let mut out = Vec::new();
-    for g in sub.face_ids().skip(1) {
-        let outer = sub.face(g).outer.expect("bounded");
-        if !inside(d.half_edge(orig_half(outer)).face) {
+    // Every cycle of the boundary DCEL: outer cycles of its faces and the inner cycles
+    // (all put in its face 0).
+    let cycles: Vec<HalfEdgeId> = sub
+        .face_ids()
+        .flat_map(|g| sub.face_cycles(g).collect::<Vec<_>>())
+        .collect();
+    let mut region_of: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
+    let mut regions: Vec<(Option<Vec<Point2>>, Vec<Vec<Point2>>)> = Vec::new();
+    for start in cycles {
+        let left = d.half_edge(orig_half(start)).face;
+        if !inside(left) {
             continue;
         }
-        let mut shell: Option<Vec<Point2>> = None;
-        let mut holes = Vec::new();
-        for start in sub.face_cycles(g) {
-            for ring in split_cycle(&sub, start) {
-                let ccw = ring_is_ccw(&sub, &ring);
-                let pts = ring_points(&sub, &ring, keep_collinear);
-                if pts.len() < 3 {
-                    continue;
-                }
-                if ccw && shell.is_none() {
-                    shell = Some(pts);
-                } else {
-                    holes.push(pts);
-                }
+        let r = find(&mut class, left.0);
+        let k = *region_of.entry(r).or_insert_with(|| {
+            regions.push((None, Vec::new()));
+            regions.len() - 1
+        });
+        for ring in split_cycle(&sub, start) {
+            let ccw = ring_is_ccw(&sub, &ring);
+            let pts = ring_points(&sub, &ring, keep_collinear);
+            if pts.len() < 3 {
+                continue;
+            }
+            if ccw && regions[k].0.is_none() {
+                regions[k].0 = Some(pts);
+            } else {
+                regions[k].1.push(pts);
             }
         }
-        if let Some(shell) = shell {
-            out.push(Polygon::new(shell, holes));
-        }
     }
+    let out = regions
+        .into_iter()
+        .filter_map(|(shell, holes)| shell.map(|s| Polygon::new(s, holes)))
+        .collect();
     MultiPolygon(out)
 }
 
