@@ -114,7 +114,7 @@ pub fn faces_to_polygons<V, E, F>(
         .flat_map(|g| sub.face_cycles(g).collect::<Vec<_>>())
         .collect();
     let mut region_of: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
-    let mut regions: Vec<(Option<Vec<Point2>>, Vec<Vec<Point2>>)> = Vec::new();
+    let mut regions: Vec<(Option<Ring>, Vec<Ring>)> = Vec::new();
     for start in cycles {
         let left = d.half_edge(orig_half(start)).face;
         if !inside(left) {
@@ -144,6 +144,9 @@ pub fn faces_to_polygons<V, E, F>(
         .collect();
     MultiPolygon(out)
 }
+
+/// A ring's points.
+type Ring = Vec<Point2>;
 
 /// Split a boundary cycle into simple rings at repeated vertices.
 fn split_cycle<V, F>(d: &Dcel<V, Carrier, F>, start: HalfEdgeId) -> Vec<Vec<HalfEdgeId>> {
