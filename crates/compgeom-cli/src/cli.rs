@@ -19,7 +19,7 @@
 //!    and list it in `demo::SECTIONS`.
 //! 4. Add tests to `tests/cli.rs`.
 
-use crate::commands::boolean::{BooleanArgs, MakeValidArgs};
+use crate::commands::boolean::{BooleanArgs, MakeValidArgs, ValidateArgs};
 use crate::commands::hull::HullArgs;
 use crate::commands::intersect::IntersectArgs;
 use crate::commands::overlay::OverlayArgs;
@@ -61,6 +61,9 @@ pub enum Command {
     Boolean(BooleanArgs),
     /// Repair polygons into valid ones, reading rings by a fill rule (book 2.4).
     MakeValid(MakeValidArgs),
+    /// Report why polygons are not valid (OGC rules, RFC 7946 orientation); JSON
+    /// `{"valid", "problems": [{"message", "at"}]}`.
+    Validate(ValidateArgs),
     /// Run the commands on built-in samples; write one SVG per run and an index.html gallery.
     Demo(DemoArgs),
 }

@@ -111,3 +111,16 @@ fn make_valid_splits_a_bow_tie_and_bad_input_fails() {
     fs::write(&bad, "POLYGON((0 0,1 0,0 0))\n").unwrap();
     compgeom().arg("make-valid").arg(&bad).assert().code(2);
 }
+
+#[test]
+fn validate_reports_a_crossing() {
+    let d = TempDir::new().unwrap();
+    let p = d.path().join("bow.wkt");
+    fs::write(&p, "POLYGON((0 0,2 2,2 0,0 2,0 0))\n").unwrap();
+    let v = json(&["validate".as_ref(), p.as_os_str()]);
+    assert_eq!(v["valid"], false);
+    assert_eq!(v["problems"][0]["at"], serde_json::json!([1.0, 1.0]));
+    let (_d, a, _b) = files();
+    let v = json(&["validate".as_ref(), a.as_os_str()]);
+    assert_eq!(v["valid"], true);
+}

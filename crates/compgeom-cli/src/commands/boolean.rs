@@ -247,3 +247,43 @@ pub fn run_make_valid(args: &MakeValidArgs) -> Result<(), CliError> {
     }
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
 }
+
+/// Arguments of `compgeom validate`.
+#[derive(Debug, Clone, Args)]
+pub struct ValidateArgs {
+    /// Input and its format.
+    #[command(flatten)]
+    pub input: InputArgs,
+
+    /// Output (JSON only) and picture.
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// Run `compgeom validate`: JSON `{"valid": bool, "problems": [{"message", "at": [x, y] |
+/// null}]}`; exit 0 either way (the answer is the output).
+pub fn run_validate(args: &ValidateArgs) -> Result<(), CliError> {
+    let a = read_layer(&args.input)?;
+    let problems = compgeom::overlay::validity_problems(&a)?;
+    let list: Vec<serde_json::Value> = problems
+        .iter()
+        .map(|p| serde_json::json!({"message": p.message, "at": p.at.map(|q| [q.x, q.y])}))
+        .collect();
+    let text = serde_json::to_string(&serde_json::json!({
+        "valid": problems.is_empty(),
+        "problems": list,
+    }))
+    .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?;
+    if let Some(svg) = &args.output.svg {
+        let mut pic = boolean_picture(
+            &a,
+            &MultiPolygon::default(),
+            &MultiPolygon::default(),
+            "validate",
+        );
+        let pts: Vec<compgeom::Point2> = problems.iter().filter_map(|p| p.at).collect();
+        pic.add(Layer::new("problems", Style::points("#d62728").with_radius(5.0)).points(&pts));
+        output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
+    }
+    output::emit(args.output.output.as_deref(), &output::with_newline(text))
+}

@@ -36,12 +36,14 @@
 //! between faces inside and outside the result as valid polygons.
 mod boolean;
 mod result;
+mod validate;
 
 pub use boolean::{
     boolean, boolean_dcel, boolean_with, make_valid, union_all, BooleanEdge, BooleanOp,
     BooleanOptions, FillRule,
 };
 pub use result::faces_to_polygons;
+pub use validate::{validity_problems, Problem};
 
 use crate::dcel::Arrangement;
 use crate::dcel::{Carrier, Dcel, FaceId, HalfEdgeId, PolygonLabel, Source};
