@@ -225,7 +225,8 @@ fn ring_made_by_union_has_a_hole() {
 #[test]
 fn nonzero_and_union_all() {
     // Two overlapping squares in one set, opposite orientations: even-odd makes a hole
-    // where they overlap, non-zero (after orienting) fills it.
+    // where they overlap, and so does non-zero (windings +1 and -1 cancel); positive
+    // (after orienting both) and non-zero on equally oriented squares fill it.
     let mut r2 = square(1., 1., 2.);
     r2.reverse();
     let a = mp(vec![square(0., 0., 2.), r2]);
@@ -234,6 +235,18 @@ fn nonzero_and_union_all() {
     assert!((area(&eo) - 6.0).abs() < 1e-12);
     let nz = boolean_with(
         &a,
+        &empty,
+        BooleanOp::Union,
+        &BooleanOptions {
+            fill_rule: FillRule::NonZero,
+            keep_collinear: false,
+        },
+    )
+    .unwrap();
+    assert!((area(&nz) - 6.0).abs() < 1e-12);
+    let same = mp(vec![square(0., 0., 2.), square(1., 1., 2.)]);
+    let nz = boolean_with(
+        &same,
         &empty,
         BooleanOp::Union,
         &BooleanOptions {

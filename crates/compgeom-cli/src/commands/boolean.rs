@@ -24,7 +24,7 @@ JSON output (--format json, the default) is one object:
 
 A and B are each read as one polygon set (all features of the file together), with the
 fill rule: evenodd (default; an odd number of ring crossings is inside), nonzero
-(winding number not zero after orienting each polygon), positive (each polygon its shell
+(winding number not zero, rings as given), positive (each polygon its shell
 minus its holes, the polygons united). With only A, `union` unites all of A's polygons.
 Coordinates of constructed crossings are the nearest f64 to the exact point.
 
@@ -69,7 +69,7 @@ impl OpArg {
 pub enum FillRuleArg {
     /// Odd number of ring crossings is inside.
     Evenodd,
-    /// Winding number not zero (polygons oriented first).
+    /// Winding number not zero (rings as given).
     Nonzero,
     /// Winding number positive: each polygon its shell minus its holes, polygons united.
     Positive,

@@ -6,10 +6,10 @@
 //! ring edge from its right to its left adds one, counted per set). A [`FillRule`]
 //! turns a winding number into inside/outside: even-odd (the default: odd winding, i.e.
 //! an odd number of boundary crossings, is inside; ring orientation is irrelevant) or
-//! non-zero (each polygon is first oriented with its exterior counter-clockwise and
-//! holes clockwise by the exact sign of its area; inside when the winding is not zero)
-//! or positive (oriented the same way; inside when the winding is positive: polygons
-//! united, each its shell minus its holes).
+//! non-zero (rings as given; inside when the winding is not zero) or positive (each
+//! polygon first oriented with its exterior counter-clockwise and holes clockwise by the
+//! exact sign of its area; inside when the winding is positive: polygons united, each its
+//! shell minus its holes).
 //! The result is the boundary between chosen and other faces, made into valid polygons
 //! ([`super::faces_to_polygons`]).
 //!
@@ -64,8 +64,8 @@ pub enum FillRule {
     /// Inside iff a ray from the point crosses the rings an odd number of times.
     #[default]
     EvenOdd,
-    /// Inside iff the winding number is not zero, after orienting each polygon's
-    /// exterior counter-clockwise and its holes clockwise.
+    /// Inside iff the winding number is not zero, rings taken in the orientation given
+    /// (the rule of SVG, Clipper and iOverlay).
     NonZero,
     /// Inside iff the winding number is positive, after orienting each polygon's exterior
     /// counter-clockwise and its holes clockwise: each polygon is its exterior minus its
@@ -108,7 +108,7 @@ pub struct BooleanEdge {
 
 /// The segments of a polygon set, oriented for the fill rule.
 fn oriented_segments(p: &MultiPolygon, rule: FillRule) -> Result<Vec<Segment2>> {
-    if rule == FillRule::EvenOdd {
+    if rule != FillRule::Positive {
         return Ok(polygon_segments(p)?.0);
     }
     let fixed = MultiPolygon(
