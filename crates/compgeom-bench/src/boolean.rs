@@ -1,8 +1,8 @@
 //! `compgeom-bench boolean`: polygon boolean operations (book §2.4) against i_overlay and
 //! geo's `BooleanOps` (which runs i_overlay underneath, plus conversions).
 //!
-//! Inputs: two random star polygons (vertices at sorted random angles, random radii in
-//! [0.5, 1], centres 0.3 apart) with n = 1e3, 1e4, 1e5 vertices, all four operations;
+//! Inputs: two random star polygons (vertices at sorted random angles, radius
+//! 0.8 + 0.15·sin 5θ plus noise of the order of 1/n, centres 0.3 apart: O(n) crossings) with n = 1e3, 1e4, 1e5 vertices, all four operations;
 //! the union of 1e4 random overlapping squares (compgeom `union_all`, i_overlay's union
 //! of one subject under the non-zero rule, geo's `unary_union`). compgeom is exact (crossings
 //! decided exactly and rounded correctly); i_overlay snaps to an integer grid. Answers
@@ -22,7 +22,9 @@ fn star(rng: &mut Rng, n: usize, cx: f64, cy: f64) -> Vec<Point2> {
     angles
         .into_iter()
         .map(|a| {
-            let r = 0.5 + 0.5 * rng.unit();
+            // A smooth wavy outline plus noise of the order of the spacing: the two
+            // outlines cross O(n) times (fully random radii would give Θ(n²) crossings).
+            let r = 0.8 + 0.15 * (5.0 * a).sin() + 2.0 / n as f64 * rng.unit();
             Point2::new(cx + r * a.cos(), cy + r * a.sin())
         })
         .collect()

@@ -8,6 +8,7 @@
 
 mod hull;
 mod intersect;
+mod overlay;
 pub mod samples;
 
 use crate::error::CliError;
@@ -29,7 +30,7 @@ pub struct DemoArgs {
 type SectionFn = fn(&Demo) -> Result<Section, CliError>;
 
 /// The sections of the gallery, in book order. A new command appends its own.
-const SECTIONS: &[SectionFn] = &[hull::section, intersect::section];
+const SECTIONS: &[SectionFn] = &[hull::section, intersect::section, overlay::section];
 
 /// What a section needs: where to put its pictures.
 pub struct Demo {
