@@ -426,14 +426,16 @@ fn link<E>(
             });
         }
     }
-    // Holes: the cycle hit by a ray to the left of the leftmost vertex.
+    // Holes: the cycle hit by a ray to the left of the leftmost vertex. Rounded points
+    // (computed once) serve only as exact-safe filters.
+    let approx: Vec<Point2> = vertices.iter().map(|v| v.approx).collect();
     let hit: Vec<Option<usize>> = (0..cycles.len())
         .map(|c| {
             if is_outer[c] || !resolve_holes {
                 None
             } else {
                 let v = half_edges[lowest[c]].origin.0;
-                shoot_left(&points, &half_edges, carriers, out, v).map(|h| cycle_of[h])
+                shoot_left(&points, &approx, &half_edges, carriers, out, v).map(|h| cycle_of[h])
             }
         })
         .collect();
@@ -473,6 +475,7 @@ fn link<E>(
 /// left meets nothing (the unbounded face).
 fn shoot_left<E>(
     points: &[ExactPoint],
+    approx: &[Point2],
     half_edges: &[HalfEdge<E>],
     carriers: &[Carrier],
     out: &[Vec<usize>],
@@ -504,7 +507,7 @@ fn shoot_left<E>(
         if w == v || list.is_empty() {
             continue;
         }
-        let a = points[w].approx();
+        let a = approx[w];
         // Rounding is monotone and p is an f64 point: a rounded y different from p.y, or a
         // rounded x right of p.x, rules the vertex out exactly.
         if a.y != p.y || a.x > p.x {
@@ -518,7 +521,7 @@ fn shoot_left<E>(
     // its left.
     for h in (0..half_edges.len()).step_by(2) {
         let (a, b) = (half_edges[h].origin.0, half_edges[h ^ 1].origin.0);
-        let (pa, pb) = (points[a].approx(), points[b].approx());
+        let (pa, pb) = (approx[a], approx[b]);
         if (pa.y > p.y && pb.y > p.y) || (pa.y < p.y && pb.y < p.y) || pa.x.min(pb.x) >= p.x {
             continue;
         }
