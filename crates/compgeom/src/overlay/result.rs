@@ -9,7 +9,7 @@
 //! shell plus a hole touching it, or two holes touching each other, as OGC requires); the
 //! one counter-clockwise ring is the shell, the clockwise ones are holes. Vertices where
 //! the boundary goes straight on are dropped unless asked to keep them. All decisions
-//! are exact; only the final coordinates are rounded (see [`super::boolean`] for what
+//! are exact; only the final coordinates are rounded (see [`crate::overlay`] for what
 //! that means for validity).
 use crate::dcel::{Arrangement, Carrier, Dcel, FaceId, HalfEdgeId, Source};
 use crate::kernel::{MultiPolygon, Orientation, Point2, Polygon};
