@@ -6,6 +6,7 @@
 //! groups: see GROUPS below, or all
 //! ```
 
+mod boolean;
 mod delaunay;
 mod hull;
 mod intersect;
@@ -22,6 +23,7 @@ const GROUPS: &[&str] = &[
     "kernel",
     "hull",
     "intersect",
+    "boolean",
     "lp",
     "range",
     "voronoi",
@@ -37,6 +39,7 @@ fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
         "lp" => Some(lp::run(quick)),
         "delaunay" => Some(delaunay::run(quick)),
         "voronoi" => Some(voronoi::run(quick)),
+        "boolean" => Some(boolean::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

@@ -19,10 +19,12 @@
 //!    and list it in `demo::SECTIONS`.
 //! 4. Add tests to `tests/cli.rs`.
 
+use crate::commands::boolean::{BooleanArgs, MakeValidArgs, ValidateArgs};
 use crate::commands::delaunay::DelaunayArgs;
 use crate::commands::hull::HullArgs;
 use crate::commands::interpolate::InterpolateArgs;
 use crate::commands::intersect::IntersectArgs;
+use crate::commands::overlay::OverlayArgs;
 use crate::commands::range::RangeArgs;
 use crate::commands::voronoi::VoronoiArgs;
 use crate::commands::window::WindowArgs;
@@ -56,6 +58,17 @@ pub enum Command {
     /// All intersection points and overlaps of line segments (book chapter 2.1).
     #[command(after_long_help = crate::commands::intersect::JSON_HELP)]
     Intersect(IntersectArgs),
+    /// Overlay of two polygon layers, faces labelled by the polygons containing them (book 2.3).
+    #[command(after_long_help = crate::commands::overlay::JSON_HELP)]
+    Overlay(OverlayArgs),
+    /// Boolean operation on polygon sets: intersection, union, difference, xor (book 2.4).
+    #[command(after_long_help = crate::commands::boolean::JSON_HELP)]
+    Boolean(BooleanArgs),
+    /// Report why polygons are not valid (OGC rules, RFC 7946 orientation); JSON
+    /// `{"valid", "problems": [{"message", "at"}]}`.
+    Validate(ValidateArgs),
+    /// Repair polygons into valid ones, reading rings by a fill rule (book 2.4).
+    MakeValid(MakeValidArgs),
     /// Intersection of half-planes a·x + b·y <= c (book chapter 4).
     #[command(after_long_help = crate::commands::halfplanes::JSON_HELP)]
     Halfplanes(crate::commands::halfplanes::HalfplanesArgs),

@@ -41,6 +41,10 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
         cli::Command::Delaunay(args) => commands::delaunay::run(&args),
         cli::Command::Interpolate(args) => commands::interpolate::run(&args),
         cli::Command::Voronoi(args) => commands::voronoi::run(&args),
+        cli::Command::Overlay(args) => commands::overlay::run(&args),
+        cli::Command::Boolean(args) => commands::boolean::run(&args),
+        cli::Command::MakeValid(args) => commands::boolean::run_make_valid(&args),
+        cli::Command::Validate(args) => commands::boolean::run_validate(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

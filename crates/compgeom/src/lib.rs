@@ -18,6 +18,9 @@
 //! |---|---|---|
 //! | 1 | convex hull in the plane | [`hull::convex_hull`], [`hull::andrew_convex_hull`], [`hull::slow_convex_hull`], [`hull::convex_hull_indices`], [`hull::verify_convex_hull`] |
 //! | 2.1 | line segment intersection (plane sweep) | [`intersect::find_intersections`], [`intersect::sweep_intersections`], [`intersect::any_intersection`], [`intersect::is_simple`], [`intersect::red_blue_intersections`], [`intersect::verify_intersections`] |
+//! | 2.2 | doubly-connected edge list | [`dcel::Dcel`], [`dcel::Dcel::from_segments`], [`dcel::Dcel::from_polygons`], [`dcel::Dcel::validate`] |
+//! | 2.3 | map overlay | [`overlay::overlay`], [`overlay::overlay_polygons`] |
+//! | 2.4 | boolean operations | [`overlay::boolean`], [`overlay::boolean_with`], [`overlay::union_all`], [`overlay::make_valid`] |
 //! | 4 | half-plane intersection, linear programming, smallest enclosing disc, casting | [`lp::intersect_halfplanes`], [`lp::lp2d`], [`lp::lp_d`], [`lp::smallest_enclosing_disc`], [`lp::castability`] |
 //! | 5 | orthogonal range searching | [`range::KdTree`], [`range::RangeTree`], [`range::LayeredRangeTree`], [`range::RangeTreeD`] |
 //! | 7 | Voronoi diagram (Fortune) | [`voronoi::voronoi_diagram`], [`voronoi::fortune_voronoi`], [`voronoi::clip_cells`], [`voronoi::verify_voronoi`], [`voronoi::NearestSite`] |
@@ -33,6 +36,7 @@
 #![deny(missing_docs)]
 #![deny(rustdoc::broken_intra_doc_links)]
 
+pub mod dcel;
 pub mod delaunay;
 mod error;
 pub mod hull;
@@ -40,6 +44,7 @@ pub mod intersect;
 pub mod io;
 pub mod kernel;
 pub mod lp;
+pub mod overlay;
 pub mod range;
 pub mod render;
 pub mod voronoi;

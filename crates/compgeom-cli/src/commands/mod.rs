@@ -1,6 +1,7 @@
 //! One module per command, each with its args struct and `run`. See `cli.rs` for how a
 //! command adds itself.
 
+pub mod boolean;
 pub mod cast;
 pub mod delaunay;
 pub mod enclose;
@@ -9,6 +10,7 @@ pub mod hull;
 pub mod interpolate;
 pub mod intersect;
 pub mod lp;
+pub mod overlay;
 pub mod range;
 pub mod voronoi;
 pub mod window;

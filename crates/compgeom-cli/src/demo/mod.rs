@@ -10,6 +10,7 @@ mod delaunay;
 mod hull;
 mod intersect;
 mod lp;
+mod overlay;
 mod range;
 pub mod samples;
 mod voronoi;
@@ -36,6 +37,7 @@ type SectionFn = fn(&Demo) -> Result<Section, CliError>;
 const SECTIONS: &[SectionFn] = &[
     hull::section,
     intersect::section,
+    overlay::section,
     lp::section,
     range::section,
     voronoi::section,

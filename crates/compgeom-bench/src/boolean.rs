@@ -1,0 +1,188 @@
+//! `compgeom-bench boolean`: polygon boolean operations (book §2.4) against i_overlay and
+//! geo's `BooleanOps` (which runs i_overlay underneath, plus conversions).
+//!
+//! Inputs: two random star polygons (vertices at sorted random angles, radius
+//! 0.8 + 0.15·sin 5θ plus noise of the order of 1/n, centres 0.3 apart: O(n) crossings) with n = 1e3, 1e4, 1e5 vertices, all four operations;
+//! the union of 1e4 random overlapping squares (compgeom `union_all`, i_overlay's union
+//! of one subject under the non-zero rule, geo's `unary_union`). compgeom is exact (crossings
+//! decided exactly and rounded correctly); i_overlay snaps to an integer grid. Answers
+//! are compared once, outside the clock, by area (relative difference reported).
+
+use crate::util::{best_of, ms, Rng};
+use compgeom::overlay::{boolean, union_all, BooleanOp};
+use compgeom::{MultiPolygon, Point2, Polygon};
+use geo::{Area, BooleanOps};
+use i_overlay::core::fill_rule::FillRule;
+use i_overlay::core::overlay_rule::OverlayRule;
+use i_overlay::float::single::SingleFloatOverlay;
+
+fn star(rng: &mut Rng, n: usize, cx: f64, cy: f64) -> Vec<Point2> {
+    let mut angles: Vec<f64> = (0..n).map(|_| std::f64::consts::TAU * rng.unit()).collect();
+    angles.sort_by(f64::total_cmp);
+    angles
+        .into_iter()
+        .map(|a| {
+            // A smooth wavy outline plus noise of the order of the spacing: the two
+            // outlines cross O(n) times (fully random radii would give Θ(n²) crossings).
+            let r = 0.8 + 0.15 * (5.0 * a).sin() + 2.0 / n as f64 * rng.unit();
+            Point2::new(cx + r * a.cos(), cy + r * a.sin())
+        })
+        .collect()
+}
+
+fn area(m: &MultiPolygon) -> f64 {
+    let ring = |r: &Vec<Point2>| {
+        (0..r.len())
+            .map(|i| {
+                let (a, b) = (r[i], r[(i + 1) % r.len()]);
+                a.x * b.y - b.x * a.y
+            })
+            .sum::<f64>()
+            / 2.0
+    };
+    m.0.iter().map(|p| p.rings().map(ring).sum::<f64>()).sum()
+}
+
+fn io_paths(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
+    m.0.iter()
+        .flat_map(|p| p.rings())
+        .map(|r| r.iter().map(|p| [p.x, p.y]).collect())
+        .collect()
+}
+
+fn io_area(shapes: &[Vec<Vec<[f64; 2]>>]) -> f64 {
+    shapes
+        .iter()
+        .flatten()
+        .map(|r| {
+            (0..r.len())
+                .map(|i| {
+                    let (a, b) = (r[i], r[(i + 1) % r.len()]);
+                    a[0] * b[1] - b[0] * a[1]
+                })
+                .sum::<f64>()
+                / 2.0
+        })
+        .sum::<f64>()
+        .abs()
+}
+
+fn geo_poly(m: &MultiPolygon) -> geo::MultiPolygon<f64> {
+    geo::MultiPolygon::new(
+        m.0.iter()
+            .map(|p| {
+                let ring = |r: &Vec<Point2>| {
+                    geo::LineString::from(r.iter().map(|p| (p.x, p.y)).collect::<Vec<_>>())
+                };
+                geo::Polygon::new(ring(&p.exterior), p.holes.iter().map(ring).collect())
+            })
+            .collect(),
+    )
+}
+
+fn row(name: &str, n: usize, ours: f64, io: f64, geo: f64, dev_io: f64) {
+    println!(
+        "| {name:<13} | {n:>7} | {ours:>10.2} | {io:>10.2} | {geo:>10.2} | {:>6.2} | {:>6.2} | {dev_io:.1e} |",
+        ours / io,
+        ours / geo
+    );
+}
+
+/// Run the group.
+pub fn run(quick: bool) -> Result<(), String> {
+    let mut rng = Rng::new(4);
+    let sizes: &[usize] = if quick {
+        &[1_000, 10_000]
+    } else {
+        &[1_000, 10_000, 100_000]
+    };
+    let runs = if quick { 1 } else { 3 };
+    println!("boolean: best of {runs} runs, times in ms; ratio = compgeom / peer; dev = |area − i_overlay area| / area");
+    println!("| input         |       n |   compgeom |  i_overlay |        geo | /i_ov  |  /geo  | dev     |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|");
+    for &n in sizes {
+        let a = MultiPolygon(vec![Polygon::new(star(&mut rng, n, 0.0, 0.0), vec![])]);
+        let b = MultiPolygon(vec![Polygon::new(star(&mut rng, n, 0.3, 0.0), vec![])]);
+        let (pa, pb) = (io_paths(&a), io_paths(&b));
+        let (ga, gb) = (geo_poly(&a), geo_poly(&b));
+        for (name, op, rule, gop) in [
+            (
+                "intersection",
+                BooleanOp::Intersection,
+                OverlayRule::Intersect,
+                geo::OpType::Intersection,
+            ),
+            (
+                "union",
+                BooleanOp::Union,
+                OverlayRule::Union,
+                geo::OpType::Union,
+            ),
+            (
+                "difference",
+                BooleanOp::Difference,
+                OverlayRule::Difference,
+                geo::OpType::Difference,
+            ),
+            ("xor", BooleanOp::Xor, OverlayRule::Xor, geo::OpType::Xor),
+        ] {
+            let ours = boolean(&a, &b, op).map_err(|e| e.to_string())?;
+            let theirs = pa.overlay(&pb, rule, FillRule::EvenOdd);
+            let (x, y) = (area(&ours), io_area(&theirs));
+            let dev = (x - y).abs() / x.abs().max(1e-300);
+            let t_ours = best_of(runs, || boolean(&a, &b, op).unwrap());
+            let t_io = best_of(runs, || pa.overlay(&pb, rule, FillRule::EvenOdd));
+            let t_geo = best_of(runs, || ga.boolean_op(&gb, gop));
+            let g = ga.boolean_op(&gb, gop).unsigned_area();
+            if (g - x).abs() > 1e-6 * x.abs().max(1e-9) {
+                println!("  note: geo area {g} vs compgeom {x}");
+            }
+            row(
+                &format!("star {name}"),
+                n,
+                ms(t_ours),
+                ms(t_io),
+                ms(t_geo),
+                dev,
+            );
+        }
+    }
+    // Union of many squares.
+    let count = if quick { 1_000 } else { 10_000 };
+    let squares = MultiPolygon(
+        (0..count)
+            .map(|_| {
+                let (x, y, w) = (rng.unit(), rng.unit(), 0.005 + 0.02 * rng.unit());
+                Polygon::new(
+                    vec![
+                        Point2::new(x, y),
+                        Point2::new(x + w, y),
+                        Point2::new(x + w, y + w),
+                        Point2::new(x, y + w),
+                    ],
+                    vec![],
+                )
+            })
+            .collect(),
+    );
+    let ps = io_paths(&squares);
+    let empty: Vec<Vec<[f64; 2]>> = Vec::new();
+    let gs: Vec<geo::Polygon<f64>> = geo_poly(&squares).0;
+    let ours = union_all(&squares).map_err(|e| e.to_string())?;
+    let theirs = ps.overlay(&empty, OverlayRule::Subject, FillRule::NonZero);
+    let (x, y) = (area(&ours), io_area(&theirs));
+    let t_ours = best_of(runs, || union_all(&squares).unwrap());
+    let t_io = best_of(runs, || {
+        ps.overlay(&empty, OverlayRule::Subject, FillRule::NonZero)
+    });
+    let t_geo = best_of(runs, || geo::unary_union(gs.iter()));
+    row(
+        "square union",
+        count,
+        ms(t_ours),
+        ms(t_io),
+        ms(t_geo),
+        (x - y).abs() / x,
+    );
+    Ok(())
+}

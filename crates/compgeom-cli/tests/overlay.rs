@@ -1,0 +1,126 @@
+//! `compgeom overlay`, `boolean` and `make-valid` end to end.
+
+use assert_cmd::Command;
+use serde_json::Value;
+use std::fs;
+use tempfile::TempDir;
+
+fn compgeom() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_compgeom"))
+}
+
+const A: &str = "POLYGON((0 0,4 0,4 4,0 4,0 0))\n";
+const B: &str = "POLYGON((2 2,6 2,6 6,2 6,2 2))\n";
+
+fn files() -> (TempDir, std::path::PathBuf, std::path::PathBuf) {
+    let dir = TempDir::new().unwrap();
+    let a = dir.path().join("a.wkt");
+    let b = dir.path().join("b.wkt");
+    fs::write(&a, A).unwrap();
+    fs::write(&b, B).unwrap();
+    (dir, a, b)
+}
+
+fn json(args: &[&std::ffi::OsStr]) -> Value {
+    let out = compgeom().args(args).assert().success();
+    serde_json::from_slice(&out.get_output().stdout).expect("JSON")
+}
+
+#[test]
+fn boolean_ops_json_areas() {
+    let (_d, a, b) = files();
+    let area = |op: &str| {
+        let v = json(&[
+            "boolean".as_ref(),
+            op.as_ref(),
+            a.as_os_str(),
+            b.as_os_str(),
+        ]);
+        let ring = &v["result"]["coordinates"][0][0];
+        let pts: Vec<(f64, f64)> = ring
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap()))
+            .collect();
+        (0..pts.len() - 1)
+            .map(|i| pts[i].0 * pts[i + 1].1 - pts[i + 1].0 * pts[i].1)
+            .sum::<f64>()
+            / 2.0
+    };
+    assert_eq!(area("union"), 28.0);
+    assert_eq!(area("intersection"), 4.0);
+    assert_eq!(area("difference"), 12.0);
+}
+
+#[test]
+fn boolean_wkt_output_and_svg() {
+    let (d, a, b) = files();
+    let svg = d.path().join("x.svg");
+    let out = compgeom()
+        .args(["boolean", "intersection"])
+        .arg(&a)
+        .arg(&b)
+        .args(["-f", "wkt", "--svg"])
+        .arg(&svg)
+        .assert()
+        .success();
+    let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+    assert_eq!(text.trim(), "MULTIPOLYGON (((4 2, 4 4, 2 4, 2 2, 4 2)))");
+    assert!(fs::read_to_string(svg).unwrap().contains("<svg"));
+}
+
+#[test]
+fn union_of_one_input_and_missing_b() {
+    let (_d, a, _b) = files();
+    compgeom()
+        .args(["boolean", "union"])
+        .arg(&a)
+        .assert()
+        .success();
+    compgeom().args(["boolean", "xor"]).arg(&a).assert().code(2);
+}
+
+#[test]
+fn overlay_labels_faces() {
+    let (_d, a, b) = files();
+    let v = json(&[
+        "overlay".as_ref(),
+        a.as_os_str(),
+        b.as_os_str(),
+        "--verify".as_ref(),
+    ]);
+    assert_eq!(v["vertices"], 10);
+    assert_eq!(v["edges"], 12);
+    assert_eq!(v["verified"], true);
+    let faces = v["faces"].as_array().unwrap();
+    assert_eq!(faces.len(), 4);
+    assert!(faces[0]["polygon"].is_null());
+    let both = faces.iter().filter(|f| f["a"] == 0 && f["b"] == 0).count();
+    assert_eq!(both, 1);
+}
+
+#[test]
+fn make_valid_splits_a_bow_tie_and_bad_input_fails() {
+    let d = TempDir::new().unwrap();
+    let p = d.path().join("bow.wkt");
+    fs::write(&p, "POLYGON((0 0,2 2,2 0,0 2,0 0))\n").unwrap();
+    let v = json(&["make-valid".as_ref(), p.as_os_str()]);
+    assert_eq!(v["polygons"], 2);
+    let bad = d.path().join("bad.wkt");
+    fs::write(&bad, "POLYGON((0 0,1 0,0 0))\n").unwrap();
+    compgeom().arg("make-valid").arg(&bad).assert().code(2);
+}
+
+#[test]
+fn validate_reports_a_crossing() {
+    let d = TempDir::new().unwrap();
+    let p = d.path().join("bow.wkt");
+    fs::write(&p, "POLYGON((0 0,2 2,2 0,0 2,0 0))\n").unwrap();
+    let v = json(&["validate".as_ref(), p.as_os_str()]);
+    assert_eq!(v["valid"], false);
+    assert_eq!(v["problems"][0]["at"], serde_json::json!([1.0, 1.0]));
+    let (_d, a, _b) = files();
+    let v = json(&["validate".as_ref(), a.as_os_str()]);
+    assert_eq!(v["valid"], true);
+}

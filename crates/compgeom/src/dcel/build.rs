@@ -1,0 +1,590 @@
+//! Builders: the arrangement of a set of segments, and the DCEL linked from it.
+//!
+//! 1. [`Arrangement::of_segments`]: the exact intersection sweep gives every point where
+//!    segments meet; each segment is cut at the points in its interior (they come in
+//!    sweep order, so along the segment) and pieces with the same two end vertices
+//!    (overlapping collinear segments) become one edge remembering all its sources.
+//! 2. [`Dcel::from_arrangement`]: half-edges are sorted counter-clockwise around each
+//!    vertex — exactly, from the directions of the input segments carrying them (a piece
+//!    starting at a crossing points the way its input segment points, so no constructed
+//!    point enters the test) — and `next(e)` is the outgoing half-edge just clockwise of
+//!    `twin(e)`. The boundary cycles follow. A cycle is an outer boundary iff it turns
+//!    left (strictly) at each visit of its lexicographically smallest vertex; the others
+//!    are the outer boundaries of connected components, i.e. holes of the face found by
+//!    shooting a ray to the left from that vertex (the book's graph G).
+use super::{Dcel, Face, FaceId, HalfEdge, HalfEdgeId, Vertex, VertexId};
+use crate::intersect::find_intersections;
+use crate::kernel::{compare_slopes, compare_xy, ExactPoint, Orientation, Point2, Segment2};
+use crate::kernel::{Crossing, MultiPolygon};
+use crate::{Error, Result};
+use std::cmp::Ordering;
+use std::collections::HashMap;
+
+/// One input segment carrying an edge, and whether it points the same way as the
+/// half-edge that stores it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Source {
+    /// Index of the input segment.
+    pub segment: usize,
+    /// True when the segment runs the same way as the half-edge.
+    pub forward: bool,
+}
+
+/// The arrangement of a set of segments: vertices (exact) and edges between them, each
+/// edge with the input segments covering it.
+#[derive(Debug, Clone, Default)]
+pub struct Arrangement {
+    /// The exact vertices.
+    pub vertices: Vec<ExactPoint>,
+    /// Edges `(u, v, sources)`, `u < v`; `forward` in a source is relative to `u → v`.
+    pub edges: Vec<(usize, usize, Vec<Source>)>,
+    /// The input segments.
+    pub segments: Vec<Segment2>,
+}
+
+fn key(p: Point2) -> (u64, u64) {
+    // +0.0 folds -0.0 into 0.0 so that equal points get one vertex.
+    ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
+}
+
+/// True when `a` comes first in sweep order (higher y, then smaller x).
+fn sweep_first(a: Point2, b: Point2) -> bool {
+    a.y > b.y || (a.y == b.y && a.x < b.x)
+}
+
+impl Arrangement {
+    /// The arrangement of `segments`. Zero-length segments are ignored (they add no
+    /// edge). Non-finite coordinates are an error naming the segment.
+    pub fn of_segments(segments: &[Segment2]) -> Result<Arrangement> {
+        for (i, s) in segments.iter().enumerate() {
+            for p in [s.a, s.b] {
+                if !p.is_finite() {
+                    let value = if p.x.is_finite() { p.y } else { p.x };
+                    return Err(Error::NonFinite {
+                        what: format!("segment {i}"),
+                        value,
+                    });
+                }
+            }
+        }
+        let kept: Vec<usize> = (0..segments.len())
+            .filter(|&i| !segments[i].is_degenerate())
+            .collect();
+        let sub: Vec<Segment2> = kept.iter().map(|&i| segments[i]).collect();
+        let found = find_intersections(&sub)?;
+        let mut vertices: Vec<ExactPoint> = Vec::new();
+        let mut by_point: HashMap<(u64, u64), usize> = HashMap::new();
+        let mut inner: Vec<Vec<usize>> = vec![Vec::new(); sub.len()];
+        for p in &found.points {
+            let id = match p.exact {
+                ExactPoint::Input(q) => *by_point.entry(key(q)).or_insert_with(|| {
+                    vertices.push(ExactPoint::Input(q));
+                    vertices.len() - 1
+                }),
+                e => {
+                    vertices.push(e);
+                    vertices.len() - 1
+                }
+            };
+            for &s in &p.interior {
+                inner[s].push(id);
+            }
+        }
+        let mut vertex_of = |q: Point2, vertices: &mut Vec<ExactPoint>| -> usize {
+            *by_point.entry(key(q)).or_insert_with(|| {
+                vertices.push(ExactPoint::Input(q));
+                vertices.len() - 1
+            })
+        };
+        let mut edge_of: HashMap<(usize, usize), usize> = HashMap::new();
+        let mut edges: Vec<(usize, usize, Vec<Source>)> = Vec::new();
+        for (k, s) in sub.iter().enumerate() {
+            let a_first = sweep_first(s.a, s.b);
+            let (up, low) = if a_first { (s.a, s.b) } else { (s.b, s.a) };
+            let mut chain = Vec::with_capacity(inner[k].len() + 2);
+            chain.push(vertex_of(up, &mut vertices));
+            chain.extend_from_slice(&inner[k]);
+            chain.push(vertex_of(low, &mut vertices));
+            for w in chain.windows(2) {
+                let (u, v) = (w[0], w[1]);
+                // The piece runs u → v, i.e. like the segment iff a is its upper end.
+                let forward = a_first == (u < v);
+                let pair = (u.min(v), u.max(v));
+                let e = *edge_of.entry(pair).or_insert_with(|| {
+                    edges.push((pair.0, pair.1, Vec::new()));
+                    edges.len() - 1
+                });
+                edges[e].2.push(Source {
+                    segment: kept[k],
+                    forward,
+                });
+            }
+        }
+        Ok(Arrangement {
+            vertices,
+            edges,
+            segments: segments.to_vec(),
+        })
+    }
+}
+
+/// The sign of `d1 × d2` for the directions of two half-edges, each given by its carrier
+/// segment and whether it runs the segment's way. Exact (input points only).
+fn cross_dirs(s1: Segment2, f1: bool, s2: Segment2, f2: bool) -> Ordering {
+    // compare_slopes(s, t) = sign(sorted(t) × sorted(s)); sorted flips a segment whose
+    // first endpoint is lexicographically greater.
+    let flip = |s: Segment2| compare_xy(s.a, s.b) == Ordering::Greater;
+    let c = compare_slopes(s1, s2).reverse(); // sign(sorted(s1) × sorted(s2))
+    if flip(s1) ^ flip(s2) ^ !f1 ^ !f2 {
+        c.reverse()
+    } else {
+        c
+    }
+}
+
+/// 0 for directions in [0°, 180°), 1 for [180°, 360°).
+fn half_plane(s: Segment2, forward: bool) -> u8 {
+    let (a, b) = if forward { (s.a, s.b) } else { (s.b, s.a) };
+    let up = b.y > a.y || (b.y == a.y && b.x > a.x);
+    u8::from(!up)
+}
+
+/// The input segment a half-edge lies on, and whether the half-edge runs its way: the
+/// half-edge's direction, exactly, even when it starts or ends at a crossing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Carrier {
+    /// The input segment.
+    pub seg: Segment2,
+    /// True when the half-edge runs from `seg.a` towards `seg.b`.
+    pub forward: bool,
+}
+
+impl Carrier {
+    fn half(&self) -> u8 {
+        half_plane(self.seg, self.forward)
+    }
+    /// The same line, the other way.
+    pub fn reversed(self) -> Carrier {
+        Carrier {
+            seg: self.seg,
+            forward: !self.forward,
+        }
+    }
+    /// Counter-clockwise angular order of two directions from a common origin, starting
+    /// at direction +x (included).
+    pub fn angle_cmp(&self, other: &Carrier) -> Ordering {
+        self.half().cmp(&other.half()).then_with(|| {
+            match cross_dirs(self.seg, self.forward, other.seg, other.forward) {
+                Ordering::Greater => Ordering::Less,
+                Ordering::Less => Ordering::Greater,
+                Ordering::Equal => Ordering::Equal,
+            }
+        })
+    }
+    /// Orientation of the turn from `self` (arriving) to `out` (leaving).
+    pub fn turn(&self, out: &Carrier) -> Orientation {
+        match cross_dirs(self.seg, self.forward, out.seg, out.forward) {
+            Ordering::Greater => Orientation::CounterClockwise,
+            Ordering::Less => Orientation::Clockwise,
+            Ordering::Equal => Orientation::Collinear,
+        }
+    }
+}
+
+impl<E> Dcel<(), E, ()> {
+    /// The DCEL of an arrangement; `edge_data(sources, carrier)` gives the data of each
+    /// half-edge from its sources (relative to the half-edge's direction) and carrier.
+    /// Half-edge `2i` runs `edges[i].0 → edges[i].1`, `2i + 1` is its twin.
+    pub fn from_arrangement(
+        arr: &Arrangement,
+        edge_data: impl FnMut(&[Source], Carrier) -> E,
+    ) -> Result<Dcel<(), E, ()>> {
+        Ok(Self::linked(arr, edge_data, true))
+    }
+
+    /// As [`Dcel::from_arrangement`]; with `resolve_holes` false every inner cycle is put
+    /// in the unbounded face (no ray shooting: for callers that know the containment).
+    pub(crate) fn linked(
+        arr: &Arrangement,
+        mut edge_data: impl FnMut(&[Source], Carrier) -> E,
+        resolve_holes: bool,
+    ) -> Dcel<(), E, ()> {
+        let n = arr.vertices.len();
+        let mut half_edges = Vec::with_capacity(2 * arr.edges.len());
+        let mut carriers = Vec::with_capacity(2 * arr.edges.len());
+        let mut out: Vec<Vec<usize>> = vec![Vec::new(); n];
+        for (i, (u, v, sources)) in arr.edges.iter().enumerate() {
+            let s0 = sources[0];
+            let seg = arr.segments[s0.segment];
+            let back: Vec<Source> = sources
+                .iter()
+                .map(|s| Source {
+                    segment: s.segment,
+                    forward: !s.forward,
+                })
+                .collect();
+            for (h, (o, src)) in [(*u, sources.as_slice()), (*v, back.as_slice())]
+                .into_iter()
+                .enumerate()
+            {
+                let id = 2 * i + h;
+                let carrier = Carrier {
+                    seg,
+                    forward: s0.forward == (h == 0),
+                };
+                half_edges.push(HalfEdge {
+                    origin: VertexId(o),
+                    twin: HalfEdgeId(id ^ 1),
+                    next: HalfEdgeId(usize::MAX),
+                    prev: HalfEdgeId(usize::MAX),
+                    face: FaceId(usize::MAX),
+                    data: edge_data(src, carrier),
+                });
+                carriers.push(carrier);
+                out[o].push(id);
+            }
+        }
+        link(
+            arr.vertices.clone(),
+            half_edges,
+            &carriers,
+            &mut out,
+            resolve_holes,
+        )
+    }
+}
+
+impl Dcel<(), Vec<Source>, ()> {
+    /// The arrangement of `segments` as a DCEL: each half-edge lists the input segments
+    /// carrying it. Face data is `()`.
+    pub fn from_segments(segments: &[Segment2]) -> Result<Self> {
+        let arr = Arrangement::of_segments(segments)?;
+        Dcel::from_arrangement(&arr, |s, _| s.to_vec())
+    }
+}
+
+/// Which polygons of a [`MultiPolygon`] contain a face (even-odd per polygon), ascending.
+pub type PolygonLabel = Vec<usize>;
+
+impl Dcel<(), Vec<Source>, PolygonLabel> {
+    /// The subdivision induced by the rings of `polygons` (in any orientation); each face
+    /// is labelled with the indices of the polygons containing it, each polygon read
+    /// with the even-odd rule. Half-edge sources are ring edges, numbered ring by ring
+    /// in [`polygon_segments`] order.
+    pub fn from_polygons(polygons: &MultiPolygon) -> Result<Self> {
+        let (segs, owner) = polygon_segments(polygons)?;
+        let d = Dcel::from_segments(&segs)?;
+        Ok(d.label_faces(Vec::new(), |label, h| {
+            let mut l = label.clone();
+            for s in h {
+                let p = owner[s.segment];
+                match l.binary_search(&p) {
+                    Ok(i) => {
+                        l.remove(i);
+                    }
+                    Err(i) => l.insert(i, p),
+                }
+            }
+            l
+        }))
+    }
+}
+
+/// The edges of every ring of `polygons` as segments (ring by ring, exterior first; a
+/// closing point equal to the first is dropped) and the polygon owning each. Errors:
+/// non-finite coordinates, rings with fewer than 3 distinct points.
+pub fn polygon_segments(polygons: &MultiPolygon) -> Result<(Vec<Segment2>, Vec<usize>)> {
+    let mut segs = Vec::new();
+    let mut owner = Vec::new();
+    for (pi, poly) in polygons.0.iter().enumerate() {
+        for (ri, ring) in poly.rings().enumerate() {
+            let what = || {
+                if ri == 0 {
+                    format!("polygon {pi} exterior")
+                } else {
+                    format!("polygon {pi} hole {}", ri - 1)
+                }
+            };
+            if let Some(p) = ring.iter().find(|p| !p.is_finite()) {
+                let value = if p.x.is_finite() { p.y } else { p.x };
+                return Err(Error::NonFinite {
+                    what: what(),
+                    value,
+                });
+            }
+            let mut r: &[Point2] = ring;
+            if r.len() > 1 && r[0] == r[r.len() - 1] {
+                r = &r[..r.len() - 1];
+            }
+            let mut distinct: Vec<(u64, u64)> = r.iter().map(|&p| key(p)).collect();
+            distinct.sort_unstable();
+            distinct.dedup();
+            if distinct.len() < 3 {
+                return Err(Error::InvalidInput(format!(
+                    "{}: a ring needs at least 3 distinct points, found {}",
+                    what(),
+                    distinct.len()
+                )));
+            }
+            for i in 0..r.len() {
+                let s = Segment2::new(r[i], r[(i + 1) % r.len()]);
+                if !s.is_degenerate() {
+                    segs.push(s);
+                    owner.push(pi);
+                }
+            }
+        }
+    }
+    Ok((segs, owner))
+}
+
+/// Link half-edges around vertices, form cycles and faces.
+fn link<E>(
+    points: Vec<ExactPoint>,
+    mut half_edges: Vec<HalfEdge<E>>,
+    carriers: &[Carrier],
+    out: &mut [Vec<usize>],
+    resolve_holes: bool,
+) -> Dcel<(), E, ()> {
+    // Angular order and next/prev.
+    for list in out.iter_mut() {
+        list.sort_by(|&a, &b| carriers[a].angle_cmp(&carriers[b]));
+        let k = list.len();
+        for j in 0..k {
+            let incoming = list[j] ^ 1;
+            let nxt = list[(j + k - 1) % k];
+            half_edges[incoming].next = HalfEdgeId(nxt);
+            half_edges[nxt].prev = HalfEdgeId(incoming);
+        }
+    }
+    let vertices: Vec<Vertex<()>> = points
+        .iter()
+        .zip(out.iter())
+        .map(|(p, list)| Vertex {
+            point: *p,
+            approx: p.approx(),
+            incident: list.first().map(|&h| HalfEdgeId(h)),
+            data: (),
+        })
+        .collect();
+    // Cycles.
+    let m = half_edges.len();
+    let mut cycle_of = vec![usize::MAX; m];
+    let mut cycles: Vec<usize> = Vec::new(); // a start half-edge per cycle
+    for h in 0..m {
+        if cycle_of[h] != usize::MAX {
+            continue;
+        }
+        let c = cycles.len();
+        cycles.push(h);
+        let mut e = h;
+        loop {
+            cycle_of[e] = c;
+            e = half_edges[e].next.0;
+            if e == h {
+                break;
+            }
+        }
+    }
+    // Classify each cycle at its lexicographically smallest vertex.
+    let mut lowest: Vec<usize> = vec![usize::MAX; cycles.len()]; // a half-edge leaving it
+    let mut is_outer = vec![true; cycles.len()];
+    for h in 0..m {
+        let c = cycle_of[h];
+        let cur = lowest[c];
+        let better = cur == usize::MAX || {
+            let (a, b) = (half_edges[h].origin.0, half_edges[cur].origin.0);
+            a != b && points[a].compare_xy(&points[b]) == Ordering::Less
+        };
+        if better {
+            lowest[c] = h;
+        }
+    }
+    for h in 0..m {
+        let c = cycle_of[h];
+        if half_edges[h].origin != half_edges[lowest[c]].origin {
+            continue;
+        }
+        let p = half_edges[h].prev.0;
+        if carriers[p].turn(&carriers[h]) != Orientation::CounterClockwise {
+            is_outer[c] = false;
+        }
+    }
+    let mut faces: Vec<Face<()>> = vec![Face {
+        outer: None,
+        inner: Vec::new(),
+        data: (),
+    }];
+    let mut face_of_cycle = vec![usize::MAX; cycles.len()];
+    for (c, &h) in cycles.iter().enumerate() {
+        if is_outer[c] {
+            face_of_cycle[c] = faces.len();
+            faces.push(Face {
+                outer: Some(HalfEdgeId(h)),
+                inner: Vec::new(),
+                data: (),
+            });
+        }
+    }
+    // Holes: the cycle hit by a ray to the left of the leftmost vertex. Rounded points
+    // (computed once) serve only as exact-safe filters.
+    let approx: Vec<Point2> = vertices.iter().map(|v| v.approx).collect();
+    let hit: Vec<Option<usize>> = (0..cycles.len())
+        .map(|c| {
+            if is_outer[c] || !resolve_holes {
+                None
+            } else {
+                let v = half_edges[lowest[c]].origin.0;
+                shoot_left(&points, &approx, &half_edges, carriers, out, v).map(|h| cycle_of[h])
+            }
+        })
+        .collect();
+    for c in 0..cycles.len() {
+        if is_outer[c] {
+            continue;
+        }
+        // Follow the chain of hits (strictly leftwards, so it ends).
+        let mut d = c;
+        let face = loop {
+            if is_outer[d] {
+                break face_of_cycle[d];
+            }
+            if face_of_cycle[d] != usize::MAX && d != c {
+                break face_of_cycle[d];
+            }
+            match hit[d] {
+                None => break 0,
+                Some(next) => d = next,
+            }
+        };
+        face_of_cycle[c] = face;
+        faces[face].inner.push(HalfEdgeId(cycles[c]));
+    }
+    for h in 0..m {
+        half_edges[h].face = FaceId(face_of_cycle[cycle_of[h]]);
+    }
+    Dcel {
+        vertices,
+        half_edges,
+        faces,
+    }
+}
+
+/// The half-edge whose face contains the points just left of vertex `v` (an input point:
+/// the leftmost vertex of a component never is a crossing), or `None` when the ray to the
+/// left meets nothing (the unbounded face).
+fn shoot_left<E>(
+    points: &[ExactPoint],
+    approx: &[Point2],
+    half_edges: &[HalfEdge<E>],
+    carriers: &[Carrier],
+    out: &[Vec<usize>],
+    v: usize,
+) -> Option<usize> {
+    let p = match points[v] {
+        ExactPoint::Input(p) => p,
+        ExactPoint::Crossing(c) => c.approx(), // unreachable in an arrangement
+    };
+    let pv = ExactPoint::Input(p);
+    let far = Point2::new(p.x - p.x.abs() - 1.0, p.y);
+    let ray = Segment2::new(far, p);
+    // Best candidate: (hit point, half-edge).
+    let mut best: Option<(ExactPoint, usize)> = None;
+    let consider = |at: ExactPoint, h: usize, best: &mut Option<(ExactPoint, usize)>| {
+        if at.compare_x(&pv) != Ordering::Less {
+            return;
+        }
+        if best
+            .as_ref()
+            .map_or(true, |(b, _)| at.compare_x(b) == Ordering::Greater)
+        {
+            *best = Some((at, h));
+        }
+    };
+    // Vertices on the ray's line, left of v: the face between the last and the first
+    // outgoing half-edge (the wedge containing direction +x).
+    for (w, list) in out.iter().enumerate() {
+        if w == v || list.is_empty() {
+            continue;
+        }
+        let a = approx[w];
+        // Rounding is monotone and p is an f64 point: a rounded y different from p.y, or a
+        // rounded x right of p.x, rules the vertex out exactly.
+        if a.y != p.y || a.x > p.x {
+            continue;
+        }
+        if points[w].compare_y(&pv) == Ordering::Equal {
+            consider(points[w], list[list.len() - 1], &mut best);
+        }
+    }
+    // Edges strictly crossing the line: the half-edge running downwards has v's side on
+    // its left.
+    for h in (0..half_edges.len()).step_by(2) {
+        let (a, b) = (half_edges[h].origin.0, half_edges[h ^ 1].origin.0);
+        let (pa, pb) = (approx[a], approx[b]);
+        if (pa.y > p.y && pb.y > p.y) || (pa.y < p.y && pb.y < p.y) || pa.x.min(pb.x) >= p.x {
+            continue;
+        }
+        let ya = points[a].compare_y(&pv);
+        let yb = points[b].compare_y(&pv);
+        if ya == Ordering::Equal || yb == Ordering::Equal || ya == yb {
+            continue;
+        }
+        let Some(c) = Crossing::new(carriers[h].seg, ray) else {
+            continue;
+        };
+        let down = if ya == Ordering::Greater { h } else { h ^ 1 };
+        consider(ExactPoint::Crossing(c), down, &mut best);
+    }
+    best.map(|(_, h)| h)
+}
+
+impl<V, E, F> Dcel<V, E, F> {
+    /// Replace the face data by labels propagated from the unbounded face (labelled
+    /// `outside`) across edges: the face left of half-edge `h` gets `cross(label of the
+    /// face right of h, data of h)`. Every face is reached (each component's outer
+    /// boundary belongs to the face containing it), in breadth-first order.
+    pub fn label_faces<G: Clone>(
+        self,
+        outside: G,
+        mut cross: impl FnMut(&G, &E) -> G,
+    ) -> Dcel<V, E, G> {
+        let nf = self.faces.len();
+        let mut labels: Vec<Option<G>> = vec![None; nf];
+        labels[0] = Some(outside);
+        let mut queue = std::collections::VecDeque::from([FaceId(0)]);
+        while let Some(f) = queue.pop_front() {
+            let cycles: Vec<HalfEdgeId> = self.face_cycles(f).collect();
+            for start in cycles {
+                for h in self.cycle(start) {
+                    let t = self.twin(h);
+                    let g = self.half_edges[t.0].face;
+                    if labels[g.0].is_none() {
+                        let from = labels[f.0].as_ref().expect("labelled");
+                        labels[g.0] = Some(cross(from, &self.half_edges[t.0].data));
+                        queue.push_back(g);
+                    }
+                }
+            }
+        }
+        let Dcel {
+            vertices,
+            half_edges,
+            faces,
+        } = self;
+        let faces = faces
+            .into_iter()
+            .zip(labels)
+            .map(|(f, l)| Face {
+                outer: f.outer,
+                inner: f.inner,
+                data: l.expect("every face is reachable from the unbounded face"),
+            })
+            .collect();
+        Dcel {
+            vertices,
+            half_edges,
+            faces,
+        }
+    }
+}

@@ -1,0 +1,354 @@
+//! Boolean operations: exact area identities, validity of the output and point
+//! membership against exact point-in-polygon, on random and degenerate inputs.
+use compgeom::kernel::{orient2d, Orientation};
+use compgeom::overlay::{
+    boolean, boolean_dcel, boolean_with, union_all, BooleanOp, BooleanOptions, FillRule,
+};
+use compgeom::{MultiPolygon, Point2, Polygon};
+use num_rational::BigRational;
+use num_traits::{ToPrimitive, Zero};
+use proptest::prelude::*;
+
+mod common;
+use common::{area, assert_valid, exact_shoelace2};
+
+const OPS: [BooleanOp; 4] = [
+    BooleanOp::Intersection,
+    BooleanOp::Union,
+    BooleanOp::Difference,
+    BooleanOp::Xor,
+];
+
+fn pt(x: f64, y: f64) -> Point2 {
+    Point2::new(x, y)
+}
+
+fn square(x: f64, y: f64, w: f64) -> Vec<Point2> {
+    vec![pt(x, y), pt(x + w, y), pt(x + w, y + w), pt(x, y + w)]
+}
+
+fn rings(m: &MultiPolygon) -> Vec<&Vec<Point2>> {
+    m.0.iter().flat_map(|p| p.rings()).collect()
+}
+
+/// Exact: on a ring edge?
+fn on_boundary(m: &MultiPolygon, p: Point2) -> bool {
+    rings(m).into_iter().any(|r| {
+        (0..r.len()).any(|i| {
+            let (a, b) = (r[i], r[(i + 1) % r.len()]);
+            orient2d(a, b, p) == Orientation::Collinear
+                && p.x >= a.x.min(b.x)
+                && p.x <= a.x.max(b.x)
+                && p.y >= a.y.min(b.y)
+                && p.y <= a.y.max(b.y)
+        })
+    })
+}
+
+/// Exact winding number of the rings of `m` around `p` (not on a ring).
+fn winding(rings: &[&Vec<Point2>], p: Point2) -> i32 {
+    let mut w = 0;
+    for r in rings {
+        for i in 0..r.len() {
+            let (a, b) = (r[i], r[(i + 1) % r.len()]);
+            if a.y <= p.y && b.y > p.y && orient2d(a, b, p) == Orientation::CounterClockwise {
+                w += 1;
+            } else if a.y > p.y && b.y <= p.y && orient2d(a, b, p) == Orientation::Clockwise {
+                w -= 1;
+            }
+        }
+    }
+    w
+}
+
+fn in_even_odd(m: &MultiPolygon, p: Point2) -> bool {
+    winding(&rings(m), p) % 2 != 0
+}
+
+/// How many output polygons contain p (each polygon even-odd over its rings).
+fn containing(m: &MultiPolygon, p: Point2) -> usize {
+    m.0.iter()
+        .filter(|poly| winding(&poly.rings().collect::<Vec<_>>(), p) % 2 != 0)
+        .count()
+}
+
+/// Check one pair: labels against exact ring areas, output validity, membership.
+fn check(a: &MultiPolygon, b: &MultiPolygon, samples: &[Point2]) {
+    let d = boolean_dcel(a, b, FillRule::EvenOdd).unwrap();
+    d.validate().unwrap();
+    // Σ_f w(f)·area(f) equals the sum of the rings' signed areas: exact check of labels.
+    let mut wa = BigRational::zero();
+    let mut wb = BigRational::zero();
+    let mut region = [
+        BigRational::zero(),
+        BigRational::zero(),
+        BigRational::zero(),
+        BigRational::zero(),
+    ];
+    let mut in_a = BigRational::zero();
+    let mut in_b = BigRational::zero();
+    for f in d.face_ids().skip(1) {
+        let ar = d.face_area_exact(f);
+        let (x, y) = d.face(f).data;
+        wa += BigRational::from_integer(x.into()) * &ar;
+        wb += BigRational::from_integer(y.into()) * &ar;
+        let (ia, ib) = (x % 2 != 0, y % 2 != 0);
+        if ia {
+            in_a += &ar;
+        }
+        if ib {
+            in_b += &ar;
+        }
+        for (k, op) in OPS.iter().enumerate() {
+            if op.apply(ia, ib) {
+                region[k] += &ar;
+            }
+        }
+    }
+    let two = BigRational::from_integer(2.into());
+    let ring_sum = |m: &MultiPolygon| {
+        rings(m)
+            .into_iter()
+            .map(|r| exact_shoelace2(r))
+            .fold(BigRational::zero(), |x, y| x + y)
+            / &two
+    };
+    assert_eq!(wa, ring_sum(a));
+    assert_eq!(wb, ring_sum(b));
+    let [inter, uni, diff, xor] = &region;
+    assert_eq!(
+        uni + inter,
+        &in_a + &in_b,
+        "area(A∪B) + area(A∩B) = area(A) + area(B)"
+    );
+    assert_eq!(xor, &(uni - inter), "xor = union − intersection");
+    assert_eq!(diff + inter, in_a, "A − B and A ∩ B partition A");
+    for (k, &op) in OPS.iter().enumerate() {
+        let out = boolean(a, b, op).unwrap();
+        assert_valid(&out);
+        let want = region[k].to_f64().unwrap();
+        let got = area(&out);
+        assert!(
+            (got - want).abs() <= 1e-9 * (1.0 + want.abs()),
+            "{op:?}: area {got} vs exact {want}"
+        );
+        for &p in samples {
+            if on_boundary(a, p) || on_boundary(b, p) {
+                continue;
+            }
+            let expect = op.apply(in_even_odd(a, p), in_even_odd(b, p));
+            let n = containing(&out, p);
+            assert!(n <= 1, "{op:?}: {p:?} in {n} output polygons");
+            assert_eq!(n == 1, expect, "{op:?}: membership of {p:?}");
+        }
+    }
+}
+
+fn grid_samples(lo: f64, hi: f64, step: f64) -> Vec<Point2> {
+    let mut v = Vec::new();
+    let mut x = lo + 0.137;
+    while x < hi {
+        let mut y = lo + 0.291;
+        while y < hi {
+            v.push(pt(x, y));
+            y += step;
+        }
+        x += step;
+    }
+    v
+}
+
+fn mp(rings: Vec<Vec<Point2>>) -> MultiPolygon {
+    MultiPolygon(rings.into_iter().map(|r| Polygon::new(r, vec![])).collect())
+}
+
+#[test]
+fn squares_overlapping_sharing_edges_touching_identical() {
+    let samples = grid_samples(-1.0, 7.0, 0.5);
+    let a = mp(vec![square(0., 0., 4.)]);
+    for b in [
+        mp(vec![square(2., 2., 4.)]),                      // overlap
+        mp(vec![square(4., 0., 4.)]),                      // shared edge
+        mp(vec![square(4., 4., 2.)]),                      // touching vertex
+        mp(vec![square(0., 0., 4.)]),                      // identical
+        mp(vec![square(1., 1., 2.)]),                      // inside
+        mp(vec![square(0., 0., 2.)]),                      // inside, sharing two edges
+        mp(vec![square(4., 1., 2.), square(-2., 1., 2.)]), // shared partial edges
+    ] {
+        check(&a, &b, &samples);
+    }
+    // Identical: union is A itself with 4 vertices, xor is empty.
+    let u = boolean(&a, &a, BooleanOp::Union).unwrap();
+    assert_eq!(u, mp(vec![square(0., 0., 4.)]));
+    assert!(boolean(&a, &a, BooleanOp::Xor).unwrap().0.is_empty());
+}
+
+#[test]
+fn holes_touching_shells() {
+    // A hole touching the shell at a vertex, and B filling part of it.
+    let shell = square(0., 0., 6.);
+    let hole = vec![pt(0., 3.), pt(3., 5.), pt(3., 1.)];
+    let hole_cw: Vec<Point2> = hole.into_iter().rev().collect();
+    let a = MultiPolygon(vec![Polygon::new(shell, vec![hole_cw])]);
+    let b = mp(vec![square(2., 2., 2.)]);
+    check(&a, &b, &grid_samples(-1.0, 7.0, 0.5));
+    // The difference A − B has a hole touching the shell at (0, 3): the output must split
+    // it into a shell and a hole (never a self-touching ring).
+    let d = boolean(&a, &b, BooleanOp::Difference).unwrap();
+    assert_valid(&d);
+}
+
+#[test]
+fn union_of_two_corner_touching_squares_gives_two_polygons() {
+    let a = mp(vec![square(0., 0., 1.)]);
+    let b = mp(vec![square(1., 1., 1.)]);
+    let u = boolean(&a, &b, BooleanOp::Union).unwrap();
+    assert_eq!(u.0.len(), 2);
+    assert_valid(&u);
+}
+
+#[test]
+fn ring_made_by_union_has_a_hole() {
+    // Four bars around a square hole.
+    let bar =
+        |x0: f64, y0: f64, x1: f64, y1: f64| vec![pt(x0, y0), pt(x1, y0), pt(x1, y1), pt(x0, y1)];
+    let a = mp(vec![bar(0., 0., 3., 1.), bar(0., 2., 3., 3.)]);
+    let b = mp(vec![bar(0., 0., 1., 3.), bar(2., 0., 3., 3.)]);
+    let u = boolean(&a, &b, BooleanOp::Union).unwrap();
+    assert_valid(&u);
+    assert_eq!(u.0.len(), 1);
+    assert_eq!(u.0[0].exterior.len(), 4);
+    assert_eq!(u.0[0].holes.len(), 1);
+    check(&a, &b, &grid_samples(-0.5, 3.5, 0.25));
+}
+
+#[test]
+fn nonzero_and_union_all() {
+    // Two overlapping squares in one set, opposite orientations: even-odd makes a hole
+    // where they overlap, and so does non-zero (windings +1 and -1 cancel); positive
+    // (after orienting both) and non-zero on equally oriented squares fill it.
+    let mut r2 = square(1., 1., 2.);
+    r2.reverse();
+    let a = mp(vec![square(0., 0., 2.), r2]);
+    let empty = MultiPolygon::default();
+    let eo = boolean(&a, &empty, BooleanOp::Union).unwrap();
+    assert!((area(&eo) - 6.0).abs() < 1e-12);
+    let nz = boolean_with(
+        &a,
+        &empty,
+        BooleanOp::Union,
+        &BooleanOptions {
+            fill_rule: FillRule::NonZero,
+            keep_collinear: false,
+        },
+    )
+    .unwrap();
+    assert!((area(&nz) - 6.0).abs() < 1e-12);
+    let same = mp(vec![square(0., 0., 2.), square(1., 1., 2.)]);
+    let nz = boolean_with(
+        &same,
+        &empty,
+        BooleanOp::Union,
+        &BooleanOptions {
+            fill_rule: FillRule::NonZero,
+            keep_collinear: false,
+        },
+    )
+    .unwrap();
+    assert!((area(&nz) - 7.0).abs() < 1e-12);
+    let all = union_all(&a).unwrap();
+    assert_eq!(all.0.len(), 1);
+    assert!((area(&all) - 7.0).abs() < 1e-12);
+    assert_valid(&all);
+}
+
+#[test]
+fn keep_collinear_keeps_split_points() {
+    let a = mp(vec![square(0., 0., 4.)]);
+    let b = mp(vec![square(4., 1., 2.)]);
+    let opts = BooleanOptions {
+        keep_collinear: true,
+        ..Default::default()
+    };
+    let u = boolean_with(&a, &b, BooleanOp::Union, &opts).unwrap();
+    assert_eq!(u.0[0].exterior.len(), 8);
+    let u = boolean(&a, &b, BooleanOp::Union).unwrap();
+    assert_eq!(u.0[0].exterior.len(), 8);
+    let a2 = mp(vec![vec![
+        pt(0., 0.),
+        pt(2., 0.),
+        pt(4., 0.),
+        pt(4., 4.),
+        pt(0., 4.),
+    ]]);
+    let u = boolean(&a2, &MultiPolygon::default(), BooleanOp::Union).unwrap();
+    assert_eq!(u.0[0].exterior.len(), 4);
+}
+
+#[test]
+fn bad_input_is_an_error() {
+    let nan = mp(vec![vec![pt(0., 0.), pt(f64::NAN, 0.), pt(1., 1.)]]);
+    let ok = mp(vec![square(0., 0., 1.)]);
+    let e = boolean(&nan, &ok, BooleanOp::Union).unwrap_err();
+    assert!(e.to_string().contains("polygon 0"), "{e}");
+    let short = mp(vec![vec![pt(0., 0.), pt(1., 0.), pt(0., 0.)]]);
+    assert!(boolean(&ok, &short, BooleanOp::Union).is_err());
+}
+
+fn grid_ring(max: i32) -> impl Strategy<Value = Vec<Point2>> {
+    prop::collection::vec((0..max, 0..max), 3..7)
+        .prop_map(|v| v.into_iter().map(|(x, y)| pt(x as f64, y as f64)).collect())
+        .prop_filter("3 distinct points", |r: &Vec<Point2>| {
+            let mut k: Vec<_> = r.iter().map(|p| (p.x.to_bits(), p.y.to_bits())).collect();
+            k.sort_unstable();
+            k.dedup();
+            k.len() >= 3
+        })
+}
+
+fn grid_set(max: i32) -> impl Strategy<Value = MultiPolygon> {
+    prop::collection::vec(grid_ring(max), 1..3).prop_map(mp)
+}
+
+fn rect_set() -> impl Strategy<Value = MultiPolygon> {
+    prop::collection::vec((0..5i32, 0..5i32, 1..4i32, 1..4i32), 1..4).prop_map(|v| {
+        mp(v.into_iter()
+            .map(|(x, y, w, h)| {
+                let (x, y, w, h) = (x as f64, y as f64, w as f64, h as f64);
+                vec![pt(x, y), pt(x + w, y), pt(x + w, y + h), pt(x, y + h)]
+            })
+            .collect())
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(150))]
+    #[test]
+    fn random_grid_polygons(a in grid_set(7), b in grid_set(7)) {
+        check(&a, &b, &grid_samples(-0.5, 7.0, 0.5));
+    }
+
+    #[test]
+    fn random_rectangles_share_edges_and_vertices(a in rect_set(), b in rect_set()) {
+        check(&a, &b, &grid_samples(-0.5, 8.0, 0.5));
+    }
+
+    #[test]
+    fn random_float_polygons(
+        a in prop::collection::vec((-10.0f64..10.0, -10.0f64..10.0), 3..8),
+        b in prop::collection::vec((-10.0f64..10.0, -10.0f64..10.0), 3..8),
+    ) {
+        let a = mp(vec![a.into_iter().map(|(x, y)| pt(x, y)).collect()]);
+        let b = mp(vec![b.into_iter().map(|(x, y)| pt(x, y)).collect()]);
+        let d = boolean_dcel(&a, &b, FillRule::EvenOdd).unwrap();
+        d.validate().unwrap();
+        for op in OPS {
+            let out = boolean(&a, &b, op).unwrap();
+            // Membership at random points (rounded output: points are generic).
+            for p in grid_samples(-10.0, 10.0, 1.3) {
+                let expect = op.apply(in_even_odd(&a, p), in_even_odd(&b, p));
+                prop_assert_eq!(containing(&out, p) == 1, expect);
+            }
+        }
+    }
+}

@@ -1,0 +1,93 @@
+//! Helpers shared by the boolean-operation tests.
+#![allow(dead_code)]
+use compgeom::intersect::find_intersections;
+use compgeom::io::ring_orientation;
+use compgeom::kernel::{orient2d, Orientation};
+use compgeom::{MultiPolygon, Point2, Segment2};
+use num_rational::BigRational;
+use num_traits::Zero;
+
+pub fn shoelace(r: &[Point2]) -> f64 {
+    (0..r.len())
+        .map(|i| {
+            let (a, b) = (r[i], r[(i + 1) % r.len()]);
+            a.x * b.y - b.x * a.y
+        })
+        .sum::<f64>()
+        / 2.0
+}
+
+pub fn exact_shoelace2(r: &[Point2]) -> BigRational {
+    let q = |v: f64| BigRational::from_float(v).unwrap();
+    (0..r.len())
+        .map(|i| {
+            let (a, b) = (r[i], r[(i + 1) % r.len()]);
+            q(a.x) * q(b.y) - q(b.x) * q(a.y)
+        })
+        .fold(BigRational::zero(), |x, y| x + y)
+}
+
+pub fn area(m: &MultiPolygon) -> f64 {
+    m.0.iter()
+        .map(|p| p.rings().map(|r| shoelace(r)).sum::<f64>())
+        .sum()
+}
+
+/// OGC-style validity of an output: rings of ≥ 3 distinct points, shells CCW and holes
+/// CW, no collinear vertex, no two edges crossing or overlapping: edges meet only at
+/// common endpoints.
+pub fn assert_valid(m: &MultiPolygon) {
+    assert_valid_with(m, true)
+}
+
+/// [`assert_valid`]; `collinear_check: false` skips the collinear-vertex test (a rounded
+/// crossing can land exactly on the line through its rounded neighbours).
+pub fn assert_valid_with(m: &MultiPolygon, collinear_check: bool) {
+    let mut segs = Vec::new();
+    // Vertices used by several rings: where rings touch (a collinear vertex is kept there).
+    let mut uses = std::collections::HashMap::new();
+    for r in m.0.iter().flat_map(|p| p.rings()) {
+        for p in r {
+            *uses.entry((p.x.to_bits(), p.y.to_bits())).or_insert(0) += 1;
+        }
+    }
+    for poly in &m.0 {
+        for (k, r) in poly.rings().enumerate() {
+            assert!(r.len() >= 3, "short ring {r:?}");
+            let mut sorted: Vec<(u64, u64)> =
+                r.iter().map(|p| (p.x.to_bits(), p.y.to_bits())).collect();
+            sorted.sort_unstable();
+            sorted.dedup();
+            assert_eq!(sorted.len(), r.len(), "repeated vertex in {r:?}");
+            let want = if k == 0 {
+                Orientation::CounterClockwise
+            } else {
+                Orientation::Clockwise
+            };
+            assert_eq!(ring_orientation(r), want, "ring {k} orientation: {r:?}");
+            for i in 0..r.len() {
+                let (a, b, c) = (r[i], r[(i + 1) % r.len()], r[(i + 2) % r.len()]);
+                let shared = uses[&(b.x.to_bits(), b.y.to_bits())] > 1;
+                assert!(
+                    !collinear_check || shared || orient2d(a, b, c) != Orientation::Collinear,
+                    "collinear vertex {b:?}"
+                );
+                segs.push(Segment2::new(a, b));
+            }
+        }
+    }
+    let found = find_intersections(&segs).unwrap();
+    assert!(
+        found.overlaps.is_empty(),
+        "overlapping edges {:?}",
+        found.overlaps
+    );
+    for p in &found.points {
+        // Rings touch only at vertices of both.
+        assert!(
+            p.interior.is_empty(),
+            "edges cross or touch inside at {:?}",
+            p.point
+        );
+    }
+}

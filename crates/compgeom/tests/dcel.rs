@@ -1,0 +1,145 @@
+//! DCEL builders: counts, invariants (validate after every build), Euler, hole linking.
+use compgeom::dcel::{Dcel, FaceId};
+use compgeom::{MultiPolygon, Point2, Polygon, Segment2};
+use num_rational::BigRational;
+use num_traits::Zero;
+use proptest::prelude::*;
+
+fn s(a: (f64, f64), b: (f64, f64)) -> Segment2 {
+    Segment2::new(a.into(), b.into())
+}
+
+fn square(x: f64, y: f64, w: f64) -> Vec<Point2> {
+    vec![
+        Point2::new(x, y),
+        Point2::new(x + w, y),
+        Point2::new(x + w, y + w),
+        Point2::new(x, y + w),
+    ]
+}
+
+fn ring_segments(r: &[Point2]) -> Vec<Segment2> {
+    (0..r.len())
+        .map(|i| Segment2::new(r[i], r[(i + 1) % r.len()]))
+        .collect()
+}
+
+#[test]
+fn crossing_segments_make_an_x() {
+    let d = Dcel::from_segments(&[s((0., 0.), (2., 2.)), s((0., 2.), (2., 0.))]).unwrap();
+    d.validate().unwrap();
+    assert_eq!(
+        (d.vertex_count(), d.edge_count(), d.face_count()),
+        (5, 4, 1)
+    );
+    // The crossing is a constructed vertex with degree 4.
+    let centre = d
+        .vertex_ids()
+        .find(|&v| d.vertex(v).approx == Point2::new(1.0, 1.0))
+        .unwrap();
+    assert_eq!(d.around(centre).count(), 4);
+}
+
+#[test]
+fn nested_squares_link_hole_to_the_ring_face() {
+    let mut segs = ring_segments(&square(0., 0., 10.));
+    segs.extend(ring_segments(&square(3., 3., 2.)));
+    segs.extend(ring_segments(&square(20., 0., 1.)));
+    let d = Dcel::from_segments(&segs).unwrap();
+    d.validate().unwrap();
+    assert_eq!(d.face_count(), 4);
+    // The big square's face has the small square as its one hole.
+    let big = d
+        .face_ids()
+        .find(|&f| d.face(f).outer.is_some() && !d.face(f).inner.is_empty())
+        .unwrap();
+    assert_eq!(d.face(big).inner.len(), 1);
+    assert_eq!(d.face_area_exact(big), BigRational::from_integer(96.into()));
+    // The unbounded face has two components: the big square and the far one.
+    assert_eq!(d.face(FaceId::UNBOUNDED).inner.len(), 2);
+    let p = d.face_polygon(big).unwrap();
+    assert_eq!(p.exterior.len(), 4);
+    assert_eq!(p.holes.len(), 1);
+}
+
+#[test]
+fn overlapping_and_touching_segments_merge() {
+    // Two overlapping collinear segments, a duplicate and a T-junction.
+    let segs = [
+        s((0., 0.), (4., 0.)),
+        s((2., 0.), (6., 0.)),
+        s((6., 0.), (2., 0.)),
+        s((3., 0.), (3., 3.)),
+        s((1., 1.), (1., 1.)),
+    ];
+    let d = Dcel::from_segments(&segs).unwrap();
+    d.validate().unwrap();
+    // Vertices 0, 2, 3, 4, 6 on the axis and (3, 3).
+    assert_eq!(d.vertex_count(), 6);
+    assert_eq!(d.edge_count(), 5);
+    let overlap = d
+        .half_edge_ids()
+        .find(|&h| d.half_edge(h).data.len() == 3)
+        .expect("the piece 2..4 carries three segments");
+    assert!(d.half_edge(overlap).data.iter().any(|s| s.segment == 2));
+}
+
+#[test]
+fn polygon_faces_are_labelled() {
+    let a = Polygon::new(square(0., 0., 4.), vec![square(1., 1., 1.)]);
+    let b = Polygon::new(square(2., 2., 4.), vec![]);
+    let d = Dcel::from_polygons(&MultiPolygon(vec![a, b])).unwrap();
+    d.validate().unwrap();
+    let area = |label: &[usize]| {
+        d.face_ids()
+            .filter(|&f| d.face(f).data == label)
+            .map(|f| d.face_area_exact(f))
+            .fold(BigRational::zero(), |x, y| x + y)
+    };
+    let int = |n: i64| BigRational::from_integer(n.into());
+    assert_eq!(area(&[0]), int(16 - 1 - 4));
+    assert_eq!(area(&[1]), int(12));
+    assert_eq!(area(&[0, 1]), int(4));
+}
+
+#[test]
+fn bad_input_is_an_error() {
+    let nan = Segment2::new(Point2::new(f64::NAN, 0.0), Point2::new(1.0, 1.0));
+    assert!(Dcel::from_segments(&[nan]).is_err());
+    let two = Polygon::new(vec![Point2::new(0., 0.), Point2::new(1., 0.)], vec![]);
+    let err = Dcel::from_polygons(&MultiPolygon(vec![two])).unwrap_err();
+    assert!(err.to_string().contains("polygon 0"), "{err}");
+}
+
+fn small_segments(n: usize, range: i32) -> impl Strategy<Value = Vec<Segment2>> {
+    prop::collection::vec(((0..range, 0..range), (0..range, 0..range)), 1..n).prop_map(|v| {
+        v.into_iter()
+            .map(|((a, b), (c, d))| s((a as f64, b as f64), (c as f64, d as f64)))
+            .collect()
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+    #[test]
+    fn arrangements_of_grid_segments_are_valid(segs in small_segments(12, 6)) {
+        let d = Dcel::from_segments(&segs).unwrap();
+        d.validate().unwrap();
+        // The bounded faces tile the union of bounded regions: areas are positive.
+        for f in d.face_ids().skip(1) {
+            prop_assert!(d.face_area_exact(f) > BigRational::zero());
+        }
+    }
+
+    #[test]
+    fn arrangements_of_float_segments_are_valid(
+        v in prop::collection::vec(((-1e3f64..1e3, -1e3f64..1e3), (-1e3f64..1e3, -1e3f64..1e3)), 1..15)
+    ) {
+        let segs: Vec<Segment2> = v.into_iter().map(|(a, b)| s(a, b)).collect();
+        let d = Dcel::from_segments(&segs).unwrap();
+        d.validate().unwrap();
+        for f in d.face_ids().skip(1) {
+            prop_assert!(d.face_area_exact(f) > BigRational::zero());
+        }
+    }
+}
