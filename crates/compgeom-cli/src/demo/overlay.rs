@@ -77,11 +77,12 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
             (true, true) => "#bbbbbb",
         };
         if let Some(p) = o.face_polygon(f) {
+            let label = |l: Option<&usize>| l.map_or("none".to_string(), |i| i.to_string());
             let name = format!(
-                "face {}: vegetation {:?}, river {:?}",
+                "face {}: vegetation {}, river {}",
                 f.0,
-                la.first(),
-                lb.first()
+                label(la.first()),
+                label(lb.first())
             );
             pic.add(Layer::new(name, Style::area(colour).with_fill_opacity(0.45)).polygon(&p));
         }
