@@ -8,19 +8,7 @@ use serde_json::Value;
 use std::path::{Path, PathBuf};
 
 mod common;
-use common::{area, assert_valid_with};
-
-fn cases_dir() -> Option<PathBuf> {
-    let dir = std::env::var("COMPGEOM_CASES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|_| {
-            PathBuf::from(concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/../../../shared/cases"
-            ))
-        });
-    dir.exists().then_some(dir)
-}
+use common::{area, assert_valid_with, existing_cases_dir};
 
 fn ring(v: &Value) -> Vec<Point2> {
     v.as_array()
@@ -152,7 +140,7 @@ const MARTINEZ_EXCLUDED: &[(&str, &str, &str)] = &[
 
 #[test]
 fn polygon_clipping_suite() {
-    let Some(dir) = cases_dir() else {
+    let Some(dir) = existing_cases_dir() else {
         println!("skipped: shared cases not found");
         return;
     };
@@ -213,7 +201,7 @@ fn polygon_clipping_suite() {
 
 #[test]
 fn martinez_suites() {
-    let Some(dir) = cases_dir() else {
+    let Some(dir) = existing_cases_dir() else {
         println!("skipped: shared cases not found");
         return;
     };
@@ -372,7 +360,7 @@ fn perimeter(m: &MultiPolygon) -> f64 {
 /// sliver of area 1706.7, a third of a unit wide, that iOverlay snaps away).
 #[test]
 fn ioverlay_suite() {
-    let Some(dir) = cases_dir() else {
+    let Some(dir) = existing_cases_dir() else {
         println!("skipped: shared cases not found");
         return;
     };

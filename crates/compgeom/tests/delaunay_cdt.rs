@@ -1,11 +1,12 @@
 //! Constrained Delaunay: random non-crossing constraints (verified exactly), polygons with
 //! holes, crossing constraints rejected, and the JTS / artem-ogre CDT fixtures.
 
+mod common;
+use common::existing_cases_dir;
 use compgeom::delaunay::{constrained_delaunay, polygon_delaunay, verify_cdt};
 use compgeom::kernel::{segment_intersection, SegmentIntersection};
 use compgeom::{Point2, Polygon, Segment2};
 use serde_json::Value;
-use std::path::PathBuf;
 
 struct Lcg(u64);
 impl Lcg {
@@ -110,23 +111,6 @@ fn polygon_with_holes_keeps_the_inside() {
     }
 }
 
-fn cases_dir() -> Option<PathBuf> {
-    let dir = std::env::var("COMPGEOM_CASES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|_| {
-            PathBuf::from(concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/../../../shared/cases"
-            ))
-        });
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        println!("skipped: {} not found", dir.display());
-        None
-    }
-}
-
 fn rings(wkt: &str) -> Vec<Vec<Point2>> {
     let mut out = Vec::new();
     let mut rest = wkt;
@@ -153,7 +137,9 @@ fn rings(wkt: &str) -> Vec<Vec<Point2>> {
 
 #[test]
 fn jts_polygon_cdt_cases() {
-    let Some(dir) = cases_dir() else { return };
+    let Some(dir) = existing_cases_dir() else {
+        return;
+    };
     let text =
         std::fs::read_to_string(dir.join("jts-unit/constrained-delaunay-polygon.json")).unwrap();
     let cases: Value = serde_json::from_str(&text).unwrap();
@@ -228,7 +214,9 @@ fn jts_polygon_cdt_cases() {
 /// semantics until crossing constraints are split (they must then give a clear error).
 #[test]
 fn artem_ogre_cdt_inputs() {
-    let Some(dir) = cases_dir() else { return };
+    let Some(dir) = existing_cases_dir() else {
+        return;
+    };
     let mut ok = 0;
     let mut rejected = Vec::new();
     for entry in std::fs::read_dir(dir.join("cdt/inputs")).unwrap() {

@@ -1,29 +1,13 @@
 //! Delaunay fixtures from ../shared/cases: delaunator's robustness sets and JTS's Delaunay
 //! unit cases. Every case must pass.
 
+mod common;
+use common::existing_cases_dir;
 use compgeom::delaunay::{
     delaunay, delaunay_with, verify_delaunay, DelaunayAlgorithm, DelaunayOptions, Triangulation,
 };
 use compgeom::Point2;
 use serde_json::Value;
-use std::path::PathBuf;
-
-fn cases_dir() -> Option<PathBuf> {
-    let dir = std::env::var("COMPGEOM_CASES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|_| {
-            PathBuf::from(concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/../../../shared/cases"
-            ))
-        });
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        println!("skipped: {} not found", dir.display());
-        None
-    }
-}
 
 fn both(pts: &[Point2]) -> Triangulation {
     let f = delaunay(pts).unwrap();
@@ -48,7 +32,9 @@ fn json_points(v: &Value) -> Vec<Point2> {
 
 #[test]
 fn delaunator_fixtures() {
-    let Some(dir) = cases_dir() else { return };
+    let Some(dir) = existing_cases_dir() else {
+        return;
+    };
     let dir = dir.join("delaunator");
     let expected: Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("expected.json")).unwrap()).unwrap();
@@ -145,7 +131,9 @@ fn key(p: Point2) -> (u64, u64) {
 
 #[test]
 fn jts_delaunay_cases() {
-    let Some(dir) = cases_dir() else { return };
+    let Some(dir) = existing_cases_dir() else {
+        return;
+    };
     let text = std::fs::read_to_string(dir.join("jts-unit/delaunay.json")).unwrap();
     let cases: Value = serde_json::from_str(&text).unwrap();
     for case in cases["cases"].as_array().unwrap() {

@@ -4,21 +4,13 @@
 //! result is compared with the expected hull as a cyclic sequence (any start vertex, either
 //! orientation), exactly unless the fixture gives a tolerance.
 
+mod common;
+use common::cases_dir;
 use compgeom::hull::{convex_hull, verify_convex_hull, HullAlgorithm, HullOptions};
 use compgeom::Point2;
 use geo_types::Geometry;
 use std::path::{Path, PathBuf};
 use wkt::TryFromWkt;
-
-fn cases_dir() -> PathBuf {
-    match std::env::var_os("COMPGEOM_CASES") {
-        Some(d) => PathBuf::from(d),
-        None => PathBuf::from(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../../../shared/cases"
-        )),
-    }
-}
 
 /// The fixture path, or `None` (after saying so) when the suite is not present.
 fn fixture(rel: &str) -> Option<PathBuf> {

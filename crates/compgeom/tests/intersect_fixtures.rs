@@ -10,24 +10,14 @@
 //!
 //! Every case must pass; the one exclusion is listed with its reason next to it.
 
+mod common;
+use common::cases_dir;
 use compgeom::intersect::{
     any_intersection_where, find_intersections, is_simple, IntersectionPoint,
 };
 use compgeom::{Point2, Polygon, Segment2};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-
-fn cases_dir() -> PathBuf {
-    std::env::var_os("COMPGEOM_CASES").map_or_else(
-        || {
-            PathBuf::from(concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/../../../shared/cases"
-            ))
-        },
-        PathBuf::from,
-    )
-}
 
 fn dir_or_skip(rel: &str) -> Option<PathBuf> {
     let d = cases_dir().join(rel);

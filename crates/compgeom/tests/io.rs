@@ -2,6 +2,8 @@
 //! (errors checked for their line), writers that round-trip exactly, RFC 7946 ring
 //! orientation against an exact rational oracle, and real fixture files read in place.
 
+mod common;
+use common::cases_dir;
 use compgeom::io::{
     detect_format, format_f64, read_off, read_points, read_points3, read_polygons, read_segments,
     read_text, ring_orientation, write_off, write_points3, write_segments, write_shape, Format,
@@ -42,18 +44,6 @@ fn same_bits(a: &[Point2], b: &[Point2]) -> bool {
         && a.iter()
             .zip(b)
             .all(|(u, v)| u.x.to_bits() == v.x.to_bits() && u.y.to_bits() == v.y.to_bits())
-}
-
-fn cases_dir() -> PathBuf {
-    std::env::var_os("COMPGEOM_CASES").map_or_else(
-        || {
-            PathBuf::from(concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/../../../shared/cases"
-            ))
-        },
-        PathBuf::from,
-    )
 }
 
 // ---------------------------------------------------------------- formats

@@ -6,24 +6,13 @@
 //! which define the same disc.) An empty input has no disc: JTS returns no centre, compgeom
 //! an `Err`.
 
+mod common;
+use common::cases_dir;
 use compgeom::io::{read_points, Format};
 use compgeom::kernel::{incircle, orient2d, CircleSide, Orientation};
 use compgeom::lp::smallest_enclosing_disc;
 use compgeom::Point2;
 use num_rational::BigRational;
-use std::path::PathBuf;
-
-fn cases_dir() -> PathBuf {
-    std::env::var_os("COMPGEOM_CASES").map_or_else(
-        || {
-            PathBuf::from(concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/../../../shared/cases"
-            ))
-        },
-        PathBuf::from,
-    )
-}
 
 /// Exactly: does `p` lie on the circle through the support points?
 fn on_circle(support: &[Point2], p: Point2) -> bool {

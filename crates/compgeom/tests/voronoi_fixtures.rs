@@ -3,6 +3,8 @@
 //! because turf's expected corners carry its own rounding errors), and the Boost
 //! Polygon Voronoi inputs (property checks with the exact verifier).
 
+mod common;
+use common::cases_dir;
 use compgeom::io::{read_points, Format};
 use compgeom::voronoi::{
     clip_cells, fortune_voronoi, verify_cells, verify_voronoi, ClipRegion, VoronoiDiagram,
@@ -10,16 +12,6 @@ use compgeom::voronoi::{
 use compgeom::Point2;
 use serde_json::Value;
 use std::path::PathBuf;
-
-fn cases_dir() -> PathBuf {
-    match std::env::var_os("COMPGEOM_CASES") {
-        Some(d) => PathBuf::from(d),
-        None => PathBuf::from(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/../../../shared/cases"
-        )),
-    }
-}
 
 /// Verify the diagram and its cells in `region`; return the cells.
 fn checked(

@@ -1,4 +1,5 @@
-//! Helpers shared by the boolean-operation tests.
+//! Helpers shared by the integration tests: fixture-suite location, and the exact area
+//! and validity checks of the boolean-operation tests.
 #![allow(dead_code)]
 use compgeom::intersect::find_intersections;
 use compgeom::io::ring_orientation;
@@ -89,5 +90,30 @@ pub fn assert_valid_with(m: &MultiPolygon, collinear_check: bool) {
             "edges cross or touch inside at {:?}",
             p.point
         );
+    }
+}
+
+/// Where the shared fixture suites live: `$COMPGEOM_CASES`, else `../shared/cases` beside the
+/// workspace. Tests that read them print "skipped" when the folder is absent.
+pub fn cases_dir() -> std::path::PathBuf {
+    std::env::var_os("COMPGEOM_CASES").map_or_else(
+        || {
+            std::path::PathBuf::from(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../../../shared/cases"
+            ))
+        },
+        std::path::PathBuf::from,
+    )
+}
+
+/// [`cases_dir`] if it exists; otherwise says the fixtures were skipped.
+pub fn existing_cases_dir() -> Option<std::path::PathBuf> {
+    let dir = cases_dir();
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        println!("skipped: {} not found", dir.display());
+        None
     }
 }
