@@ -39,6 +39,7 @@
 mod beach_line;
 pub mod clip;
 mod diagram;
+mod dual;
 mod fortune;
 mod nearest;
 pub mod predicates;
@@ -47,6 +48,7 @@ mod verify;
 
 pub use clip::{clip_cells, ClipRegion};
 pub use diagram::{HalfEdge, Vertex, VoronoiDiagram};
+pub use dual::{dual_voronoi, from_triangulation};
 pub use fortune::fortune_voronoi;
 pub use nearest::NearestSite;
 pub use snapshot::{beach_line_at, BeachLineSnapshot};
@@ -59,7 +61,8 @@ use crate::Result;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[non_exhaustive]
 pub enum VoronoiAlgorithm {
-    /// The fastest exact method (currently Fortune's sweep).
+    /// The fastest exact method: the dual of the Delaunay triangulation
+    /// ([`dual_voronoi`]).
     #[default]
     Default,
     /// Fortune's sweep, the book's VORONOIDIAGRAM (§7.2).
@@ -79,6 +82,7 @@ pub enum VoronoiAlgorithm {
 /// ```
 pub fn voronoi_diagram(points: &[Point2], algorithm: VoronoiAlgorithm) -> Result<VoronoiDiagram> {
     match algorithm {
-        VoronoiAlgorithm::Default | VoronoiAlgorithm::Fortune => fortune_voronoi(points),
+        VoronoiAlgorithm::Default => dual_voronoi(points),
+        VoronoiAlgorithm::Fortune => fortune_voronoi(points),
     }
 }

@@ -338,13 +338,26 @@ impl CircleKey {
 }
 
 /// The circumcentre of `a, b, c` in `f64` (for output; `a, b, c` not collinear).
+///
+/// The offsets from `a` are scaled by a power of two to magnitude about 1 first (exact), so
+/// that squares neither overflow for huge coordinates nor underflow for tiny ones.
 pub(crate) fn circumcentre(a: Point2, b: Point2, c: Point2) -> Point2 {
     let (bx, by) = (b.x - a.x, b.y - a.y);
     let (cx, cy) = (c.x - a.x, c.y - a.y);
+    let m = bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs());
+    let e = if m > 0.0 && m.is_finite() {
+        m.log2().floor() as i32
+    } else {
+        0
+    };
+    // Two factors: 2^-e alone may not be representable at the ends of the range.
+    let (k1, k2) = (2f64.powi(-e / 2), 2f64.powi(-e + e / 2));
+    let (bx, by, cx, cy) = (bx * k1 * k2, by * k1 * k2, cx * k1 * k2, cy * k1 * k2);
     let b2 = bx * bx + by * by;
     let c2 = cx * cx + cy * cy;
     let d = 2.0 * (bx * cy - by * cx);
-    Point2::new(a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d)
+    let (ux, uy) = ((cy * b2 - by * c2) / d, (bx * c2 - cx * b2) / d);
+    Point2::new(a.x + ux / k1 / k2, a.y + uy / k1 / k2)
 }
 
 /// Sign of `(event y) − s.y`, exactly.
