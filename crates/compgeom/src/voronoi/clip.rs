@@ -137,7 +137,7 @@ pub(crate) fn ring_area_scaled(ring: &[Point2], scale: f64) -> f64 {
 
 /// Keep the part of convex `poly` where `(p − m)·n <= 0`, i.e. nearer to `s` than to `t`
 /// with `m` their midpoint and `n = t − s`.
-fn cut(poly: &[Point2], s: Point2, t: Point2) -> Vec<Point2> {
+pub(crate) fn cut(poly: &[Point2], s: Point2, t: Point2) -> Vec<Point2> {
     let (nx, ny) = (t.x - s.x, t.y - s.y);
     let (mx, my) = (s.x + nx / 2.0, s.y + ny / 2.0);
     // Normalise the normal so that products cannot overflow for huge coordinates.
