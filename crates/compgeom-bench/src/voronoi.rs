@@ -1,21 +1,29 @@
-//! Voronoi diagrams (book chapter 7): compgeom's Fortune sweep (exact) against voronoice
+//! Voronoi diagrams (book chapter 7): compgeom's default (the dual of its exact Delaunay
+//! triangulation) and Fortune's sweep (the book's VORONOIDIAGRAM, exact) against voronoice
 //! (the dual of delaunator's triangulation, floating point, cells clipped to a box), with
-//! delaunator's triangulation alone as the floor any dual-based method pays.
+//! the Delaunay peers alone (delaunator, spade `bulk_load`) as the floor any dual-based
+//! method pays.
 //!
 //! Inputs: uniform points in the unit square (1e5 and 1e6) and the full 1000 × 1000 integer
 //! grid, shuffled (10⁶ points, every grid square cocircular: the degenerate workload).
 //! `--quick` uses 1e4, 1e5 and a 300 × 300 grid.
 //!
-//! Timed: compgeom `fortune_voronoi` (diagram) and `fortune_voronoi` + `clip_cells` (cells
-//! in input order, clipped to the bounding box: the same output as voronoice's);
-//! voronoice `VoronoiBuilder::build` with `ClipBehavior::Clip` (sites copied outside the
-//! clock; its builder takes them by value); delaunator `triangulate`.
-//! Checked once outside the clock: compgeom's diagram with the exact verifier (1e5 and
-//! below; the full verifier at 1e6 would dominate the run), cell areas tile the box.
+//! Timed: compgeom `voronoi_diagram` (default and Fortune; the diagram) and the same +
+//! `clip_cells` (cells in input order, clipped to the bounding box: the same output as
+//! voronoice's); voronoice `VoronoiBuilder::build` with `ClipBehavior::Clip` (sites copied
+//! outside the clock; its builder takes them by value); delaunator `triangulate`; spade
+//! `bulk_load` (its points copied outside the clock).
+//! Checked once outside the clock: both compgeom diagrams with the exact verifier (1e5 and
+//! below; the full verifier at 1e6 would dominate the run), the same numbers of vertices
+//! and edges from both, cell areas tile the box.
 
 use crate::util::{best_of, ms, Rng};
-use compgeom::voronoi::{clip_cells, fortune_voronoi, verify_cells, verify_voronoi, ClipRegion};
+use compgeom::voronoi::{
+    clip_cells, fortune_voronoi, verify_cells, verify_voronoi, voronoi_diagram, ClipRegion,
+    VoronoiAlgorithm,
+};
 use compgeom::Point2;
+use spade::Triangulation as _;
 use std::time::Duration;
 
 fn uniform(n: usize, seed: u64) -> Vec<Point2> {
@@ -62,25 +70,33 @@ pub fn run(quick: bool) -> Result<(), String> {
     ];
     let runs = if quick { 1 } else { 3 };
     println!("voronoi: ratio = time / voronoice time (lower is better); best of {runs}");
-    let mut fortune_times = Vec::new();
+    let mut times: Vec<(Duration, Duration, Duration)> = Vec::new();
     for (name, pts) in &inputs {
         let b = compgeom::Bbox2::of_points(pts);
         let region = ClipRegion::from_bbox(b).map_err(|e| e.to_string())?;
         // Check once, outside the clock.
+        let dual = voronoi_diagram(pts, VoronoiAlgorithm::Default).map_err(|e| e.to_string())?;
         let d = fortune_voronoi(pts).map_err(|e| e.to_string())?;
-        if pts.len() <= 100_000 {
-            verify_voronoi(pts, &d).map_err(|e| format!("{name}: {e}"))?;
-        } else {
-            d.validate().map_err(|e| format!("{name}: {e}"))?;
+        for x in [&dual, &d] {
+            if pts.len() <= 100_000 {
+                verify_voronoi(pts, x).map_err(|e| format!("{name}: {e}"))?;
+            } else {
+                x.validate().map_err(|e| format!("{name}: {e}"))?;
+            }
         }
-        let cells = clip_cells(&d, &region);
-        verify_cells(&d, &region, &cells).map_err(|e| format!("{name}: {e}"))?;
-        drop((d, cells));
+        if (dual.vertices.len(), dual.edge_count()) != (d.vertices.len(), d.edge_count()) {
+            return Err(format!("{name}: the dual and Fortune's sweep differ"));
+        }
+        let cells = clip_cells(&dual, &region);
+        verify_cells(&dual, &region, &cells).map_err(|e| format!("{name}: {e}"))?;
+        drop((d, dual, cells));
 
         let vp: Vec<voronoice::Point> = pts
             .iter()
             .map(|p| voronoice::Point { x: p.x, y: p.y })
             .collect();
+        let sp: Vec<spade::Point2<f64>> =
+            pts.iter().map(|p| spade::Point2::new(p.x, p.y)).collect();
         let bbox = voronoice::BoundingBox::new(
             voronoice::Point {
                 x: (b.min.x + b.max.x) / 2.0,
@@ -111,6 +127,18 @@ pub fn run(quick: bool) -> Result<(), String> {
             e
         });
         let t_delaunator = best_of(runs, || delaunator::triangulate(&vp));
+        let t_spade = best_inner(runs, || {
+            let p = sp.clone();
+            let t0 = std::time::Instant::now();
+            let t = spade::DelaunayTriangulation::<spade::Point2<f64>>::bulk_load(p);
+            let e = t0.elapsed();
+            drop(t);
+            e
+        });
+        let t_dual = best_of(runs, || voronoi_diagram(pts, VoronoiAlgorithm::Default));
+        let t_dual_cells = best_of(runs, || {
+            voronoi_diagram(pts, VoronoiAlgorithm::Default).map(|d| clip_cells(&d, &region))
+        });
         let t_fortune = best_of(runs, || fortune_voronoi(pts));
         let t_cells = best_of(runs, || {
             fortune_voronoi(pts).map(|d| clip_cells(&d, &region))
@@ -119,37 +147,46 @@ pub fn run(quick: bool) -> Result<(), String> {
             "{name} ({} points; voronoice gave {vcells} cells)",
             pts.len()
         );
-        row(
-            "  voronoice",
-            "dual of delaunator, clipped cells",
-            t_voronoice,
-            t_voronoice,
-        );
-        row(
-            "  delaunator",
-            "triangulation only",
-            t_delaunator,
-            t_voronoice,
-        );
-        row(
-            "  compgeom fortune",
-            "diagram (exact)",
-            t_fortune,
-            t_voronoice,
-        );
-        row(
-            "  compgeom fortune+clip",
-            "diagram + clipped cells",
-            t_cells,
-            t_voronoice,
-        );
-        fortune_times.push(t_cells);
-    }
-    if fortune_times.len() >= 2 {
-        let g = ms(fortune_times[1]) / ms(fortune_times[0]);
+        let rows = [
+            (
+                "  voronoice",
+                "dual of delaunator, clipped cells",
+                t_voronoice,
+            ),
+            ("  delaunator", "triangulation only", t_delaunator),
+            ("  spade", "bulk_load triangulation only", t_spade),
+            ("  compgeom default", "diagram (dual, exact)", t_dual),
+            (
+                "  compgeom default+clip",
+                "diagram + clipped cells",
+                t_dual_cells,
+            ),
+            ("  compgeom fortune", "diagram (exact)", t_fortune),
+            (
+                "  compgeom fortune+clip",
+                "diagram + clipped cells",
+                t_cells,
+            ),
+        ];
+        for (who, what, t) in rows {
+            row(who, what, t, t_voronoice);
+        }
         println!(
-            "growth {small} -> {large} (fortune+clip): x{g:.1} for x{} points",
-            large / small
+            "  fortune / default (diagram): {:.2}",
+            ms(t_fortune) / ms(t_dual)
+        );
+        times.push((t_dual_cells, t_cells, t_voronoice));
+    }
+    if times.len() >= 2 {
+        let g = |f: fn(&(Duration, Duration, Duration)) -> Duration| {
+            ms(f(&times[1])) / ms(f(&times[0]))
+        };
+        println!(
+            "growth {small} -> {large} (x{} points): default+clip x{:.1}, fortune+clip x{:.1}, voronoice x{:.1}",
+            large / small,
+            g(|t| t.0),
+            g(|t| t.1),
+            g(|t| t.2)
         );
     }
     Ok(())

@@ -38,6 +38,7 @@
 
 mod beach_line;
 pub mod clip;
+mod clip_polygon;
 mod diagram;
 mod dual;
 mod farthest;
@@ -48,6 +49,7 @@ mod snapshot;
 mod verify;
 
 pub use clip::{clip_cells, ClipRegion};
+pub use clip_polygon::{clip_cells_to_polygon, verify_polygon_cells};
 pub use diagram::{HalfEdge, Vertex, VoronoiDiagram};
 pub use dual::{dual_voronoi, from_triangulation};
 pub use farthest::{farthest_point_voronoi, verify_farthest, FarthestVoronoi};
