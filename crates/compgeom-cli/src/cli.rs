@@ -84,7 +84,7 @@ pub enum Command {
     /// Orthogonal range queries: points in rectangles, counts, k nearest (book chapter 5).
     #[command(after_long_help = crate::commands::range::JSON_HELP)]
     Range(RangeArgs),
-    /// Voronoi diagram of points, cells clipped to a rectangle or convex polygon (chapter 7).
+    /// Voronoi diagram of points (nearest or farthest site), cells clipped to a rectangle or any polygon (chapter 7).
     #[command(after_long_help = crate::commands::voronoi::JSON_HELP)]
     Voronoi(VoronoiArgs),
     /// Delaunay triangulation of points in the plane (book chapter 9).

@@ -1392,15 +1392,14 @@ mod voronoi_commands {
             .args(["--clip", "2,0,1,1"])
             .assert()
             .code(2);
-        let (_d2, poly) = input("r.wkt", "POLYGON ((0 0, 4 0, 2 1, 4 4, 0 4, 0 0))");
+        let (_d2, poly) = input("r.wkt", "POLYGON ((0 0, 4 0, 4 0, 0 0))");
         compgeom()
             .arg("voronoi")
             .arg(&path)
             .arg("--clip-polygon")
             .arg(&poly)
             .assert()
-            .code(2)
-            .stderr(predicate::str::contains("convex"));
+            .code(2);
     }
 
     #[test]

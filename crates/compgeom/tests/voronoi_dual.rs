@@ -345,3 +345,52 @@ proptest! {
         duality(&p);
     }
 }
+
+/// Post-office queries on the dual against brute force (small dyadic coordinates, so the
+/// oracle's squared distances are exact in `f64`), including ties on grids.
+#[test]
+fn nearest_site_queries_match_brute_force() {
+    use compgeom::voronoi::NearestSite;
+    let mut r = rng(5);
+    let mut inputs: Vec<Vec<Point2>> = vec![
+        (0..2000)
+            .map(|_| Point2::new((r() * 800.0).floor() / 8.0, (r() * 800.0).floor() / 8.0))
+            .collect(),
+        (0..400)
+            .map(|i| Point2::new((i % 20) as f64, (i / 20) as f64))
+            .collect(),
+        lattice_circle(5525),
+        (0..30)
+            .map(|i| Point2::new(i as f64, 2.0 * i as f64))
+            .collect(),
+    ];
+    // Very uneven: a dense cluster and a few far sites.
+    let mut uneven: Vec<Point2> = (0..500)
+        .map(|_| Point2::new((r() * 64.0).floor() / 64.0, (r() * 64.0).floor() / 64.0))
+        .collect();
+    uneven.extend([(1000.0, 0.0), (0.0, 1000.0), (-1000.0, -1000.0)].map(Point2::from));
+    inputs.push(uneven);
+    for p in &inputs {
+        let d = dual_voronoi(p).unwrap();
+        let post = NearestSite::new(&d);
+        let d2 = |a: Point2, b: Point2| (a.x - b.x).powi(2) + (a.y - b.y).powi(2);
+        for _ in 0..500 {
+            let q = Point2::new(
+                (r() * 1600.0).floor() / 8.0 - 50.0,
+                (r() * 1600.0).floor() / 8.0 - 50.0,
+            );
+            let best = d
+                .sites
+                .iter()
+                .map(|&s| d2(q, s))
+                .fold(f64::INFINITY, f64::min);
+            let got = post.nearest(q).unwrap();
+            assert_eq!(d2(q, d.sites[got]), best, "query {q:?}");
+        }
+    }
+    let empty = dual_voronoi(&[]).unwrap();
+    assert_eq!(
+        NearestSite::new(&empty).nearest(Point2::new(0.0, 0.0)),
+        None
+    );
+}

@@ -1,5 +1,6 @@
 //! `compgeom voronoi`: the Voronoi diagram of points (book chapter 7), via
-//! `compgeom::voronoi` (Fortune's sweep), with cells clipped to a rectangle or a convex
+//! `compgeom::voronoi` (the dual of the Delaunay triangulation by default, Fortune's sweep
+//! on request), or the farthest-point diagram, with cells clipped to a rectangle or to any
 //! polygon.
 
 use crate::cli::{InputArgs, OutputArgs};
@@ -9,9 +10,11 @@ use crate::progress::{Spinner, LARGE_INPUT};
 use clap::{Args, ValueEnum};
 use compgeom::io::{read_polygons, read_text, write_shape, Format, Shape};
 use compgeom::render::{Layer, Picture, Style};
+use compgeom::voronoi::clip::ring_area;
 use compgeom::voronoi::{
-    clip_cells, verify_cells, verify_voronoi, voronoi_diagram, ClipRegion, VoronoiAlgorithm,
-    VoronoiDiagram,
+    clip_cells, clip_cells_to_polygon, farthest_point_voronoi, verify_cells, verify_farthest,
+    verify_polygon_cells, verify_voronoi, voronoi_diagram, ClipRegion, FarthestVoronoi,
+    VoronoiAlgorithm, VoronoiDiagram,
 };
 use compgeom::{MultiPolygon, Point2, Polygon};
 use serde::Serialize;
@@ -24,18 +27,23 @@ JSON output (--format json, the default) is one object:
   cells          [{\"site\": i, \"polygon\": [[x, y], ...]}, ...]  one per distinct input point,
                  in input order; i is the input index of its first occurrence; the polygon is
                  the cell clipped to the clip region, a counter-clockwise ring without a
-                 repeated closing vertex ([] when the cell misses the region)
+                 repeated closing vertex ([] when the cell misses the region). When a
+                 non-convex --clip-polygon cuts a cell into several pieces (or a hole of it
+                 lies in the cell), \"polygon\" is the largest piece's outer ring and
+                 \"parts\": [[ring, hole, ...], ...] lists every piece (holes clockwise)
   input_to_cell  [c, ...]  for each input point, the index in \"cells\" of its cell
                  (duplicate points share a cell)
   vertices       [[x, y], ...]  Voronoi vertices (rounded; each is the centre of an empty
-                 circle through three or more sites)
+                 circle through three or more sites; with --farthest, of a circle through
+                 three or more sites that contains all sites)
   vertex_sites   [[i, j, k, ...], ...]  for each vertex, the input indices of the sites on its
                  circle (more than three for cocircular sites)
   edges          [{\"sites\": [i, j], \"vertices\": [u, v]}, ...]  Voronoi edges: the bisector
                  of sites i and j (input indices), from vertex u to vertex v (indices into
                  \"vertices\", null at infinity); site i is on the left going from u to v
-  clip           [[x, y], ...]  the clip region, counter-clockwise
-  algorithm      \"default\" | \"fortune\"
+  clip           [[x, y], ...]  the clip region, counter-clockwise (for --clip-polygon: the
+                 first ring read)
+  algorithm      \"default\" | \"fortune\" | \"farthest\"
   input_points   number of points read (duplicates included)
   verified       true; present only with --verify (a failed check exits 1 instead)
 
@@ -43,11 +51,17 @@ JSON output (--format json, the default) is one object:
 (property \"site\"); csv and wkt print the cells as a multipolygon.
 
 Without --clip or --clip-polygon the cells are clipped to the points' bounding box enlarged
-by 10% on every side.
+by 10% on every side. --clip-polygon takes any polygons (non-convex, with holes, several;
+read even-odd); a cell cut into pieces is a MultiPolygon feature in GeoJSON.
+
+--farthest computes the farthest-point Voronoi diagram instead: the cell of a site holds the
+points for which it is the farthest site; only the corners of the convex hull have cells
+(the other sites get []).
 
 Examples:
   compgeom voronoi points.csv --clip 0,0,100,100 --svg voronoi.svg --verify
-  compgeom voronoi points.csv --clip-polygon region.wkt --format geojson";
+  compgeom voronoi points.csv --clip-polygon region.wkt --format geojson
+  compgeom voronoi points.csv --farthest --svg farthest.svg";
 
 /// Arguments of `compgeom voronoi`.
 #[derive(Debug, Clone, Args)]
@@ -60,8 +74,8 @@ pub struct VoronoiArgs {
     #[command(flatten)]
     pub output: OutputArgs,
 
-    /// Algorithm: `default` (fastest exact; currently Fortune's sweep) or `fortune` (the
-    /// book's VORONOIDIAGRAM, O(n log n)).
+    /// Algorithm: `default` (fastest exact: the dual of the Delaunay triangulation) or
+    /// `fortune` (the book's VORONOIDIAGRAM, O(n log n)).
     #[arg(long, value_enum, default_value_t = VoronoiAlgorithmArg::Default)]
     pub algorithm: VoronoiAlgorithmArg,
 
@@ -73,9 +87,15 @@ pub struct VoronoiArgs {
     )]
     pub clip: Option<String>,
 
-    /// Clip the cells to the convex polygon in this file (WKT, GeoJSON or CSV ring).
+    /// Clip the cells to the polygon(s) in this file (WKT, GeoJSON or CSV ring; any
+    /// polygon: non-convex, with holes).
     #[arg(long, value_name = "POLY")]
     pub clip_polygon: Option<PathBuf>,
+
+    /// The farthest-point Voronoi diagram (each site's cell holds the points farthest from
+    /// it); `--algorithm` is then ignored.
+    #[arg(long)]
+    pub farthest: bool,
 }
 
 /// The `--algorithm` values.
@@ -120,25 +140,50 @@ pub fn parse_rect(text: &str) -> Result<ClipRegion, CliError> {
     Ok(ClipRegion::rect(v[0], v[1], v[2], v[3])?)
 }
 
-/// Read the clip polygon file: exactly one polygon without holes, convex.
-fn read_clip_polygon(path: &std::path::Path) -> Result<ClipRegion, CliError> {
+/// Where the cells are clipped.
+enum Clip {
+    /// A rectangle or a convex polygon (the fast path).
+    Convex(ClipRegion),
+    /// Any polygon set, read even-odd.
+    Polygon(MultiPolygon),
+}
+
+impl Clip {
+    /// The rings to draw.
+    fn rings(&self) -> Vec<Vec<Point2>> {
+        match self {
+            Clip::Convex(r) => vec![r.ring().to_vec()],
+            Clip::Polygon(m) => m.0.iter().flat_map(|p| p.rings().cloned()).collect(),
+        }
+    }
+}
+
+/// Read the clip polygon file: one convex polygon without holes takes the fast path; any
+/// other polygon set the general one.
+fn read_clip_polygon(path: &std::path::Path) -> Result<Clip, CliError> {
     let text = read_text(path)?;
     let name = path.display().to_string();
     let format = compgeom::io::detect_format(Some(path), &text)?;
     let mp = read_polygons(&text, format, &name)?;
-    match mp.0.as_slice() {
-        [p] if p.holes.is_empty() => Ok(ClipRegion::convex_polygon(&p.exterior)
-            .map_err(|e| CliError::bad_input(format!("{name}: {e}")))?),
-        _ => Err(CliError::bad_input(format!(
-            "{name}: the clip polygon must be one polygon without holes"
-        ))),
+    if mp.0.is_empty() {
+        return Err(CliError::bad_input(format!("{name}: no clip polygon")));
     }
+    if let [p] = mp.0.as_slice() {
+        if p.holes.is_empty() {
+            if let Ok(r) = ClipRegion::convex_polygon(&p.exterior) {
+                return Ok(Clip::Convex(r));
+            }
+        }
+    }
+    Ok(Clip::Polygon(mp))
 }
 
 #[derive(Serialize)]
 struct CellJson {
     site: usize,
     polygon: Vec<[f64; 2]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    parts: Option<Vec<Vec<Vec<[f64; 2]>>>>,
 }
 
 #[derive(Serialize)]
@@ -165,22 +210,40 @@ fn xy(p: &Point2) -> [f64; 2] {
     [p.x, p.y]
 }
 
+/// The largest piece's outer ring (by area), or nothing.
+fn main_ring(cell: &MultiPolygon) -> Vec<Point2> {
+    cell.0
+        .iter()
+        .max_by(|a, b| ring_area(&a.exterior).total_cmp(&ring_area(&b.exterior)))
+        .map(|p| p.exterior.clone())
+        .unwrap_or_default()
+}
+
 /// The JSON object for a diagram and its clipped cells.
 fn to_json(
     d: &VoronoiDiagram,
-    cells: &[Vec<Point2>],
-    region: &ClipRegion,
-    algorithm: VoronoiAlgorithmArg,
+    cells: &[MultiPolygon],
+    clip: &Clip,
+    algorithm: &'static str,
     verified: bool,
 ) -> VoronoiJson {
     let input = |s: usize| d.site_input_index[s];
+    let ring = |r: &[Point2]| r.iter().map(xy).collect::<Vec<_>>();
     VoronoiJson {
         cells: cells
             .iter()
             .enumerate()
-            .map(|(s, c)| CellJson {
-                site: input(s),
-                polygon: c.iter().map(xy).collect(),
+            .map(|(s, c)| {
+                let simple = c.0.len() <= 1 && c.0.iter().all(|p| p.holes.is_empty());
+                CellJson {
+                    site: input(s),
+                    polygon: ring(&main_ring(c)),
+                    parts: (!simple).then(|| {
+                        c.0.iter()
+                            .map(|p| p.rings().map(|r| ring(r)).collect())
+                            .collect()
+                    }),
+                }
             })
             .collect(),
         input_to_cell: d.input_to_site.clone(),
@@ -200,31 +263,70 @@ fn to_json(
                 }
             })
             .collect(),
-        clip: region.ring().iter().map(xy).collect(),
-        algorithm: algorithm.name(),
+        clip: clip.rings().first().map(|r| ring(r)).unwrap_or_default(),
+        algorithm,
         input_points: d.input_to_site.len(),
         verified: verified.then_some(true),
     }
 }
 
 /// The cells as a GeoJSON FeatureCollection (RFC 7946: exterior rings counter-clockwise,
-/// closed).
-fn to_geojson(d: &VoronoiDiagram, cells: &[Vec<Point2>]) -> serde_json::Value {
+/// holes clockwise, closed): a Polygon per cell in one piece, a MultiPolygon otherwise.
+fn to_geojson(d: &VoronoiDiagram, cells: &[MultiPolygon]) -> serde_json::Value {
+    let closed = |r: &Vec<Point2>| {
+        let mut v: Vec<[f64; 2]> = r.iter().map(xy).collect();
+        if let Some(&f) = v.first() {
+            v.push(f);
+        }
+        v
+    };
+    let poly = |p: &Polygon| p.rings().map(closed).collect::<Vec<_>>();
     let features: Vec<serde_json::Value> = cells
         .iter()
         .enumerate()
-        .filter(|(_, c)| !c.is_empty())
+        .filter(|(_, c)| !c.0.is_empty())
         .map(|(s, c)| {
-            let mut ring: Vec<[f64; 2]> = c.iter().map(xy).collect();
-            ring.push(xy(&c[0]));
+            let geometry = match c.0.as_slice() {
+                [p] => json!({"type": "Polygon", "coordinates": poly(p)}),
+                ps => json!({
+                    "type": "MultiPolygon",
+                    "coordinates": ps.iter().map(poly).collect::<Vec<_>>(),
+                }),
+            };
             json!({
                 "type": "Feature",
                 "properties": {"site": d.site_input_index[s]},
-                "geometry": {"type": "Polygon", "coordinates": [ring]},
+                "geometry": geometry,
             })
         })
         .collect();
     json!({"type": "FeatureCollection", "features": features})
+}
+
+/// The farthest-point diagram in the nearest-site diagram's record, for output only.
+fn as_diagram(f: FarthestVoronoi) -> VoronoiDiagram {
+    VoronoiDiagram {
+        sites: f.sites,
+        site_input_index: f.site_input_index,
+        input_to_site: f.input_to_site,
+        vertices: f.vertices,
+        half_edges: f.half_edges,
+        site_half_edge: f.site_half_edge,
+    }
+}
+
+/// Rings as one-piece cells.
+fn whole(rings: Vec<Vec<Point2>>) -> Vec<MultiPolygon> {
+    rings
+        .into_iter()
+        .map(|r| {
+            if r.is_empty() {
+                MultiPolygon::default()
+            } else {
+                MultiPolygon(vec![Polygon::new(r, Vec::new())])
+            }
+        })
+        .collect()
 }
 
 /// Run `compgeom voronoi`.
@@ -233,61 +335,97 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
         let _spin = Spinner::start("reading points", false);
         args.input.read_points()?
     };
-    let region = match (&args.clip, &args.clip_polygon) {
-        (Some(r), _) => Some(parse_rect(r)?),
+    let clip = match (&args.clip, &args.clip_polygon) {
+        (Some(r), _) => Some(Clip::Convex(parse_rect(r)?)),
         (None, Some(p)) => Some(read_clip_polygon(p)?),
         (None, None) => None,
     };
     let big = points.len() >= LARGE_INPUT;
-    let d = {
-        let _spin = Spinner::start("computing the Voronoi diagram", big);
-        voronoi_diagram(&points, args.algorithm.algorithm())?
+    let verify = args.output.verify;
+    let (d, cells, clip, algorithm) = if args.farthest {
+        let f = {
+            let _spin = Spinner::start("computing the farthest-point Voronoi diagram", big);
+            farthest_point_voronoi(&points)?
+        };
+        let clip = default_clip(clip, &f.sites)?;
+        let cells = match &clip {
+            Clip::Convex(r) => whole(f.cells(r)),
+            Clip::Polygon(m) => f.cells_in_polygon(m)?,
+        };
+        if verify {
+            let _spin = Spinner::start("verifying", big);
+            verify_farthest(&points, &f)?;
+        }
+        (as_diagram(f), cells, clip, "farthest")
+    } else {
+        let d = {
+            let _spin = Spinner::start("computing the Voronoi diagram", big);
+            voronoi_diagram(&points, args.algorithm.algorithm())?
+        };
+        let clip = default_clip(clip, &d.sites)?;
+        let cells = match &clip {
+            Clip::Convex(r) => {
+                let rings = clip_cells(&d, r);
+                if verify {
+                    verify_cells(&d, r, &rings)?;
+                }
+                whole(rings)
+            }
+            Clip::Polygon(m) => {
+                let cells = {
+                    let _spin = Spinner::start("clipping the cells", big);
+                    clip_cells_to_polygon(&d, m)?
+                };
+                if verify {
+                    verify_polygon_cells(&d, m, &cells)?;
+                }
+                cells
+            }
+        };
+        if verify {
+            let _spin = Spinner::start("verifying", big);
+            verify_voronoi(&points, &d)?;
+        }
+        (d, cells, clip, args.algorithm.name())
     };
-    let region = match region {
-        Some(r) => r,
-        None if points.is_empty() => ClipRegion::rect(0.0, 0.0, 1.0, 1.0)?,
-        None => ClipRegion::around(&d.sites, 0.1)?,
-    };
-    let cells = clip_cells(&d, &region);
-    if args.output.verify {
-        let _spin = Spinner::start("verifying", big);
-        verify_voronoi(&points, &d)?;
-        verify_cells(&d, &region, &cells)?;
-    }
     let text = match args.output.format.geometry_format() {
-        None => serde_json::to_string(&to_json(
-            &d,
-            &cells,
-            &region,
-            args.algorithm,
-            args.output.verify,
-        ))
-        .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?,
+        None => serde_json::to_string(&to_json(&d, &cells, &clip, algorithm, verify))
+            .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?,
         Some(Format::GeoJson) => to_geojson(&d, &cells).to_string(),
         Some(format) => write_shape(&cells_shape(&cells), format)?,
     };
     if let Some(svg) = &args.output.svg {
+        let kind = if args.farthest {
+            "Farthest-point Voronoi diagram".to_string()
+        } else {
+            format!("Voronoi diagram ({algorithm})")
+        };
         let title = format!(
-            "Voronoi diagram ({}): n = {}, {} vertices, {} edges",
-            args.algorithm.name(),
+            "{kind}: n = {}, {} vertices, {} edges",
             d.sites.len(),
             d.vertices.len(),
             d.edge_count()
         );
-        let picture = voronoi_picture(&d, &cells, &region, &title);
+        let picture = voronoi_picture(&d, &cells, &clip.rings(), &title);
         output::write_atomic(svg, picture.to_svg_string().as_bytes())?;
     }
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
 }
 
-/// The non-empty cells as one multipolygon.
-pub fn cells_shape(cells: &[Vec<Point2>]) -> Shape {
+/// The clip region given, or the sites' bounding box enlarged by 10% (the unit square
+/// without sites).
+fn default_clip(clip: Option<Clip>, sites: &[Point2]) -> Result<Clip, CliError> {
+    Ok(match clip {
+        Some(c) => c,
+        None if sites.is_empty() => Clip::Convex(ClipRegion::rect(0.0, 0.0, 1.0, 1.0)?),
+        None => Clip::Convex(ClipRegion::around(sites, 0.1)?),
+    })
+}
+
+/// The non-empty cells (all their pieces) as one multipolygon.
+pub fn cells_shape(cells: &[MultiPolygon]) -> Shape {
     Shape::MultiPolygon(MultiPolygon(
-        cells
-            .iter()
-            .filter(|c| !c.is_empty())
-            .map(|c| Polygon::new(c.clone(), Vec::new()))
-            .collect(),
+        cells.iter().flat_map(|c| c.0.iter().cloned()).collect(),
     ))
 }
 
@@ -296,11 +434,11 @@ const PALETTE: [&str; 8] = [
     "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf",
 ];
 
-/// Cells coloured, the clip region, the sites and the Voronoi vertices.
+/// Cells coloured, the clip region's rings, the sites and the Voronoi vertices.
 pub fn voronoi_picture(
     d: &VoronoiDiagram,
-    cells: &[Vec<Point2>],
-    region: &ClipRegion,
+    cells: &[MultiPolygon],
+    clip: &[Vec<Point2>],
     title: &str,
 ) -> Picture {
     let mut pic = Picture::new(800, 640).with_title(title);
@@ -314,13 +452,17 @@ pub fn voronoi_picture(
             Style::area(color).with_fill_opacity(0.25),
         );
         for c in cells.iter().skip(k).step_by(PALETTE.len()) {
-            if !c.is_empty() {
-                layer = layer.ring(c);
+            for r in c.0.iter().flat_map(|p| p.rings()) {
+                layer = layer.ring(r);
             }
         }
         pic.add(layer);
     }
-    pic.add(Layer::new("clip region", Style::lines("#333333")).ring(region.ring()));
+    let mut outline = Layer::new("clip region", Style::lines("#333333"));
+    for r in clip {
+        outline = outline.ring(r);
+    }
+    pic.add(outline);
     let radius = if d.sites.len() > 10_000 { 1.0 } else { 2.5 };
     pic.add(
         Layer::new(
@@ -329,8 +471,9 @@ pub fn voronoi_picture(
         )
         .points(&d.sites),
     );
-    // Only the vertices inside the clip region (far-away ones would shrink the picture).
-    let bbox = compgeom::Bbox2::of_points(region.ring());
+    // Only the vertices inside the clip region's box (far-away ones would shrink the
+    // picture).
+    let bbox = compgeom::Bbox2::of_points(clip.iter().flatten());
     let vs: Vec<Point2> = d
         .vertices
         .iter()

@@ -1,6 +1,8 @@
 //! The gallery's chapter 7 section: Voronoi diagrams of a random disc, a degenerate grid
 //! with duplicates (degree-4 vertices), exactly cocircular lattice points (one vertex of
-//! high degree), and Fortune's sweep caught in the middle: the beach line and the sweep line.
+//! high degree), the default (dual of the Delaunay triangulation) drawn over Fortune's sweep,
+//! cells clipped to a non-convex polygon with a hole, the farthest-point diagram, and
+//! Fortune's sweep caught in the middle: the beach line and the sweep line.
 
 use super::samples::{disc, grid_with_duplicates};
 use super::{format_duration, timed, Demo};
@@ -10,6 +12,11 @@ use compgeom::render::{Layer, Section, Style};
 use compgeom::voronoi::{
     beach_line_at, clip_cells, fortune_voronoi, verify_cells, verify_voronoi, ClipRegion,
 };
+use compgeom::voronoi::{
+    clip_cells_to_polygon, dual_voronoi, farthest_point_voronoi, verify_farthest,
+    verify_polygon_cells, VoronoiDiagram,
+};
+use compgeom::{MultiPolygon, Polygon};
 use compgeom::{Point2, Segment2};
 
 /// Integer points on the circle x² + y² = r2.
@@ -57,7 +64,10 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
          decision about them is exact (a floating-point filter, then exact big-integer \
          arithmetic), so duplicates, grids and cocircular sites come out right: four or more \
          sites on one empty circle give one vertex of higher degree. Cells are clipped to a \
-         box around the sites and listed in input order.",
+         box around the sites and listed in input order. The default method is faster: the \
+         dual of the exact Delaunay triangulation (adjacent triangles with exactly the same \
+         circumcircle merge into one vertex); both give the same diagram. Cells can be \
+         clipped to any polygon, and the farthest-point diagram comes from the convex hull.",
     );
     for (file, caption, points) in runs {
         let (d, time) = timed(|| fortune_voronoi(&points));
@@ -72,7 +82,7 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
             d.vertices.len(),
             d.edge_count()
         );
-        let picture = voronoi_picture(&d, &cells, &region, &title);
+        let picture = voronoi_picture(&d, &whole(cells), &[region.ring().to_vec()], &title);
         let max_degree = d.vertices.iter().map(|v| v.sites.len()).max().unwrap_or(0);
         section.push(
             demo.figure(file, caption, &picture)?
@@ -84,8 +94,251 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
                 .with_fact("verified", "yes"),
         );
     }
+    section.push(dual_figure(demo)?);
+    section.push(clip_figure(demo)?);
+    section.push(farthest_figure(demo)?);
     section.push(beach_line_figure(demo)?);
     Ok(section)
+}
+
+/// Rings as one-piece cells.
+fn whole(rings: Vec<Vec<Point2>>) -> Vec<MultiPolygon> {
+    rings
+        .into_iter()
+        .map(|r| {
+            if r.is_empty() {
+                MultiPolygon::default()
+            } else {
+                MultiPolygon(vec![Polygon::new(r, Vec::new())])
+            }
+        })
+        .collect()
+}
+
+/// The edges of a diagram clipped to a box, as segments (rays cut at the box).
+fn edge_segments(d: &VoronoiDiagram, reach: f64) -> Vec<Segment2> {
+    (0..d.edge_count())
+        .filter_map(|k| {
+            let h = 2 * k;
+            let (u, w) = (d.half_edges[h].origin, d.destination(h));
+            let dir = d.direction(h);
+            let len = dir.x.hypot(dir.y).max(f64::MIN_POSITIVE);
+            let far = |p: Point2, sign: f64| {
+                Point2::new(
+                    p.x + sign * dir.x / len * reach,
+                    p.y + sign * dir.y / len * reach,
+                )
+            };
+            match (u, w) {
+                (Some(u), Some(w)) => Some(Segment2::new(d.vertices[u].point, d.vertices[w].point)),
+                (Some(u), None) => Some(Segment2::new(
+                    d.vertices[u].point,
+                    far(d.vertices[u].point, 1.0),
+                )),
+                (None, Some(w)) => Some(Segment2::new(
+                    far(d.vertices[w].point, -1.0),
+                    d.vertices[w].point,
+                )),
+                (None, None) => None,
+            }
+        })
+        .collect()
+}
+
+/// The default (dual of Delaunay) over Fortune's sweep on a jittered grid: the same edges.
+fn dual_figure(demo: &Demo) -> Result<compgeom::render::Figure, CliError> {
+    let mut points = grid_with_duplicates(8, 3);
+    points.extend(disc(40, 60.0, 9));
+    let (f, t_fortune) = timed(|| fortune_voronoi(&points));
+    let f = f?;
+    let (d, t_dual) = timed(|| dual_voronoi(&points));
+    let d = d?;
+    verify_voronoi(&points, &d)?;
+    verify_voronoi(&points, &f)?;
+    let same = d.vertices.len() == f.vertices.len()
+        && d.edge_count() == f.edge_count()
+        && d.neighbours() == f.neighbours();
+    if !same {
+        return Err(CliError::failure(
+            "the dual and Fortune's sweep differ".to_string(),
+        ));
+    }
+    let region = ClipRegion::around(&d.sites, 0.1)?;
+    let cells = clip_cells(&d, &region);
+    let mut pic = voronoi_picture(
+        &d,
+        &whole(cells),
+        &[region.ring().to_vec()],
+        &format!(
+            "Dual of Delaunay (thick) over Fortune's sweep (dashed): {} vertices, {} edges each",
+            d.vertices.len(),
+            d.edge_count()
+        ),
+    );
+    let reach = 1000.0;
+    let mut thick = Layer::new(
+        "default: dual of the Delaunay triangulation",
+        Style::lines("#1f77b4").with_stroke_width(3.0),
+    );
+    for s in edge_segments(&d, reach) {
+        thick = thick.segment(clip_segment(s, &region));
+    }
+    let mut dashed = Layer::new(
+        "Fortune's sweep",
+        Style::lines("#d62728")
+            .with_dash("5 4")
+            .with_stroke_width(1.5),
+    );
+    for s in edge_segments(&f, reach) {
+        dashed = dashed.segment(clip_segment(s, &region));
+    }
+    pic.add(thick);
+    pic.add(dashed);
+    Ok(demo
+        .figure(
+            "voronoi-dual-vs-fortune.svg",
+            "The default method (the dual of the Delaunay triangulation, thick blue) and \
+             Fortune's sweep (dashed red) give the same diagram, vertex for vertex and edge \
+             for edge, here on a grid with duplicates plus random points",
+            &pic,
+        )?
+        .with_fact("n", points.len().to_string())
+        .with_fact("vertices", d.vertices.len().to_string())
+        .with_fact("time, dual", format_duration(t_dual))
+        .with_fact("time, Fortune", format_duration(t_fortune))
+        .with_fact("same diagram", "yes"))
+}
+
+/// A segment cut to the clip box (for drawing rays); endpoints inside stay.
+fn clip_segment(s: Segment2, region: &ClipRegion) -> Segment2 {
+    let b = compgeom::Bbox2::of_points(region.ring());
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    let (dx, dy) = (s.b.x - s.a.x, s.b.y - s.a.y);
+    for (p, q) in [
+        (-dx, s.a.x - b.min.x),
+        (dx, b.max.x - s.a.x),
+        (-dy, s.a.y - b.min.y),
+        (dy, b.max.y - s.a.y),
+    ] {
+        if p == 0.0 {
+            continue;
+        }
+        let r = q / p;
+        if p < 0.0 {
+            t0 = t0.max(r);
+        } else {
+            t1 = t1.min(r);
+        }
+    }
+    if t0 > t1 {
+        return Segment2::new(s.a, s.a);
+    }
+    let at = |t: f64| Point2::new(s.a.x + t * dx, s.a.y + t * dy);
+    Segment2::new(at(t0), at(t1))
+}
+
+/// Cells clipped to a non-convex polygon with a hole (an E shape with a window).
+fn clip_figure(demo: &Demo) -> Result<compgeom::render::Figure, CliError> {
+    let points = disc(120, 100.0, 21);
+    let p = |x: f64, y: f64| Point2::new(x, y);
+    let shape = vec![
+        p(-90.0, -90.0),
+        p(90.0, -90.0),
+        p(90.0, -50.0),
+        p(-30.0, -50.0),
+        p(-30.0, -15.0),
+        p(60.0, -15.0),
+        p(60.0, 20.0),
+        p(-30.0, 20.0),
+        p(-30.0, 50.0),
+        p(90.0, 50.0),
+        p(90.0, 90.0),
+        p(-90.0, 90.0),
+    ];
+    let window = vec![
+        p(-70.0, -30.0),
+        p(-70.0, 30.0),
+        p(-50.0, 30.0),
+        p(-50.0, -30.0),
+    ];
+    let clip = MultiPolygon(vec![Polygon::new(shape, vec![window])]);
+    let d = dual_voronoi(&points)?;
+    let (cells, time) = timed(|| clip_cells_to_polygon(&d, &clip));
+    let cells = cells?;
+    verify_polygon_cells(&d, &clip, &cells)?;
+    let split = cells.iter().filter(|c| c.0.len() > 1).count();
+    let rings: Vec<Vec<Point2>> = clip.0.iter().flat_map(|q| q.rings().cloned()).collect();
+    let pic = voronoi_picture(
+        &d,
+        &cells,
+        &rings,
+        &format!(
+            "Cells clipped to a non-convex polygon with a hole: {split} cells in several pieces"
+        ),
+    );
+    Ok(demo
+        .figure(
+            "voronoi-clip-polygon.svg",
+            "Voronoi cells clipped to a non-convex polygon with a hole: cells away from the \
+             boundary are classified exactly and kept whole or dropped, cells the boundary \
+             crosses are intersected with it by the exact boolean operation (some fall apart \
+             into several pieces)",
+            &pic,
+        )?
+        .with_fact("sites", d.sites.len().to_string())
+        .with_fact("cells in pieces", split.to_string())
+        .with_fact("time", format_duration(time))
+        .with_fact("verified", "yes"))
+}
+
+/// The farthest-point Voronoi diagram of a random disc.
+fn farthest_figure(demo: &Demo) -> Result<compgeom::render::Figure, CliError> {
+    let points = disc(60, 100.0, 17);
+    let (f, time) = timed(|| farthest_point_voronoi(&points));
+    let f = f?;
+    verify_farthest(&points, &f)?;
+    let region = ClipRegion::rect(-160.0, -160.0, 160.0, 160.0)?;
+    let cells = whole(f.cells(&region));
+    let hull: Vec<Point2> = f.hull.iter().map(|&s| f.sites[s]).collect();
+    let d = VoronoiDiagram {
+        sites: f.sites.clone(),
+        site_input_index: f.site_input_index.clone(),
+        input_to_site: f.input_to_site.clone(),
+        vertices: f.vertices.clone(),
+        half_edges: f.half_edges.clone(),
+        site_half_edge: f.site_half_edge.clone(),
+    };
+    let mut pic = voronoi_picture(
+        &d,
+        &cells,
+        &[region.ring().to_vec()],
+        &format!(
+            "Farthest-point Voronoi diagram: {} hull corners have cells, {} vertices",
+            f.hull.len(),
+            f.vertices.len()
+        ),
+    );
+    pic.add(
+        Layer::new(
+            "convex hull",
+            Style::lines("#2ca02c").with_stroke_width(2.0),
+        )
+        .ring(&hull),
+    );
+    Ok(demo
+        .figure(
+            "voronoi-farthest.svg",
+            "The farthest-point Voronoi diagram: each cell holds the points for which its site \
+             is the farthest; only hull corners have cells, all unbounded, and the diagram is a \
+             tree (from the farthest-point Delaunay triangulation of the hull, built by \
+             randomized incremental insertion with exact flips)",
+            &pic,
+        )?
+        .with_fact("n", points.len().to_string())
+        .with_fact("hull corners", f.hull.len().to_string())
+        .with_fact("vertices", f.vertices.len().to_string())
+        .with_fact("time", format_duration(time))
+        .with_fact("verified", "yes"))
 }
 
 /// Fortune's sweep halted half-way: the final cells faintly, the sweep line, the beach
@@ -100,8 +353,8 @@ fn beach_line_figure(demo: &Demo) -> Result<compgeom::render::Figure, CliError> 
     let snap = beach_line_at(&points, sweep_y)?;
     let mut pic = voronoi_picture(
         &d,
-        &cells,
-        &region,
+        &whole(cells),
+        &[region.ring().to_vec()],
         &format!("Fortune's sweep at y = {sweep_y}: {} arcs", snap.arcs.len()),
     );
     let beach: Vec<Point2> = (0..=440)

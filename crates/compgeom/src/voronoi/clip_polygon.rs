@@ -132,7 +132,7 @@ fn meets(cell: &[Point2], s: Segment2) -> bool {
 }
 
 /// The clip polygon's rings, checked: finite coordinates, at least three distinct points.
-fn check_polygon(clip: &MultiPolygon) -> Result<Vec<Segment2>> {
+pub(crate) fn check_polygon(clip: &MultiPolygon) -> Result<Vec<Segment2>> {
     let mut segs = Vec::new();
     for (i, poly) in clip.0.iter().enumerate() {
         for (j, ring) in poly.rings().enumerate() {

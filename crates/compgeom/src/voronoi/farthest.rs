@@ -28,13 +28,15 @@
 //! corners on one circle: one vertex of degree `h`.
 
 use super::clip::{cut, ClipRegion};
+use super::clip_polygon::check_polygon;
 use super::diagram::{HalfEdge, Vertex, VoronoiDiagram};
 use super::dual::from_triangulation;
 use super::fortune::dedupe;
 use super::predicates::cmp_dist;
 use crate::delaunay::Triangulation;
 use crate::hull::{convex_hull_indices, HullOptions};
-use crate::kernel::{ensure_finite, incircle, CircleSide, Point2};
+use crate::kernel::{ensure_finite, incircle, CircleSide, MultiPolygon, Point2, Polygon};
+use crate::overlay::{boolean, BooleanOp};
 use crate::{Error, Result};
 use std::cmp::Ordering;
 
@@ -131,6 +133,29 @@ impl FarthestVoronoi {
                     poly = cut(&poly, self.sites[t], self.sites[s]);
                 }
                 poly
+            })
+            .collect()
+    }
+
+    /// The cells clipped to the polygon set `clip` (any polygons, read even-odd), in site
+    /// order: [`Self::cells`] on the polygon's bounding box, each then intersected with
+    /// `clip` by the exact boolean operation (only the `h` hull corners have cells).
+    ///
+    /// # Errors
+    /// As [`super::clip_cells_to_polygon`].
+    pub fn cells_in_polygon(&self, clip: &MultiPolygon) -> Result<Vec<MultiPolygon>> {
+        let segs = check_polygon(clip)?;
+        let pts: Vec<Point2> = segs.iter().map(|s| s.a).collect();
+        let region = ClipRegion::from_bbox(crate::kernel::Bbox2::of_points(&pts))?;
+        self.cells(&region)
+            .into_iter()
+            .map(|c| {
+                if c.is_empty() {
+                    Ok(MultiPolygon::default())
+                } else {
+                    let c = MultiPolygon(vec![Polygon::new(c, Vec::new())]);
+                    boolean(&c, clip, BooleanOp::Intersection)
+                }
             })
             .collect()
     }

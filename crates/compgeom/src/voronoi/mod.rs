@@ -1,18 +1,20 @@
 //! Voronoi diagrams of point sites (book chapter 7).
 //!
-//! - [`fortune_voronoi`]: VORONOIDIAGRAM (§7.2), Fortune's sweep with the beach line in a
-//!   balanced tree of arcs, site and circle events, false-alarm removal; O(n log n) time,
-//!   O(n) space. [`voronoi_diagram`] with [`VoronoiAlgorithm::Default`] uses it too (the
-//!   dual of the Delaunay triangulation will become the default once `delaunay` lands).
+//! | function | method | time |
+//! |---|---|---|
+//! | [`voronoi_diagram`] (default), [`dual_voronoi`] | the dual of the Delaunay triangulation ([`crate::delaunay::delaunay`]); cocircular triangles merged exactly | O(n log n) |
+//! | [`fortune_voronoi`], [`VoronoiAlgorithm::Fortune`] | VORONOIDIAGRAM (§7.2), Fortune's sweep: beach line in a balanced tree of arcs, site and circle events, false-alarm removal | O(n log n) |
+//! | [`clip_cells`] | cells in input order clipped to a rectangle or convex polygon (the box of §7.2) | O(n + m·h) |
+//! | [`clip_cells_to_polygon`] | cells clipped to any polygon set (non-convex, holes), one [`crate::MultiPolygon`] per cell | O(n + m) + a boolean per boundary cell |
+//! | [`farthest_point_voronoi`] | farthest-point diagram (§7.4 notes): hull, randomized incremental farthest-point Delaunay, dual | O(n log n) |
+//! | [`NearestSite`] | the post-office query (§7.1): exact greedy walk on the Delaunay graph from a bucket-grid start | O(1) expected per uniform query |
+//! | [`verify_voronoi`], [`verify_cells`], [`verify_polygon_cells`], [`verify_farthest`] | exact verifiers | |
+//!
 //! - [`VoronoiDiagram`]: the half-edge output (vertices, half-edges with twin/next/prev
 //!   and the site on their left; faces are the sites), with a structural
-//!   [`VoronoiDiagram::validate`].
-//! - [`clip`]: cells as polygons in input order, clipped to a rectangle or to a convex
-//!   polygon (the bounding box of §7.2 that bounds the unbounded edges).
-//! - [`verify_voronoi`], [`verify_cells`]: exact verifiers (vertices' circles through their
-//!   sites and empty, decided by the exact in-circle test; cells tile the clip region).
-//! - [`NearestSite`]: the post-office query (nearest site), by a greedy walk on the
-//!   Voronoi neighbours with exact distance comparisons.
+//!   [`VoronoiDiagram::validate`]. Both algorithms give the same diagram (same vertices as
+//!   sets of sites, same directed edges); the tests hold them to it.
+//! - [`beach_line_at`]: Fortune's sweep stopped at a given height, for pictures.
 //!
 //! ## Exactness
 //!
@@ -22,13 +24,10 @@
 //! whether two vertices coincide — is decided exactly (see [`predicates`]): a rigorous
 //! floating-point filter (running error bounds), then an exact-in-`f64` stage (error-free
 //! transformations; settles the exact ties of grids and cocircular sites cheaply), then
-//! exact dyadic big-integer arithmetic. Reported coordinates of vertices are rounded to
-//! `f64`; the topology never depends on them. Clipped cell corners are computed in `f64`.
-//!
-//! ## Not (yet) here
-//!
-//! The dual-of-Delaunay method (waits for `compgeom::delaunay`), clipping to non-convex
-//! polygons (rejected with an error), and the farthest-point Voronoi diagram.
+//! exact dyadic big-integer arithmetic. The dual decides coincident vertices with the exact
+//! in-circle test. Reported coordinates of vertices are rounded to `f64`; the topology
+//! never depends on them. Clipped cell corners are computed in `f64`; clipping to a
+//! general polygon decides inside/outside and crossings exactly on those corners.
 //!
 //! ## Degenerate input
 //!
