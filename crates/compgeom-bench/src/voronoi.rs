@@ -135,6 +135,7 @@ pub fn run(quick: bool) -> Result<(), String> {
             drop(t);
             e
         });
+        let t_tri = best_of(runs, || compgeom::delaunay::delaunay(pts));
         let t_dual = best_of(runs, || voronoi_diagram(pts, VoronoiAlgorithm::Default));
         let t_dual_cells = best_of(runs, || {
             voronoi_diagram(pts, VoronoiAlgorithm::Default).map(|d| clip_cells(&d, &region))
@@ -155,6 +156,7 @@ pub fn run(quick: bool) -> Result<(), String> {
             ),
             ("  delaunator", "triangulation only", t_delaunator),
             ("  spade", "bulk_load triangulation only", t_spade),
+            ("  compgeom delaunay", "triangulation only (exact)", t_tri),
             ("  compgeom default", "diagram (dual, exact)", t_dual),
             (
                 "  compgeom default+clip",

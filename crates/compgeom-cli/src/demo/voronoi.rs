@@ -147,8 +147,13 @@ fn edge_segments(d: &VoronoiDiagram, reach: f64) -> Vec<Segment2> {
 
 /// The default (dual of Delaunay) over Fortune's sweep on a jittered grid: the same edges.
 fn dual_figure(demo: &Demo) -> Result<compgeom::render::Figure, CliError> {
-    let mut points = grid_with_duplicates(8, 3);
-    points.extend(disc(40, 60.0, 9));
+    // A grid with duplicates (degree-4 vertices) next to random points.
+    let mut points = grid_with_duplicates(6, 3);
+    points.extend(
+        disc(30, 3.0, 9)
+            .iter()
+            .map(|p| Point2::new(p.x + 9.0, p.y + 2.5)),
+    );
     let (f, t_fortune) = timed(|| fortune_voronoi(&points));
     let f = f?;
     let (d, t_dual) = timed(|| dual_voronoi(&points));
@@ -175,13 +180,16 @@ fn dual_figure(demo: &Demo) -> Result<compgeom::render::Figure, CliError> {
             d.edge_count()
         ),
     );
-    let reach = 1000.0;
+    let reach = 100.0;
     let mut thick = Layer::new(
         "default: dual of the Delaunay triangulation",
         Style::lines("#1f77b4").with_stroke_width(3.0),
     );
-    for s in edge_segments(&d, reach) {
-        thick = thick.segment(clip_segment(s, &region));
+    for s in edge_segments(&d, reach)
+        .into_iter()
+        .filter_map(|s| clip_segment(s, &region))
+    {
+        thick = thick.segment(s);
     }
     let mut dashed = Layer::new(
         "Fortune's sweep",
@@ -189,8 +197,11 @@ fn dual_figure(demo: &Demo) -> Result<compgeom::render::Figure, CliError> {
             .with_dash("5 4")
             .with_stroke_width(1.5),
     );
-    for s in edge_segments(&f, reach) {
-        dashed = dashed.segment(clip_segment(s, &region));
+    for s in edge_segments(&f, reach)
+        .into_iter()
+        .filter_map(|s| clip_segment(s, &region))
+    {
+        dashed = dashed.segment(s);
     }
     pic.add(thick);
     pic.add(dashed);
@@ -209,8 +220,8 @@ fn dual_figure(demo: &Demo) -> Result<compgeom::render::Figure, CliError> {
         .with_fact("same diagram", "yes"))
 }
 
-/// A segment cut to the clip box (for drawing rays); endpoints inside stay.
-fn clip_segment(s: Segment2, region: &ClipRegion) -> Segment2 {
+/// A segment cut to the clip box (for drawing rays); `None` when it misses the box.
+fn clip_segment(s: Segment2, region: &ClipRegion) -> Option<Segment2> {
     let b = compgeom::Bbox2::of_points(region.ring());
     let (mut t0, mut t1) = (0.0f64, 1.0f64);
     let (dx, dy) = (s.b.x - s.a.x, s.b.y - s.a.y);
@@ -221,6 +232,9 @@ fn clip_segment(s: Segment2, region: &ClipRegion) -> Segment2 {
         (dy, b.max.y - s.a.y),
     ] {
         if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
             continue;
         }
         let r = q / p;
@@ -230,11 +244,11 @@ fn clip_segment(s: Segment2, region: &ClipRegion) -> Segment2 {
             t1 = t1.min(r);
         }
     }
-    if t0 > t1 {
-        return Segment2::new(s.a, s.a);
+    if t0 >= t1 {
+        return None;
     }
     let at = |t: f64| Point2::new(s.a.x + t * dx, s.a.y + t * dy);
-    Segment2::new(at(t0), at(t1))
+    Some(Segment2::new(at(t0), at(t1)))
 }
 
 /// Cells clipped to a non-convex polygon with a hole (an E shape with a window).
