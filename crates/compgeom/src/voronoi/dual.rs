@@ -172,7 +172,7 @@ impl<'a> Dual<'a> {
                     continue;
                 };
                 let p = |x: u32| pts[x as usize];
-                if incircle(p(tri[0]), p(tri[1]), p(tri[2]), p(d)) == CircleSide::OnCircle {
+                if cocircular(p(tri[0]), p(tri[1]), p(tri[2]), p(d)) {
                     let (ra, rb) = (find(&mut parent, a as u32), find(&mut parent, b));
                     if ra != rb {
                         parent[ra.max(rb) as usize] = ra.min(rb);
@@ -293,6 +293,33 @@ impl<'a> Dual<'a> {
     }
 }
 
+/// Are `a, b, c, d` exactly on one circle? A floating-point filter settles the common
+/// case (clearly not cocircular) with Shewchuk's error bound for the in-circle determinant;
+/// otherwise the exact in-circle test decides.
+#[inline]
+fn cocircular(a: Point2, b: Point2, c: Point2, d: Point2) -> bool {
+    let (adx, ady) = (a.x - d.x, a.y - d.y);
+    let (bdx, bdy) = (b.x - d.x, b.y - d.y);
+    let (cdx, cdy) = (c.x - d.x, c.y - d.y);
+    let (bdxcdy, cdxbdy) = (bdx * cdy, cdx * bdy);
+    let (cdxady, adxcdy) = (cdx * ady, adx * cdy);
+    let (adxbdy, bdxady) = (adx * bdy, bdx * ady);
+    let alift = adx * adx + ady * ady;
+    let blift = bdx * bdx + bdy * bdy;
+    let clift = cdx * cdx + cdy * cdy;
+    let det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+    let permanent = (bdxcdy.abs() + cdxbdy.abs()) * alift
+        + (cdxady.abs() + adxcdy.abs()) * blift
+        + (adxbdy.abs() + bdxady.abs()) * clift;
+    // (10 + 96ε)ε for ε = 2⁻⁵³, plus an absolute term covering underflow; only used
+    // when nothing overflowed.
+    const BOUND: f64 = (10.0 + 96.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
+    if det.is_finite() && permanent.is_finite() && det.abs() > BOUND * permanent + 1e-300 {
+        return false;
+    }
+    incircle(a, b, c, d) == CircleSide::OnCircle
+}
+
 fn edge(origin: Option<usize>, twin: usize, site: usize) -> HalfEdge {
     HalfEdge {
         origin,
@@ -300,5 +327,30 @@ fn edge(origin: Option<usize>, twin: usize, site: usize) -> HalfEdge {
         next: None,
         prev: None,
         site,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The filtered test agrees with the exact in-circle test on exactly cocircular points,
+    /// points one ulp off the circle, huge and tiny scales.
+    #[test]
+    fn cocircular_filter_agrees_with_incircle() {
+        let next = |v: f64| f64::from_bits(v.to_bits() + 1);
+        let base = [(5.0, 0.0), (0.0, 5.0), (-3.0, 4.0), (4.0, -3.0)];
+        for scale in [1.0, 1e-150, 1e150, 3.0e-300, 1e300] {
+            let p: Vec<Point2> = base
+                .iter()
+                .map(|&(x, y)| Point2::new(x * scale, y * scale))
+                .collect();
+            let mut off = p.clone();
+            off[3] = Point2::new(next(off[3].x), off[3].y);
+            for q in [&p, &off] {
+                let want = incircle(q[0], q[1], q[2], q[3]) == CircleSide::OnCircle;
+                assert_eq!(cocircular(q[0], q[1], q[2], q[3]), want, "{q:?}");
+            }
+        }
     }
 }
