@@ -107,11 +107,6 @@ impl Skeleton {
         out
     }
 
-    /// Replace every list entry `j` by `f(j)`.
-    pub fn map_items(&mut self, f: impl Fn(u32) -> u32) {
-        self.items.iter_mut().for_each(|j| *j = f(*j));
-    }
-
     /// Approximate heap bytes.
     pub fn memory_bytes(&self) -> usize {
         self.xs.capacity() * 8 + (self.starts.capacity() + self.items.capacity()) * 4

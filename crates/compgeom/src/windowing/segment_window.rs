@@ -49,8 +49,10 @@ use std::cmp::Ordering;
 /// segment in its bucket instead, scanned at query time.
 #[derive(Debug, Clone)]
 struct Stabber {
-    /// Input segment `i` in this frame, `a.x <= b.x` (indexed by input index).
+    /// The stored segments in this frame, `a.x < b.x`, by left end.
     segs: Vec<Segment2>,
+    /// `ids[j]`: the input index of `segs[j]`.
+    ids: Vec<u32>,
     /// Node lists of input indices; boundaries every few endpoints (see [`boundaries`]).
     skel: Skeleton,
     /// Bucket `b` (of the open unit `2b + 1`) is `bucket_items[bucket_starts[b]..][..]`.
@@ -141,15 +143,26 @@ fn boundaries(xs: &[f64]) -> Vec<f64> {
 }
 
 impl Stabber {
-    /// `segs[i]`: input segment `i` in this frame, `a.x <= b.x`; those with `a.x < b.x`
+    /// `frame[i]`: input segment `i` in this frame, `a.x <= b.x`; those with `a.x < b.x`
     /// are stored.
-    fn new(segs: Vec<Segment2>) -> Result<Stabber> {
-        let stored: Vec<u32> = (0..segs.len() as u32)
-            .filter(|&i| segs[i as usize].a.x < segs[i as usize].b.x)
+    fn new(frame: Vec<Segment2>) -> Result<Stabber> {
+        // Stored in the order of their left ends: the segments of a node's list near the
+        // leaves, and of a bucket, then lie close together in memory, which is what the
+        // binary searches and bucket scans touch.
+        let mut ids: Vec<u32> = (0..frame.len() as u32)
+            .filter(|&i| frame[i as usize].a.x < frame[i as usize].b.x)
             .collect();
-        let mut xs: Vec<f64> = stored
+        let by_left = |&i: &u32, &j: &u32| frame[i as usize].a.x.total_cmp(&frame[j as usize].a.x);
+        if ids.len() >= PARALLEL {
+            ids.par_sort_unstable_by(by_left);
+        } else {
+            ids.sort_unstable_by(by_left);
+        }
+        let segs: Vec<Segment2> = ids.iter().map(|&i| frame[i as usize]).collect();
+        drop(frame);
+        let mut xs: Vec<f64> = segs
             .iter()
-            .flat_map(|&i| [segs[i as usize].a.x + 0.0, segs[i as usize].b.x + 0.0])
+            .flat_map(|s| [s.a.x + 0.0, s.b.x + 0.0])
             .collect();
         if xs.len() >= PARALLEL {
             xs.par_sort_unstable_by(f64::total_cmp);
@@ -162,17 +175,12 @@ impl Stabber {
             boundaries(&xs)
         };
         drop(xs);
-        let iv: Vec<(f64, f64)> = stored
-            .iter()
-            .map(|&i| (segs[i as usize].a.x, segs[i as usize].b.x))
-            .collect();
+        let iv: Vec<(f64, f64)> = segs.iter().map(|s| (s.a.x, s.b.x)).collect();
         let mut skel = Skeleton::with_bounds(bounds, &iv);
-        // Node lists hold input indices (not positions in `stored`).
-        skel.map_items(|j| stored[j as usize]);
-        let (bucket_starts, bucket_items) = buckets(&skel, &segs, &stored);
-        drop((iv, stored));
+        drop(iv);
+        let (bucket_starts, bucket_items) = buckets(&skel, &segs);
         let lists = skel.lists_mut();
-        let work = |(slab, list): ((f64, f64), &mut [u32])| sort_list(&segs, slab, list);
+        let work = |(slab, list): ((f64, f64), &mut [u32])| sort_list(&segs, &ids, slab, list);
         if segs.len() >= PARALLEL {
             lists.into_par_iter().try_for_each(work)?;
         } else {
@@ -180,6 +188,7 @@ impl Stabber {
         }
         Ok(Stabber {
             segs,
+            ids,
             skel,
             bucket_starts,
             bucket_items,
@@ -202,10 +211,12 @@ impl Stabber {
             let p1 = list.partition_point(|&i| {
                 orient2d(seg(i).a, seg(i).b, lo) == Orientation::CounterClockwise
             });
-            let p2 = list
-                .partition_point(|&i| orient2d(seg(i).a, seg(i).b, hi) != Orientation::Clockwise);
+            // The answer is usually short: gallop from p1 rather than search the list.
+            let p2 = gallop(list, p1, |i| {
+                orient2d(seg(i).a, seg(i).b, hi) != Orientation::Clockwise
+            });
             for &i in list.get(p1..p2.max(p1)).unwrap_or(&[]) {
-                out.push(i as usize);
+                out.push(self.ids[i as usize] as usize);
             }
         });
         if u % 2 == 1 {
@@ -222,7 +233,7 @@ impl Stabber {
                 if orient2d(s.a, s.b, lo) != Orientation::CounterClockwise
                     && orient2d(s.a, s.b, hi) != Orientation::Clockwise
                 {
-                    out.push(i as usize);
+                    out.push(self.ids[i as usize] as usize);
                 }
             }
         }
@@ -231,22 +242,34 @@ impl Stabber {
     /// Approximate heap bytes.
     fn memory_bytes(&self) -> usize {
         self.segs.capacity() * 32
+            + self.ids.capacity() * 4
             + self.skel.memory_bytes()
             + (self.bucket_starts.capacity() + self.bucket_items.capacity()) * 4
     }
 }
 
+/// The first index at or after `from` where `pred` fails, `pred` holding on a prefix of
+/// `list`: O(log d) tests for an answer `d` places on.
+fn gallop(list: &[u32], from: usize, pred: impl Fn(u32) -> bool) -> usize {
+    let (mut lo, mut probe, mut step) = (from, from, 1);
+    // `pred` holds below `lo`; `probe` is the next place tested.
+    while probe < list.len() && pred(list[probe]) {
+        lo = probe + 1;
+        probe += step;
+        step *= 2;
+    }
+    let end = probe.min(list.len()).max(lo);
+    lo + list[lo..end].partition_point(|&i| pred(i))
+}
+
 /// The buckets of the open units (unit `2b + 1` is bucket `b`): the stored segments with an
 /// endpoint strictly inside, flat (`items[starts[b]..starts[b + 1]]`).
-fn buckets(skel: &Skeleton, segs: &[Segment2], stored: &[u32]) -> (Vec<u32>, Vec<u32>) {
+fn buckets(skel: &Skeleton, segs: &[Segment2]) -> (Vec<u32>, Vec<u32>) {
     let nb = skel.xs.len().saturating_sub(1);
     let mut starts = vec![0u32; nb + 1];
-    let partial = |i: u32| {
-        let s = &segs[i as usize];
-        skel.partial_units(s.a.x, s.b.x)
-    };
-    for &i in stored {
-        for u in partial(i).into_iter().flatten() {
+    let partial = |s: &Segment2| skel.partial_units(s.a.x, s.b.x);
+    for s in segs {
+        for u in partial(s).into_iter().flatten() {
             starts[(u - 1) / 2 + 1] += 1;
         }
     }
@@ -255,10 +278,10 @@ fn buckets(skel: &Skeleton, segs: &[Segment2], stored: &[u32]) -> (Vec<u32>, Vec
     }
     let mut cursor = starts.clone();
     let mut items = vec![0u32; starts[nb] as usize];
-    for &i in stored {
-        for u in partial(i).into_iter().flatten() {
+    for (j, s) in segs.iter().enumerate() {
+        for u in partial(s).into_iter().flatten() {
             let b = (u - 1) / 2;
-            items[cursor[b] as usize] = i;
+            items[cursor[b] as usize] = j as u32;
             cursor[b] += 1;
         }
     }
@@ -267,7 +290,7 @@ fn buckets(skel: &Skeleton, segs: &[Segment2], stored: &[u32]) -> (Vec<u32>, Vec
 
 /// Sort one node's list bottom to top over its slab `[xl, xr]` (all its segments span it)
 /// and check that the order holds at both ends, so that no two cross inside.
-fn sort_list(segs: &[Segment2], (xl, xr): (f64, f64), list: &mut [u32]) -> Result<()> {
+fn sort_list(segs: &[Segment2], ids: &[u32], (xl, xr): (f64, f64), list: &mut [u32]) -> Result<()> {
     if list.len() < 2 {
         return Ok(());
     }
@@ -295,10 +318,11 @@ fn sort_list(segs: &[Segment2], (xl, xr): (f64, f64), list: &mut [u32]) -> Resul
             let (s, t) = (&segs[w[0].2 as usize], &segs[w[1].2 as usize]);
             let order = filter_cmp(w[0].1, w[1].1).unwrap_or_else(|| cmp_at(s, t, xr));
             if order == Ordering::Greater {
+                let (i, j) = (ids[w[0].2 as usize], ids[w[1].2 as usize]);
                 return Err(Error::InvalidInput(format!(
                     "segments {} and {} cross; windowing needs non-crossing segments",
-                    w[0].2.min(w[1].2),
-                    w[0].2.max(w[1].2)
+                    i.min(j),
+                    i.max(j)
                 )));
             }
         }
