@@ -46,23 +46,34 @@ impl Skeleton {
     /// open unit leaves that unit partly covered, which is the caller's business (see
     /// [`partial_units`](Skeleton::partial_units)).
     pub fn with_bounds(xs: Vec<f64>, intervals: &[(f64, f64)]) -> Skeleton {
-        let units = (2 * xs.len()).saturating_sub(1);
-        let nodes = 2 * units.next_power_of_two().max(1);
-        // Whole units `[ua, ub)`: from the point unit of the first boundary at or after `a`
-        // to the point unit of the last boundary at or before `b`.
+        let spans = Skeleton::spans(&xs, intervals);
+        Skeleton::from_spans(xs, &spans)
+    }
+
+    /// The whole units `[ua, ub)` of each interval over the boundaries `xs`: from the point
+    /// unit of the first boundary at or after `a` to the point unit of the last boundary at
+    /// or before `b` (empty when no boundary lies in `[a, b]`).
+    pub fn spans(xs: &[f64], intervals: &[(f64, f64)]) -> Vec<(usize, usize)> {
         let span = |&(a, b): &(f64, f64)| {
             let ua = 2 * xs.partition_point(|&x| x < a);
             let ub = (2 * xs.partition_point(|&x| x <= b)).saturating_sub(1);
             (ua, ub)
         };
-        let spans: Vec<(usize, usize)> = if intervals.len() >= PARALLEL {
+        if intervals.len() >= PARALLEL {
             intervals.par_iter().map(span).collect()
         } else {
             intervals.iter().map(span).collect()
-        };
+        }
+    }
+
+    /// The tree over boundaries `xs` with interval `i` stored at the canonical nodes of
+    /// `spans[i]`.
+    pub fn from_spans(xs: Vec<f64>, spans: &[(usize, usize)]) -> Skeleton {
+        let units = (2 * xs.len()).saturating_sub(1);
+        let nodes = 2 * units.next_power_of_two().max(1);
         // Two passes: count each node's list, then fill the flat array.
         let mut starts = vec![0u32; nodes + 1];
-        for &(ua, ub) in &spans {
+        for &(ua, ub) in spans {
             canonical(0, 0, units, ua, ub, &mut |k| starts[k + 1] += 1);
         }
         for k in 0..nodes {
@@ -77,14 +88,6 @@ impl Skeleton {
             });
         }
         Skeleton { xs, starts, items }
-    }
-
-    /// The open units that the closed interval `[a, b]` (within the boundaries) meets but
-    /// does not cover: those holding `a` or `b` strictly inside (at most two).
-    pub fn partial_units(&self, a: f64, b: f64) -> [Option<usize>; 2] {
-        let odd = |u: Option<usize>| u.filter(|u| u % 2 == 1);
-        let (ua, ub) = (odd(self.unit_of(a)), odd(self.unit_of(b)));
-        [ua, ub.filter(|&u| Some(u) != ua)]
     }
 
     /// Every node's slab (see [`slab`](Skeleton::slab)) with its list, to sort the lists

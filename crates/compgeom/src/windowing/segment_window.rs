@@ -176,9 +176,11 @@ impl Stabber {
         };
         drop(xs);
         let iv: Vec<(f64, f64)> = segs.iter().map(|s| (s.a.x, s.b.x)).collect();
-        let mut skel = Skeleton::with_bounds(bounds, &iv);
+        let spans = Skeleton::spans(&bounds, &iv);
         drop(iv);
-        let (bucket_starts, bucket_items) = buckets(&skel, &segs);
+        let (bucket_starts, bucket_items) = buckets(&bounds, &spans, &segs);
+        let mut skel = Skeleton::from_spans(bounds, &spans);
+        drop(spans);
         let lists = skel.lists_mut();
         let work = |(slab, list): ((f64, f64), &mut [u32])| sort_list(&segs, &ids, slab, list);
         if segs.len() >= PARALLEL {
@@ -264,13 +266,21 @@ fn gallop(list: &[u32], from: usize, pred: impl Fn(u32) -> bool) -> usize {
 
 /// The buckets of the open units (unit `2b + 1` is bucket `b`): the stored segments with an
 /// endpoint strictly inside, flat (`items[starts[b]..starts[b + 1]]`).
-fn buckets(skel: &Skeleton, segs: &[Segment2]) -> (Vec<u32>, Vec<u32>) {
-    let nb = skel.xs.len().saturating_sub(1);
+fn buckets(xs: &[f64], spans: &[(usize, usize)], segs: &[Segment2]) -> (Vec<u32>, Vec<u32>) {
+    // From the whole units `[ua, ub)`: `a` is strictly inside unit `ua - 1` unless it is
+    // the boundary `xs[ua / 2]`; `b` strictly inside unit `ub` unless it is the boundary
+    // `xs[(ub - 1) / 2]`.
+    let partial = |j: usize| {
+        let ((ua, ub), s) = (spans[j], &segs[j]);
+        let pa = (xs[ua / 2] != s.a.x).then(|| (ua - 1) / 2);
+        let pb = (xs[(ub - 1) / 2] != s.b.x).then_some(ub / 2);
+        [pa, pb.filter(|&b| Some(b) != pa)]
+    };
+    let nb = xs.len().saturating_sub(1);
     let mut starts = vec![0u32; nb + 1];
-    let partial = |s: &Segment2| skel.partial_units(s.a.x, s.b.x);
-    for s in segs {
-        for u in partial(s).into_iter().flatten() {
-            starts[(u - 1) / 2 + 1] += 1;
+    for j in 0..segs.len() {
+        for b in partial(j).into_iter().flatten() {
+            starts[b + 1] += 1;
         }
     }
     for b in 0..nb {
@@ -278,9 +288,8 @@ fn buckets(skel: &Skeleton, segs: &[Segment2]) -> (Vec<u32>, Vec<u32>) {
     }
     let mut cursor = starts.clone();
     let mut items = vec![0u32; starts[nb] as usize];
-    for (j, s) in segs.iter().enumerate() {
-        for u in partial(s).into_iter().flatten() {
-            let b = (u - 1) / 2;
+    for j in 0..segs.len() {
+        for b in partial(j).into_iter().flatten() {
             items[cursor[b] as usize] = j as u32;
             cursor[b] += 1;
         }
