@@ -21,7 +21,7 @@
 //! sorted in parallel. This keeps the book's bounds, O(log² n + k) for the edges, with a
 //! fraction of the storage (most of a segment's O(log n) canonical nodes lie near the
 //! leaves, which buckets replace). The endpoint part is a kd-tree, O(√n + k), chosen over a
-//! layered range tree (O(log n + k)) for its memory: 40 instead of about 400 bytes per
+//! layered range tree (O(log n + k)) for its memory: 48 instead of about 400 bytes per
 //! segment. Answers are sorted (each reported once, ascending); build O(n log² n).
 //!
 //! **Exactness.** Lists are sorted by the exact y at the slab's left end, then at its right
