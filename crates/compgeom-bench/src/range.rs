@@ -10,20 +10,24 @@
 //! kiddo has no rectangle query: squares are asked as Chebyshev (L∞) balls, which is the
 //! same set. Answers are compared once, outside the clock.
 //!
-//! Measured (full size, release, on a shared 2-core machine under load average ~9, so
-//! absolute times are inflated about 3x; the ratios come from one run):
+//! Measured (full size, release, 2-core machine shared with other jobs, load average
+//! about 4, so absolute times are inflated; ratios come from one run):
 //!
 //! | structure | build ms | bytes/point | report | count | 10-NN |
 //! |---|---|---|---|---|---|
-//! | compgeom KdTree | 552 | 24 | 0.19 M/s | 0.29 M/s | 0.17 M/s |
-//! | compgeom RangeTree | 1748 | 200 | 0.05 M/s | 0.09 M/s | — |
-//! | compgeom LayeredRangeTree | 1508 | 204 | 0.10 M/s | 0.12 M/s | — |
-//! | kiddo ImmutableKdTree | 422 | 21 | — | — | 0.19 M/s |
-//! | kiddo KdTree (Chebyshev) | 602 | 50 | 0.06 M/s | 0.06 M/s | — |
-//! | rstar RTree | 470 | 72 | 0.06 M/s | 0.06 M/s | 0.10 M/s |
+//! | compgeom KdTree | 209 | 24 | 0.32 M/s | 0.47 M/s | 0.41 M/s |
+//! | compgeom RangeTree | 583 | 200 | 0.12 M/s | 0.21 M/s | — |
+//! | compgeom LayeredRangeTree | 393 | 204 | 0.30 M/s | 0.36 M/s | — |
+//! | kiddo ImmutableKdTree | 152 | 21 | — | — | 0.46 M/s |
+//! | kiddo KdTree (Chebyshev) | 187 | 50 | 0.17 M/s | 0.17 M/s | — |
+//! | rstar RTree | 214 | 72 | 0.13 M/s | 0.14 M/s | 0.28 M/s |
 //!
-//! Windowing, 1,000,000 segments, 100,000 windows: compgeom SegmentWindow 11.6 s build,
-//! 685 bytes/segment, 0.01 M/s; rstar + exact filter 1.6 s, 72 bytes/segment, 0.04 M/s.
+//! Under such load, times taken a minute apart swing by ±40%, so the kd-tree's build and
+//! 10-NN are also timed against kiddo in alternating rounds (median ratio): build 0.55,
+//! 10-NN 0.93 in the run above (the build uses both cores; kiddo's is sequential).
+//!
+//! Windowing, 1,000,000 segments, 100,000 windows: compgeom SegmentWindow 1.7 s build,
+//! 191 bytes/segment, 0.03 M/s; rstar + exact filter 0.9 s, 72 bytes/segment, 0.07 M/s.
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::range::{KdTree, LayeredRangeTree, RangeTree};
@@ -350,8 +354,55 @@ pub fn run(quick: bool) -> Result<(), String> {
         ratio(kdr.knn, kir.knn),
         ratio(kdr.knn, rsr.knn)
     );
+    // The machine may be shared: time compgeom and kiddo alternately, round by round, and
+    // report the median of the per-round ratios, which load swings affect far less than
+    // ratios of times taken minutes apart.
+    let rounds = if quick { 3 } else { 5 };
+    let build_ratio = paired(rounds, || {
+        let a = best_of(1, || KdTree::new(&pts).unwrap());
+        let b = best_of(1, || {
+            ImmutableKdTree::<f64, u32, 2, 32>::new_from_slice(&arr)
+        });
+        (a, b)
+    });
+    let knn_ratio = paired(rounds, || {
+        let a = best_of(1, || {
+            probes
+                .iter()
+                .map(|&q| kd.nearest(q, 10).len())
+                .sum::<usize>()
+        });
+        let b = best_of(1, || {
+            probes
+                .iter()
+                .map(|q| {
+                    ki.nearest_n::<SquaredEuclidean>(
+                        &[q.x, q.y],
+                        std::num::NonZero::new(10).unwrap(),
+                    )
+                    .len()
+                })
+                .sum::<usize>()
+        });
+        (a, b)
+    });
+    println!(
+        "paired ({rounds} alternating rounds, median ratio): KdTree build / kiddo build: {build_ratio:.2}   KdTree 10-NN / kiddo 10-NN: {knn_ratio:.2}"
+    );
     drop((kd, lt, ki, km, rs));
     windowing(quick, runs)
+}
+
+/// The median over `rounds` of the ratio `a / b` of the two times `f` returns.
+fn paired(rounds: usize, mut f: impl FnMut() -> (Duration, Duration)) -> f64 {
+    let mut r: Vec<f64> = (0..rounds)
+        .map(|_| {
+            let (a, b) = f();
+            a.as_secs_f64() / b.as_secs_f64()
+        })
+        .collect();
+    r.sort_by(f64::total_cmp);
+    r[r.len() / 2]
 }
 
 /// Windowing on non-crossing segments: short horizontal-ish segments in a grid of cells

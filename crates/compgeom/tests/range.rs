@@ -251,6 +251,19 @@ fn degenerate_points() -> impl Strategy<Value = Vec<Point2>> {
             .into_iter()
             .map(|t| Point2::new(t as f64, 7.0 - 0.5 * t as f64))
             .collect()),
+        // All on one vertical line (every x equal), with repeated y.
+        prop::collection::vec(0i32..8, 0..100).prop_map(|v| v
+            .into_iter()
+            .map(|t| Point2::new(2.0, t as f64 * 0.5))
+            .collect()),
+        // One point, many times, and -0.0 beside 0.0.
+        (0usize..60, prop::bool::ANY).prop_map(|(n, neg)| (0..n)
+            .map(|i| if neg && i % 2 == 0 {
+                Point2::new(-0.0, 3.0)
+            } else {
+                Point2::new(0.0, 3.0)
+            })
+            .collect()),
     ]
 }
 

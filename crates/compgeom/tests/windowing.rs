@@ -286,3 +286,62 @@ fn infinite_and_nan_windows() {
     assert_eq!(ap.query(&strip), brute(&ap_segs, &win(3.0, -1e9, 4.0, 1e9)));
     assert!(ap.query(&win(0.0, f64::NAN, 1.0, 1.0)).is_empty());
 }
+
+/// One short segment in each cell of a `k × k` grid, endpoints anywhere in the cell (so
+/// none cross and almost every x is distinct), a few of them vertical, horizontal, points
+/// or sharing an endpoint with the next cell's segment; plus long segments between the
+/// rows (they span many slabs of the structure).
+fn cell_segments(k: usize, seed: u64) -> Vec<Segment2> {
+    let mut r = Lcg(seed);
+    let mut u =
+        |cell: usize| cell as f64 + 0.05 + r.next(1 << 20) as f64 / (1u64 << 20) as f64 * 0.9;
+    let mut segs = Vec::new();
+    for i in 0..k {
+        for j in 0..k {
+            let a = p(u(i), u(j));
+            let mut b = p(u(i), u(j));
+            match (i * 7 + j * 3) % 11 {
+                0 => b = p(a.x, b.y),
+                1 => b = p(b.x, a.y),
+                2 => b = a,
+                _ => {}
+            }
+            segs.push(Segment2::new(a, b));
+        }
+        // Along the gap between row i and row i + 1, touching at the ends.
+        let y = i as f64 + 0.99;
+        segs.push(Segment2::new(p(0.0, y), p(k as f64 * 0.5, y + 0.005)));
+        segs.push(Segment2::new(p(k as f64 * 0.5, y + 0.005), p(k as f64, y)));
+    }
+    segs
+}
+
+#[test]
+fn windowing_on_many_distinct_coordinates_matches_brute_force() {
+    for (k, seed) in [(5, 1), (40, 2)] {
+        let segs = cell_segments(k, seed);
+        let mut ws = windows(150, -1.0, k as f64 + 1.0, seed + 30);
+        // Windows at the segments' own coordinates: edges through endpoints.
+        for s in segs.iter().step_by(37) {
+            ws.push(win(s.a.x, s.a.y, s.a.x + 1.5, s.a.y + 0.7));
+            ws.push(win(s.b.x - 0.3, s.b.y - 2.0, s.b.x, s.b.y));
+            ws.push(win(s.a.x, s.a.y, s.a.x, s.a.y));
+        }
+        check_window_structures(&segs, &ws, false);
+    }
+}
+
+#[test]
+fn crossing_long_segments_are_refused() {
+    // Two long segments crossing among many short ones: both span everything, so they
+    // share the root's list, whose order they break.
+    let mut segs = cell_segments(12, 3);
+    let n = segs.len();
+    segs.push(Segment2::new(p(0.0, 0.995), p(12.0, 1.995)));
+    segs.push(Segment2::new(p(12.0, 0.995), p(0.0, 1.995)));
+    let e = SegmentWindow::new(&segs).unwrap_err().to_string();
+    assert!(
+        e.contains(&format!("segments {n} and {} cross", n + 1)),
+        "{e}"
+    );
+}

@@ -20,8 +20,10 @@ use std::cmp::Ordering;
 /// Compare two finite values (`-0.0 == 0.0`).
 #[inline]
 pub(crate) fn cmp_f64(a: f64, b: f64) -> Ordering {
-    // Finite input: `partial_cmp` never fails; `Equal` keeps the order total if it did.
-    a.partial_cmp(&b).unwrap_or(Ordering::Equal)
+    // Adding 0.0 turns -0.0 into 0.0 and changes nothing else; on the result `total_cmp`
+    // (an integer comparison, branch-free) agrees with `<` for finite values and is
+    // several times faster than `partial_cmp` inside selection and sorting.
+    (a + 0.0).total_cmp(&(b + 0.0))
 }
 
 /// `(x | y | i)` order: the composite x-coordinate of §5.5 with the index as a last key.

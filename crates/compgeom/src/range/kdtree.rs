@@ -14,7 +14,10 @@
 //! decision compares input coordinates with query coordinates, which is exact.
 //! [`KdTree::nearest`] and [`KdTree::within_radius`] compare squared distances exactly
 //! (floating-point filter, exact rational fallback); ties in distance are broken by the
-//! smaller input index, so answers are deterministic.
+//! smaller input index, so answers are deterministic. k-NN keeps the `k` best in a short
+//! sorted array; a point or subtree is skipped when its rounded (lower-bounded) distance
+//! exceeds the worst kept one's by more than the rounding error, so only near-ties reach
+//! the exact comparison.
 //!
 //! Memory: 20 bytes per point plus a 32-byte box per node (about `2n / LEAF_SIZE` nodes).
 
@@ -25,7 +28,6 @@ use super::distance::{
 use crate::kernel::{Bbox2, Point2};
 use crate::Result;
 use std::cmp::Ordering;
-use std::collections::BinaryHeap;
 
 /// A static kd-tree over points in the plane; queries report input indices.
 ///
@@ -220,47 +222,46 @@ impl KdTree {
         if k == 0 || self.is_empty() || !q.is_finite() {
             return Vec::new();
         }
-        let mut heap: BinaryHeap<Candidate> = BinaryHeap::with_capacity(k + 1);
-        self.knn(q, k, Self::root(self.len()), &mut heap);
-        let mut v = heap.into_sorted_vec();
-        v.truncate(k);
-        v.into_iter().map(|c| c.id as usize).collect()
+        let mut best = Best {
+            q,
+            k,
+            items: Vec::with_capacity(k.min(self.len()) + 1),
+            prune: f64::INFINITY,
+        };
+        self.knn(Self::root(self.len()), &mut best);
+        best.items.into_iter().map(|c| c.id as usize).collect()
     }
 
-    fn knn(&self, q: Point2, k: usize, node: Node, heap: &mut BinaryHeap<Candidate>) {
-        if heap.len() == k {
-            let b = &self.boxes[node.k as usize];
-            let worst = heap
-                .peek()
-                .map_or(f64::INFINITY, |c| c.d2 * (1.0 + 4e-15) + 4e-290);
-            if box_dist2_lower(q, b.min.x, b.min.y, b.max.x, b.max.y) > worst {
-                return;
-            }
-        }
+    fn knn(&self, node: Node, best: &mut Best) {
         if node.depth == self.depth || (node.hi - node.lo) as usize <= Self::LEAF_SIZE {
             for j in node.lo as usize..node.hi as usize {
                 let p = self.pts[j];
-                let c = Candidate {
-                    q,
-                    p,
-                    d2: dist2(p, q),
-                    id: self.ids[j],
-                };
-                if heap.len() < k {
-                    heap.push(c);
-                } else if heap.peek().is_some_and(|w| c < *w) {
-                    heap.pop();
-                    heap.push(c);
+                let d2 = dist2(p, best.q);
+                // Rounded distances beyond the prune bound cannot beat the worst kept.
+                if d2 <= best.prune {
+                    best.offer(Candidate {
+                        p,
+                        d2,
+                        id: self.ids[j],
+                    });
                 }
             }
             return;
         }
         let (l, r) = node.children();
-        let dl = self.node_dist(q, l);
-        let dr = self.node_dist(q, r);
-        let (first, second) = if dl <= dr { (l, r) } else { (r, l) };
-        self.knn(q, k, first, heap);
-        self.knn(q, k, second, heap);
+        let dl = self.node_dist(best.q, l);
+        let dr = self.node_dist(best.q, r);
+        let ((first, d1), (second, d2)) = if dl <= dr {
+            ((l, dl), (r, dr))
+        } else {
+            ((r, dr), (l, dl))
+        };
+        if d1 <= best.prune {
+            self.knn(first, best);
+        }
+        if d2 <= best.prune {
+            self.knn(second, best);
+        }
     }
 
     fn node_dist(&self, q: Point2, n: Node) -> f64 {
@@ -394,32 +395,54 @@ fn inside(b: &Bbox2, r: &Bbox2) -> bool {
     r.min.x <= b.min.x && b.max.x <= r.max.x && r.min.y <= b.min.y && b.max.y <= r.max.y
 }
 
-/// A k-NN candidate, ordered by exact distance to `q`, then by index.
+/// A k-NN candidate: a point, its rounded squared distance to the query (for the filter),
+/// its input index.
 #[derive(Debug, Clone, Copy)]
 struct Candidate {
-    q: Point2,
     p: Point2,
-    /// The rounded squared distance, for the filter.
     d2: f64,
     id: u32,
 }
 
-impl PartialEq for Candidate {
-    fn eq(&self, o: &Self) -> bool {
-        self.cmp(o) == Ordering::Equal
-    }
+/// The `k` best candidates so far, nearest first (a short sorted array: cheaper than a heap
+/// for the small `k` of typical queries), and the prune bound they imply.
+#[derive(Debug)]
+struct Best {
+    q: Point2,
+    k: usize,
+    items: Vec<Candidate>,
+    /// Once `k` are kept: a bound on rounded squared distances above which nothing can beat
+    /// the worst kept (that worst one's, inflated by the rounding error); else infinity.
+    prune: f64,
 }
-impl Eq for Candidate {}
-impl PartialOrd for Candidate {
-    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
-        Some(self.cmp(o))
+
+impl Best {
+    /// `a` before `b`: exact distance to `q`, then input index.
+    #[inline]
+    fn before(&self, a: &Candidate, b: &Candidate) -> bool {
+        filtered(a.d2, b.d2)
+            .unwrap_or_else(|| compare_distance(self.q, a.p, b.p))
+            .then(a.id.cmp(&b.id))
+            == Ordering::Less
     }
-}
-impl Ord for Candidate {
-    fn cmp(&self, o: &Self) -> Ordering {
-        filtered(self.d2, o.d2)
-            .unwrap_or_else(|| compare_distance(self.q, self.p, o.p))
-            .then(self.id.cmp(&o.id))
+
+    #[inline]
+    fn offer(&mut self, c: Candidate) {
+        if self.items.len() == self.k {
+            if !self.before(&c, &self.items[self.k - 1]) {
+                return;
+            }
+            self.items.pop();
+        }
+        let mut at = self.items.len();
+        while at > 0 && self.before(&c, &self.items[at - 1]) {
+            at -= 1;
+        }
+        self.items.insert(at, c);
+        if self.items.len() == self.k {
+            let w = self.items[self.k - 1].d2;
+            self.prune = w * (1.0 + 4e-15) + 4e-290;
+        }
     }
 }
 

@@ -64,6 +64,7 @@ pub use skeleton::RangeIter;
 pub use verify::{verify_nearest, verify_query};
 
 pub(crate) use composite::check_len as check_count;
+pub(crate) use composite::PARALLEL;
 
 #[cfg(doc)]
 use crate::kernel::{Bbox2, Point2};

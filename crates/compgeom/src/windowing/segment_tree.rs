@@ -11,7 +11,9 @@
 //! [`SegmentWindow`](super::SegmentWindow) uses the same tree with each node's list sorted
 //! by the exact above/below relation.
 
+use crate::range::PARALLEL;
 use crate::{Error, Result};
+use rayon::prelude::*;
 
 /// The tree skeleton over elementary intervals, with the canonical lists.
 #[derive(Debug, Clone)]
@@ -26,7 +28,8 @@ pub(crate) struct Skeleton {
 }
 
 impl Skeleton {
-    /// Build over closed intervals (checked: finite, `lo <= hi`).
+    /// Build over closed intervals (checked: finite, `lo <= hi`), with every distinct
+    /// endpoint a boundary.
     pub fn new(intervals: &[(f64, f64)]) -> Skeleton {
         let mut xs: Vec<f64> = intervals
             .iter()
@@ -34,18 +37,43 @@ impl Skeleton {
             .collect();
         xs.sort_unstable_by(f64::total_cmp);
         xs.dedup();
+        Skeleton::with_bounds(xs, intervals)
+    }
+
+    /// Build over closed intervals (checked) lying within `[xs[0], xs[last]]`, with the
+    /// given boundaries (ascending, distinct, `-0.0` normalised). Each interval is stored
+    /// at the canonical nodes of the units it covers whole; an endpoint strictly inside an
+    /// open unit leaves that unit partly covered, which is the caller's business (see
+    /// [`partial_units`](Skeleton::partial_units)).
+    pub fn with_bounds(xs: Vec<f64>, intervals: &[(f64, f64)]) -> Skeleton {
+        let spans = Skeleton::spans(&xs, intervals);
+        Skeleton::from_spans(xs, &spans)
+    }
+
+    /// The whole units `[ua, ub)` of each interval over the boundaries `xs`: from the point
+    /// unit of the first boundary at or after `a` to the point unit of the last boundary at
+    /// or before `b` (empty when no boundary lies in `[a, b]`).
+    pub fn spans(xs: &[f64], intervals: &[(f64, f64)]) -> Vec<(usize, usize)> {
+        let span = |&(a, b): &(f64, f64)| {
+            let ua = 2 * xs.partition_point(|&x| x < a);
+            let ub = (2 * xs.partition_point(|&x| x <= b)).saturating_sub(1);
+            (ua, ub)
+        };
+        if intervals.len() >= PARALLEL {
+            intervals.par_iter().map(span).collect()
+        } else {
+            intervals.iter().map(span).collect()
+        }
+    }
+
+    /// The tree over boundaries `xs` with interval `i` stored at the canonical nodes of
+    /// `spans[i]`.
+    pub fn from_spans(xs: Vec<f64>, spans: &[(usize, usize)]) -> Skeleton {
         let units = (2 * xs.len()).saturating_sub(1);
         let nodes = 2 * units.next_power_of_two().max(1);
-        let spans: Vec<(usize, usize)> = intervals
-            .iter()
-            .map(|&(a, b)| {
-                let ua = 2 * xs.partition_point(|&x| x < a);
-                (ua, 2 * xs.partition_point(|&x| x < b) + 1)
-            })
-            .collect();
         // Two passes: count each node's list, then fill the flat array.
         let mut starts = vec![0u32; nodes + 1];
-        for &(ua, ub) in &spans {
+        for &(ua, ub) in spans {
             canonical(0, 0, units, ua, ub, &mut |k| starts[k + 1] += 1);
         }
         for k in 0..nodes {
@@ -62,9 +90,29 @@ impl Skeleton {
         Skeleton { xs, starts, items }
     }
 
-    /// Node `k`'s list, to reorder it.
-    pub fn list_mut(&mut self, k: usize) -> &mut [u32] {
-        &mut self.items[self.starts[k] as usize..self.starts[k + 1] as usize]
+    /// Every node's slab (see [`slab`](Skeleton::slab)) with its list, to sort the lists
+    /// (in parallel).
+    pub fn lists_mut(&mut self) -> Vec<((f64, f64), &mut [u32])> {
+        let mut spans = Vec::new();
+        self.for_each_node(|k, u0, u1| spans.push((k, self.slab(u0, u1))));
+        spans.sort_unstable_by_key(|s| s.0);
+        let mut rest: &mut [u32] = &mut self.items;
+        let mut done = 0usize;
+        let mut out = Vec::with_capacity(spans.len());
+        for (k, slab) in spans {
+            let (from, to) = (self.starts[k] as usize, self.starts[k + 1] as usize);
+            let (_, tail) = std::mem::take(&mut rest).split_at_mut(from - done);
+            let (list, tail) = tail.split_at_mut(to - from);
+            rest = tail;
+            done = to;
+            out.push((slab, list));
+        }
+        out
+    }
+
+    /// Approximate heap bytes.
+    pub fn memory_bytes(&self) -> usize {
+        self.xs.capacity() * 8 + (self.starts.capacity() + self.items.capacity()) * 4
     }
 
     /// Node `k`'s list.

@@ -1,18 +1,28 @@
 //! Windowing on arbitrary non-crossing segments (§10.3): report the segments that intersect
 //! a closed query rectangle (window).
 //!
-//! A segment meets the window iff an endpoint lies in it (found with a layered range tree,
-//! §5.6) or it meets one of the window's four edges. Edges are queried with segment trees
-//! (§10.3): for the left and right edges, a segment tree on the segments' x-extents whose
-//! every node keeps its segments sorted bottom to top (they all span the node's slab, and
-//! non-crossing segments are totally ordered there); a query walks one root-to-leaf path
-//! and binary-searches each node's list with exact orientation tests against the edge's
-//! ends. The bottom edge uses a second tree built with x and y exchanged (the top edge is
-//! not needed: see [`SegmentWindow::query`]).
+//! A segment meets the window iff an endpoint lies in it (found with a [`KdTree`] on the
+//! endpoints, §5.2) or it meets one of the window's four edges. Edges are queried with
+//! segment trees (§10.3): for the left and right edges, a segment tree on the segments'
+//! x-extents whose every node keeps its segments sorted bottom to top (they all span the
+//! node's slab, and non-crossing segments are totally ordered there); a query walks one
+//! root-to-leaf path and binary-searches each node's list with exact orientation tests
+//! against the edge's ends. The bottom edge uses a second tree built with x and y
+//! exchanged (the top edge is not needed: see [`SegmentWindow::query`]).
 //! Segments of zero extent in one direction are left out of that direction's tree: a
 //! vertical segment meeting the left edge without an endpoint inside also crosses the
-//! bottom edge, and the other tree finds it. Query O(log² n + k) plus sorting the k
-//! answers (each reported once, ascending); storage O(n log n); build O(n log² n).
+//! bottom edge, and the other tree finds it.
+//!
+//! **Compact layout.** The tree's elementary intervals are not cut at every endpoint but at
+//! every sixteenth or so (an x carrying many endpoints is always a cut): a segment is stored
+//! at the canonical nodes of the intervals it covers whole, and in the *bucket* of the (at
+//! most two) open intervals holding one of its endpoints strictly inside, which a query
+//! scans with exact tests. Node lists, buckets and the tree are flat `u32` arrays; lists are
+//! sorted in parallel. This keeps the book's bounds, O(log² n + k) for the edges, with a
+//! fraction of the storage (most of a segment's O(log n) canonical nodes lie near the
+//! leaves, which buckets replace). The endpoint part is a kd-tree, O(√n + k), chosen over a
+//! layered range tree (O(log n + k)) for its memory: 48 instead of about 400 bytes per
+//! segment. Answers are sorted (each reported once, ascending); build O(n log² n).
 //!
 //! **Exactness.** Lists are sorted by the exact y at the slab's left end, then at its right
 //! end (constructed points compared via the kernel's [`compare_y_at_x`]), and the build
@@ -28,18 +38,26 @@ use super::segment_tree::Skeleton;
 use crate::kernel::{
     compare_y_at_x, orient2d, Bbox2, Crossing, ExactPoint, Orientation, Point2, Segment2,
 };
-use crate::range::LayeredRangeTree;
+use crate::range::{KdTree, PARALLEL};
 use crate::{Error, Result};
+use rayon::prelude::*;
 use std::cmp::Ordering;
 
-/// Segments of positive x-extent, each node list sorted bottom to top.
+/// The segment tree of one frame (§10.3) over slabs of x, with bucket leaves: segments
+/// of positive x-extent are stored at the canonical nodes of the units they cover, each
+/// node's list sorted bottom to top; a unit an endpoint lies strictly inside keeps the
+/// segment in its bucket instead, scanned at query time.
 #[derive(Debug, Clone)]
 struct Stabber {
-    /// Segments in this frame, `a.x < b.x`.
+    /// The stored segments in this frame, `a.x < b.x`, by left end.
     segs: Vec<Segment2>,
-    /// Input index of each.
+    /// `ids[j]`: the input index of `segs[j]`.
     ids: Vec<u32>,
+    /// Node lists of input indices; boundaries every few endpoints (see [`boundaries`]).
     skel: Skeleton,
+    /// Bucket `b` (of the open unit `2b + 1`) is `bucket_items[bucket_starts[b]..][..]`.
+    bucket_starts: Vec<u32>,
+    bucket_items: Vec<u32>,
 }
 
 /// The point of `s` (with `a.x < b.x`) at `x`, inside its x-range, exactly.
@@ -96,54 +114,87 @@ fn cmp_at(s: &Segment2, t: &Segment2, x: f64) -> Ordering {
     filter_cmp(approx_y(s, x), approx_y(t, x)).unwrap_or_else(|| compare_y_at_x(&at(s, x), *t))
 }
 
-impl Stabber {
-    fn new(segs: Vec<Segment2>, ids: Vec<u32>) -> Result<Stabber> {
-        let iv: Vec<(f64, f64)> = segs.iter().map(|s| (s.a.x, s.b.x)).collect();
-        let mut skel = Skeleton::new(&iv);
-        let mut slabs = Vec::new();
-        skel.for_each_node(|k, u0, u1| slabs.push((k, u0, u1)));
-        for (k, u0, u1) in slabs {
-            if skel.list(k).len() < 2 {
-                continue;
-            }
-            let (xl, xr) = skel.slab(u0, u1);
-            let list = skel.list_mut(k);
-            // The rounded y-values at both slab ends are computed once per entry; the exact
-            // comparison runs only where they cannot decide.
-            let mut keyed: Vec<(Approx, Approx, u32)> = list
-                .iter()
-                .map(|&i| {
-                    (
-                        approx_y(&segs[i as usize], xl),
-                        approx_y(&segs[i as usize], xr),
-                        i,
-                    )
-                })
-                .collect();
-            keyed.sort_by(|a, b| {
-                let (s, t) = (&segs[a.2 as usize], &segs[b.2 as usize]);
-                filter_cmp(a.0, b.0)
-                    .unwrap_or_else(|| cmp_at(s, t, xl))
-                    .then_with(|| filter_cmp(a.1, b.1).unwrap_or_else(|| cmp_at(s, t, xr)))
-                    .then(ids[a.2 as usize].cmp(&ids[b.2 as usize]))
-            });
-            for (slot, e) in list.iter_mut().zip(&keyed) {
-                *slot = e.2;
-            }
-            if xl < xr {
-                for w in list.windows(2) {
-                    let (s, t) = (&segs[w[0] as usize], &segs[w[1] as usize]);
-                    if cmp_at(s, t, xr) == Ordering::Greater {
-                        return Err(Error::InvalidInput(format!(
-                            "segments {} and {} cross; windowing needs non-crossing segments",
-                            ids[w[0] as usize].min(ids[w[1] as usize]),
-                            ids[w[0] as usize].max(ids[w[1] as usize])
-                        )));
-                    }
-                }
-            }
+/// Endpoints strictly inside one open unit (between two consecutive boundaries) at most
+/// this many, where equal x-values allow: the bound on a bucket scan.
+const BUCKET: usize = 16;
+
+/// Every distinct x is a boundary when it carries at least [`BUCKET`] endpoints; otherwise
+/// x-values are grouped so that at most `BUCKET` endpoints lie strictly between two
+/// consecutive boundaries. `xs` ascending, not empty.
+fn boundaries(xs: &[f64]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(2 * xs.len() / BUCKET + 2);
+    let mut inside = 0usize;
+    let mut j = 0;
+    while j < xs.len() {
+        let v = xs[j];
+        let mut c = 1;
+        while j + c < xs.len() && xs[j + c] == v {
+            c += 1;
         }
-        Ok(Stabber { segs, ids, skel })
+        j += c;
+        if out.is_empty() || j == xs.len() || c >= BUCKET || inside + c > BUCKET {
+            out.push(v);
+            inside = 0;
+        } else {
+            inside += c;
+        }
+    }
+    out
+}
+
+impl Stabber {
+    /// `frame[i]`: input segment `i` in this frame, `a.x <= b.x`; those with `a.x < b.x`
+    /// are stored.
+    fn new(frame: Vec<Segment2>) -> Result<Stabber> {
+        // Stored in the order of their left ends: the segments of a node's list near the
+        // leaves, and of a bucket, then lie close together in memory, which is what the
+        // binary searches and bucket scans touch.
+        let mut ids: Vec<u32> = (0..frame.len() as u32)
+            .filter(|&i| frame[i as usize].a.x < frame[i as usize].b.x)
+            .collect();
+        let by_left = |&i: &u32, &j: &u32| frame[i as usize].a.x.total_cmp(&frame[j as usize].a.x);
+        if ids.len() >= PARALLEL {
+            ids.par_sort_unstable_by(by_left);
+        } else {
+            ids.sort_unstable_by(by_left);
+        }
+        let segs: Vec<Segment2> = ids.iter().map(|&i| frame[i as usize]).collect();
+        drop(frame);
+        let mut xs: Vec<f64> = segs
+            .iter()
+            .flat_map(|s| [s.a.x + 0.0, s.b.x + 0.0])
+            .collect();
+        if xs.len() >= PARALLEL {
+            xs.par_sort_unstable_by(f64::total_cmp);
+        } else {
+            xs.sort_unstable_by(f64::total_cmp);
+        }
+        let bounds = if xs.is_empty() {
+            Vec::new()
+        } else {
+            boundaries(&xs)
+        };
+        drop(xs);
+        let iv: Vec<(f64, f64)> = segs.iter().map(|s| (s.a.x, s.b.x)).collect();
+        let spans = Skeleton::spans(&bounds, &iv);
+        drop(iv);
+        let (bucket_starts, bucket_items) = buckets(&bounds, &spans, &segs);
+        let mut skel = Skeleton::from_spans(bounds, &spans);
+        drop(spans);
+        let lists = skel.lists_mut();
+        let work = |(slab, list): ((f64, f64), &mut [u32])| sort_list(&segs, &ids, slab, list);
+        if segs.len() >= PARALLEL {
+            lists.into_par_iter().try_for_each(work)?;
+        } else {
+            lists.into_iter().try_for_each(work)?;
+        }
+        Ok(Stabber {
+            segs,
+            ids,
+            skel,
+            bucket_starts,
+            bucket_items,
+        })
     }
 
     /// Segments meeting the vertical segment `x = qx, y1 <= y <= y2`.
@@ -152,20 +203,140 @@ impl Stabber {
             return;
         };
         let (lo, hi) = (Point2::new(qx, y1), Point2::new(qx, y2));
+        let seg = |i: u32| &self.segs[i as usize];
         self.skel.path(u, |k, _, _| {
             let list = self.skel.list(k);
-            let seg = |i: u32| &self.segs[i as usize];
+            if list.is_empty() {
+                return;
+            }
             // Below (qx, y1): the point is strictly left of (above) a → b.
             let p1 = list.partition_point(|&i| {
                 orient2d(seg(i).a, seg(i).b, lo) == Orientation::CounterClockwise
             });
-            let p2 = list
-                .partition_point(|&i| orient2d(seg(i).a, seg(i).b, hi) != Orientation::Clockwise);
+            // The answer is usually short: gallop from p1 rather than search the list.
+            let p2 = gallop(list, p1, |i| {
+                orient2d(seg(i).a, seg(i).b, hi) != Orientation::Clockwise
+            });
             for &i in list.get(p1..p2.max(p1)).unwrap_or(&[]) {
                 out.push(self.ids[i as usize] as usize);
             }
         });
+        if u % 2 == 1 {
+            // The unit's partly covering segments, tested one by one (at most a few dozen
+            // when x-values are not massively repeated).
+            let b = (u - 1) / 2;
+            let bucket = &self.bucket_items
+                [self.bucket_starts[b] as usize..self.bucket_starts[b + 1] as usize];
+            for &i in bucket {
+                let s = seg(i);
+                if qx < s.a.x || s.b.x < qx || s.a.y.max(s.b.y) < y1 || s.a.y.min(s.b.y) > y2 {
+                    continue;
+                }
+                if orient2d(s.a, s.b, lo) != Orientation::CounterClockwise
+                    && orient2d(s.a, s.b, hi) != Orientation::Clockwise
+                {
+                    out.push(self.ids[i as usize] as usize);
+                }
+            }
+        }
     }
+
+    /// Approximate heap bytes.
+    fn memory_bytes(&self) -> usize {
+        self.segs.capacity() * 32
+            + self.ids.capacity() * 4
+            + self.skel.memory_bytes()
+            + (self.bucket_starts.capacity() + self.bucket_items.capacity()) * 4
+    }
+}
+
+/// The first index at or after `from` where `pred` fails, `pred` holding on a prefix of
+/// `list`: O(log d) tests for an answer `d` places on.
+fn gallop(list: &[u32], from: usize, pred: impl Fn(u32) -> bool) -> usize {
+    let (mut lo, mut probe, mut step) = (from, from, 1);
+    // `pred` holds below `lo`; `probe` is the next place tested.
+    while probe < list.len() && pred(list[probe]) {
+        lo = probe + 1;
+        probe += step;
+        step *= 2;
+    }
+    let end = probe.min(list.len()).max(lo);
+    lo + list[lo..end].partition_point(|&i| pred(i))
+}
+
+/// The buckets of the open units (unit `2b + 1` is bucket `b`): the stored segments with an
+/// endpoint strictly inside, flat (`items[starts[b]..starts[b + 1]]`).
+fn buckets(xs: &[f64], spans: &[(usize, usize)], segs: &[Segment2]) -> (Vec<u32>, Vec<u32>) {
+    // From the whole units `[ua, ub)`: `a` is strictly inside unit `ua - 1` unless it is
+    // the boundary `xs[ua / 2]`; `b` strictly inside unit `ub` unless it is the boundary
+    // `xs[(ub - 1) / 2]`.
+    let partial = |j: usize| {
+        let ((ua, ub), s) = (spans[j], &segs[j]);
+        let pa = (xs[ua / 2] != s.a.x).then(|| (ua - 1) / 2);
+        let pb = (xs[(ub - 1) / 2] != s.b.x).then_some(ub / 2);
+        [pa, pb.filter(|&b| Some(b) != pa)]
+    };
+    let nb = xs.len().saturating_sub(1);
+    let mut starts = vec![0u32; nb + 1];
+    for j in 0..segs.len() {
+        for b in partial(j).into_iter().flatten() {
+            starts[b + 1] += 1;
+        }
+    }
+    for b in 0..nb {
+        starts[b + 1] += starts[b];
+    }
+    let mut cursor = starts.clone();
+    let mut items = vec![0u32; starts[nb] as usize];
+    for j in 0..segs.len() {
+        for b in partial(j).into_iter().flatten() {
+            items[cursor[b] as usize] = j as u32;
+            cursor[b] += 1;
+        }
+    }
+    (starts, items)
+}
+
+/// Sort one node's list bottom to top over its slab `[xl, xr]` (all its segments span it)
+/// and check that the order holds at both ends, so that no two cross inside.
+fn sort_list(segs: &[Segment2], ids: &[u32], (xl, xr): (f64, f64), list: &mut [u32]) -> Result<()> {
+    if list.len() < 2 {
+        return Ok(());
+    }
+    // The rounded y-values at both slab ends are computed once per entry; the exact
+    // comparison runs only where they cannot decide.
+    let mut keyed: Vec<(Approx, Approx, u32)> = list
+        .iter()
+        .map(|&i| {
+            let s = &segs[i as usize];
+            (approx_y(s, xl), approx_y(s, xr), i)
+        })
+        .collect();
+    keyed.sort_unstable_by(|a, b| {
+        let (s, t) = (&segs[a.2 as usize], &segs[b.2 as usize]);
+        filter_cmp(a.0, b.0)
+            .unwrap_or_else(|| cmp_at(s, t, xl))
+            .then_with(|| filter_cmp(a.1, b.1).unwrap_or_else(|| cmp_at(s, t, xr)))
+            .then(a.2.cmp(&b.2))
+    });
+    for (slot, e) in list.iter_mut().zip(&keyed) {
+        *slot = e.2;
+    }
+    if xl < xr {
+        for w in keyed.windows(2) {
+            let (s, t) = (&segs[w[0].2 as usize], &segs[w[1].2 as usize]);
+            let order = filter_cmp(w[0].1, w[1].1).unwrap_or_else(|| cmp_at(s, t, xr));
+            if order == Ordering::Greater {
+                let (i, j) = (ids[w[0].2 as usize], ids[w[1].2 as usize]);
+                return Err(Error::InvalidInput(format!(
+                    "segments {} and {} cross; windowing needs non-crossing segments",
+                    i.min(j),
+                    i.max(j)
+                )));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Windowing queries on non-crossing segments in general position or not; answers are
@@ -183,7 +354,8 @@ impl Stabber {
 /// ```
 #[derive(Debug, Clone)]
 pub struct SegmentWindow {
-    endpoints: LayeredRangeTree,
+    /// The endpoints (segment `i` has points `2i` and `2i + 1`).
+    endpoints: KdTree,
     /// The closed box of all segments: windows are clipped to it.
     bounds: Bbox2,
     /// For the left and right edges.
@@ -199,30 +371,38 @@ impl SegmentWindow {
     pub fn new(segments: &[Segment2]) -> Result<SegmentWindow> {
         let endpoints = super::checked_endpoints(segments)?;
         let frame = |swap: bool| {
-            let (mut segs, mut ids) = (Vec::new(), Vec::new());
-            for (i, s) in segments.iter().enumerate() {
-                let (mut a, mut b) = (s.a, s.b);
-                if swap {
-                    a = Point2::new(a.y, a.x);
-                    b = Point2::new(b.y, b.x);
-                }
-                if a.x == b.x {
-                    continue;
-                }
-                if a.x > b.x {
-                    std::mem::swap(&mut a, &mut b);
-                }
-                segs.push(Segment2::new(a, b));
-                ids.push(i as u32);
-            }
-            Stabber::new(segs, ids)
+            let segs = segments
+                .iter()
+                .map(|s| {
+                    let (mut a, mut b) = (s.a, s.b);
+                    if swap {
+                        a = Point2::new(a.y, a.x);
+                        b = Point2::new(b.y, b.x);
+                    }
+                    if a.x > b.x {
+                        std::mem::swap(&mut a, &mut b);
+                    }
+                    Segment2::new(a, b)
+                })
+                .collect();
+            Stabber::new(segs)
         };
+        // The three parts are independent: build them side by side.
+        let (tree, (by_x, by_y)) = rayon::join(
+            || KdTree::new(&endpoints),
+            || rayon::join(|| frame(false), || frame(true)),
+        );
         Ok(SegmentWindow {
             bounds: Bbox2::of_points(&endpoints),
-            endpoints: LayeredRangeTree::new(&endpoints)?,
-            by_x: frame(false)?,
-            by_y: frame(true)?,
+            endpoints: tree?,
+            by_x: by_x?,
+            by_y: by_y?,
         })
+    }
+
+    /// Approximate heap memory in bytes.
+    pub fn memory_bytes(&self) -> usize {
+        self.endpoints.memory_bytes() + self.by_x.memory_bytes() + self.by_y.memory_bytes()
     }
 
     /// The segments meeting the closed window, each once, indices ascending. An empty
