@@ -299,3 +299,80 @@ pub fn pairwise_intersections(segments: &[Segment2]) -> Result<Intersections> {
     };
     Ok(found.assemble(segments))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::Point2;
+
+    fn seg(a: (f64, f64), b: (f64, f64)) -> Segment2 {
+        Segment2::new(Point2::new(a.0, a.1), Point2::new(b.0, b.1))
+    }
+
+    #[test]
+    fn the_choice_follows_candidates_and_meetings() {
+        let mut state = 3u64;
+        let mut unit = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        // Short segments: few candidates.
+        let short: Vec<Segment2> = (0..5000)
+            .map(|_| {
+                let (x, y) = (unit(), unit());
+                seg((x, y), (x + 0.01 * unit(), y + 0.01 * unit()))
+            })
+            .collect();
+        assert!(prefer_pairwise(&short));
+        let g = Grid::new(&short);
+        assert!(g.candidates() < 20 * 5000, "{}", g.candidates());
+        // Long parallel segments with nearly the same box: n²/2 candidates, no meetings.
+        let parallel: Vec<Segment2> = (0..2500)
+            .map(|i| seg((0.0, i as f64 * 0.01), (1000.0, 1000.0 + i as f64 * 0.01)))
+            .collect();
+        assert!(Grid::new(&parallel).candidates() > 3_000_000);
+        assert!(!prefer_pairwise(&parallel));
+        // Stacked long segments whose boxes are thin: the grid separates them.
+        let stacked: Vec<Segment2> = (0..2500)
+            .map(|i| seg((0.0, i as f64 * 0.01), (1000.0, i as f64 * 0.01 + 0.5)))
+            .collect();
+        assert!(prefer_pairwise(&stacked));
+        // Long crossing segments: as many candidates, but a quarter of them meet.
+        let crossing: Vec<Segment2> = (0..2500)
+            .map(|_| seg((0.0, unit()), (1.0, unit())))
+            .collect();
+        assert!(prefer_pairwise(&crossing));
+    }
+
+    #[test]
+    fn every_overlapping_box_pair_is_scanned_once() {
+        let segs: Vec<Segment2> = (0..300)
+            .map(|i| {
+                let x = (i * 37 % 101) as f64;
+                let y = (i * 53 % 97) as f64;
+                seg((x, y), (x + (i % 7) as f64 * 3.0, y + (i % 5) as f64 * 4.0))
+            })
+            .collect();
+        let g = Grid::new(&segs);
+        let mut seen = Vec::new();
+        for k in 0..g.entries.len() {
+            g.scan_from(k, |i, j| seen.push((i, j)));
+        }
+        seen.sort_unstable();
+        let n = seen.len();
+        seen.dedup();
+        assert_eq!(n, seen.len(), "a pair was scanned twice");
+        let mut want = Vec::new();
+        for i in 0..segs.len() {
+            for j in i + 1..segs.len() {
+                let (a, b) = (&g.boxes[i], &g.boxes[j]);
+                if !(b[0] > a[1] || a[0] > b[1] || b[2] > a[3] || a[2] > b[3]) {
+                    want.push((i, j));
+                }
+            }
+        }
+        assert_eq!(seen, want);
+    }
+}
