@@ -233,10 +233,10 @@ pub fn find_intersections_with(
         IntersectAlgorithm::Pairwise => pairwise_intersections(segments),
         IntersectAlgorithm::Default => {
             sweep::check_finite(segments)?;
-            if pairwise::prefer_pairwise(segments) {
-                pairwise_intersections(segments)
-            } else {
-                sweep_intersections(segments)
+            brute_force::check_count(segments)?;
+            match pairwise::prefer_pairwise(segments) {
+                Some(grid) => Ok(pairwise::intersections_on(segments, &grid)),
+                None => sweep_intersections(segments),
             }
         }
     }

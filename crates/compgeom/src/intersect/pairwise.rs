@@ -36,7 +36,7 @@ struct Entry {
 }
 
 /// The segments bucketed by the cells their bounding boxes cover.
-struct Grid {
+pub(crate) struct Grid {
     min: [f64; 2],
     inv: [f64; 2],
     n: [usize; 2],
@@ -229,13 +229,14 @@ impl Grid {
 /// candidate pairs are at most [`super::PAIRWISE_LIMIT_PER_SEGMENT`] times `n + K`, with
 /// the number K of meeting pairs estimated from up to 64 segments spread over the input
 /// (each tested against every candidate it has).
-pub(crate) fn prefer_pairwise(segments: &[Segment2]) -> bool {
+/// Returns the grid (for [`intersections_on`]) when the pairwise method is preferred.
+pub(crate) fn prefer_pairwise(segments: &[Segment2]) -> Option<Grid> {
     let n = segments.len() as u64;
     let grid = Grid::new(segments);
     let candidates = grid.candidates();
     let limit = super::PAIRWISE_LIMIT_PER_SEGMENT as u64;
     if candidates <= limit.saturating_mul(n) {
-        return true;
+        return Some(grid);
     }
     let samples = segments.len().min(64);
     let mut hits = 0u64;
@@ -261,7 +262,7 @@ pub(crate) fn prefer_pairwise(segments: &[Segment2]) -> bool {
     }
     // Each meeting pair has two segments.
     let estimate = hits * n / (2 * samples.max(1) as u64);
-    candidates <= limit.saturating_mul(n + estimate)
+    (candidates <= limit.saturating_mul(n + estimate)).then_some(grid)
 }
 
 /// All intersection points and overlaps (the answer of [`super::find_intersections`]) by
@@ -277,7 +278,11 @@ pub(crate) fn prefer_pairwise(segments: &[Segment2]) -> bool {
 pub fn pairwise_intersections(segments: &[Segment2]) -> Result<Intersections> {
     check_finite(segments)?;
     check_count(segments)?;
-    let grid = Grid::new(segments);
+    Ok(intersections_on(segments, &Grid::new(segments)))
+}
+
+/// [`pairwise_intersections`] on finite segments (fewer than 2^31) already bucketed.
+pub(crate) fn intersections_on(segments: &[Segment2], grid: &Grid) -> Intersections {
     let scan = |k: usize, found: &mut PairResults| {
         grid.scan_from(k, |i, j| found.test(segments, i, j));
     };
@@ -297,7 +302,7 @@ pub fn pairwise_intersections(segments: &[Segment2]) -> Result<Intersections> {
             })
             .reduce(PairResults::default, PairResults::merge)
     };
-    Ok(found.assemble(segments))
+    found.assemble(segments)
 }
 
 #[cfg(test)]
@@ -325,7 +330,7 @@ mod tests {
                 seg((x, y), (x + 0.01 * unit(), y + 0.01 * unit()))
             })
             .collect();
-        assert!(prefer_pairwise(&short));
+        assert!(prefer_pairwise(&short).is_some());
         let g = Grid::new(&short);
         assert!(g.candidates() < 20 * 5000, "{}", g.candidates());
         // Long parallel segments with nearly the same box: n²/2 candidates, no meetings.
@@ -333,17 +338,17 @@ mod tests {
             .map(|i| seg((0.0, i as f64 * 0.01), (1000.0, 1000.0 + i as f64 * 0.01)))
             .collect();
         assert!(Grid::new(&parallel).candidates() > 3_000_000);
-        assert!(!prefer_pairwise(&parallel));
+        assert!(prefer_pairwise(&parallel).is_none());
         // Stacked long segments whose boxes are thin: the grid separates them.
         let stacked: Vec<Segment2> = (0..2500)
             .map(|i| seg((0.0, i as f64 * 0.01), (1000.0, i as f64 * 0.01 + 0.5)))
             .collect();
-        assert!(prefer_pairwise(&stacked));
+        assert!(prefer_pairwise(&stacked).is_some());
         // Long crossing segments: as many candidates, but a quarter of them meet.
         let crossing: Vec<Segment2> = (0..2500)
             .map(|_| seg((0.0, unit()), (1.0, unit())))
             .collect();
-        assert!(prefer_pairwise(&crossing));
+        assert!(prefer_pairwise(&crossing).is_some());
     }
 
     #[test]
