@@ -6,8 +6,9 @@
 //! * a plain O(n²) loop over all pairs with geo's `line_intersection` (a bounding-box
 //!   test first, which only skips the call).
 //!
-//! compgeom is timed twice: `find_intersections` (the default: exact pairwise tests of
-//! boxes that overlap, or the sweep when too many x-ranges overlap) and
+//! compgeom is timed twice: `find_intersections` (the default: exact tests of the pairs
+//! whose boxes overlap, found with a uniform grid, or the sweep when many pairs share
+//! grid cells without meeting) and
 //! `sweep_intersections` (the book's Bentley–Ottmann sweep). Both do more work per answer
 //! than geo (exact points rounded correctly, U/L/C lists, maximal overlaps). Answers are
 //! compared once, outside the clock, by the number of meeting pairs (compgeom's

@@ -6,11 +6,12 @@
 //! O(n² + K log K) time for K meeting pairs, O(n + K) space.
 
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
-use super::pairwise::PARALLEL_GROUPING_FROM;
 use super::small_int::{self, Hom};
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
-use crate::kernel::{segment_intersection, ExactPoint, Segment2, SegmentIntersection};
+use crate::kernel::{
+    segment_intersection, Crossing, ExactPoint, Point2, Segment2, SegmentIntersection,
+};
 use crate::{Error, Result};
 use rayon::prelude::*;
 use std::cmp::Ordering;
@@ -19,6 +20,7 @@ use std::cmp::Ordering;
 /// answer as [`super::find_intersections`], in O(n²) time.
 pub fn brute_force_intersections(segments: &[Segment2]) -> Result<Intersections> {
     check_finite(segments)?;
+    check_count(segments)?;
     let mut found = PairResults::default();
     for i in 0..segments.len() {
         for j in i + 1..segments.len() {
@@ -28,27 +30,117 @@ pub fn brute_force_intersections(segments: &[Segment2]) -> Result<Intersections>
     Ok(found.assemble(segments))
 }
 
+/// One (point, pair) record, 24 bytes, ordered for the grouping: the point as two
+/// order-preserving integer keys (y descending, then x ascending), then the pair.
+/// The point is the input point itself, or for a proper crossing its nearest `f64` point
+/// (correct rounding is monotone, so crossings whose rounded points differ are
+/// ordered as the rounded points are, and equal exact points have equal rounded points).
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Debug)]
+pub(crate) struct Record {
+    ky: u64,
+    kx: u64,
+    /// `i << 32 | crossing << 31 | j` for the pair `i < j < 2^31`.
+    pair: u64,
+}
+
+const CROSSING_BIT: u64 = 1 << 31;
+
+/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
+fn key(v: f64) -> u64 {
+    let b = (v + 0.0).to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | (1 << 63)
+    }
+}
+
+/// The inverse of [`key`].
+fn unkey(k: u64) -> f64 {
+    if k >> 63 == 1 {
+        f64::from_bits(k & !(1 << 63))
+    } else {
+        f64::from_bits(!k)
+    }
+}
+
+impl Record {
+    fn new(p: Point2, i: usize, j: usize, crossing: bool) -> Record {
+        let flag = if crossing { CROSSING_BIT } else { 0 };
+        Record {
+            ky: !key(p.y),
+            kx: key(p.x),
+            pair: ((i as u64) << 32) | flag | j as u64,
+        }
+    }
+
+    fn point(&self) -> Point2 {
+        Point2::new(unkey(self.kx), unkey(!self.ky))
+    }
+
+    fn i(&self) -> usize {
+        (self.pair >> 32) as usize
+    }
+
+    fn j(&self) -> usize {
+        (self.pair & (CROSSING_BIT - 1)) as usize
+    }
+
+    fn is_crossing(&self) -> bool {
+        self.pair & CROSSING_BIT != 0
+    }
+
+    /// The exact point.
+    fn exact(&self, segments: &[Segment2]) -> ExactPoint {
+        if self.is_crossing() {
+            ExactPoint::Crossing(Crossing {
+                s: segments[self.i()],
+                t: segments[self.j()],
+            })
+        } else {
+            ExactPoint::Input(self.point())
+        }
+    }
+}
+
+/// The most segments the pair records can name.
+pub(crate) const MAX_SEGMENTS: usize = 1 << 31;
+
+/// `Err` when there are too many segments for [`Record`].
+pub(crate) fn check_count(segments: &[Segment2]) -> Result<()> {
+    if segments.len() >= MAX_SEGMENTS {
+        return Err(Error::InvalidInput(format!(
+            "{} segments: at most {} are supported",
+            segments.len(),
+            MAX_SEGMENTS - 1
+        )));
+    }
+    Ok(())
+}
+
 /// What the pairs that meet contribute: one record per (point, pair), and the pairs that
 /// overlap.
 #[derive(Default)]
 pub(crate) struct PairResults {
-    records: Vec<(EventPoint, usize, usize)>,
+    records: Vec<Record>,
     overlapping: Vec<(usize, usize)>,
 }
+
+/// From this many records on, sorting and building the points run on the rayon pool.
+const PARALLEL_ASSEMBLY_FROM: usize = 50_000;
 
 impl PairResults {
     /// Test segments `i < j` exactly and record how they meet.
     pub(crate) fn test(&mut self, segments: &[Segment2], i: usize, j: usize) {
         match segment_intersection(segments[i], segments[j]) {
             SegmentIntersection::None => {}
-            SegmentIntersection::Endpoint(q) => self.records.push((EventPoint::input(q), i, j)),
+            SegmentIntersection::Endpoint(q) => self.records.push(Record::new(q, i, j, false)),
             SegmentIntersection::Crossing(c) => {
-                self.records
-                    .push((EventPoint::new(ExactPoint::Crossing(c)), i, j))
+                self.records.push(Record::new(c.approx(), i, j, true))
             }
             SegmentIntersection::Overlap(a, b) => {
-                self.records.push((EventPoint::input(a), i, j));
-                self.records.push((EventPoint::input(b), i, j));
+                self.records.push(Record::new(a, i, j, false));
+                self.records.push(Record::new(b, i, j, false));
                 self.overlapping.push((i, j));
             }
         }
@@ -56,6 +148,9 @@ impl PairResults {
 
     /// Both sets of results.
     pub(crate) fn merge(mut self, mut other: PairResults) -> PairResults {
+        if self.records.len() < other.records.len() {
+            std::mem::swap(&mut self, &mut other);
+        }
         self.records.append(&mut other.records);
         self.overlapping.append(&mut other.overlapping);
         self
@@ -63,37 +158,43 @@ impl PairResults {
 
     /// Group equal points (exactly), split their segments into U/L/C, and build the
     /// maximal overlap pieces.
-    pub(crate) fn assemble(self, segments: &[Segment2]) -> Intersections {
+    pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
         let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
-        let records = &self.records;
-        // Sort a permutation, not the (large) records themselves.
-        let mut order: Vec<usize> = (0..records.len()).collect();
-        // Small-integer homogeneous coordinates, computed once per record: equal points
-        // are common (grids) and each comparison would otherwise recompute them.
-        let homs: Vec<Option<Hom>> = records.iter().map(|r| small_int::hom(&r.0.exact)).collect();
-        let same_point = |a: usize, b: usize| match (homs[a], homs[b]) {
-            (Some(p), Some(q)) => small_int::sweep_cmp(p, q),
-            _ => records[a].0.cmp(&records[b].0),
-        };
-        let by_point = |a: &usize, b: &usize| {
-            same_point(*a, *b)
-                .then((records[*a].1, records[*a].2).cmp(&(records[*b].1, records[*b].2)))
-        };
-        // (rayon's parallel sort measured slower than this one on 2 cores.)
-        order.sort_unstable_by(by_point);
-        let parallel = records.len() >= PARALLEL_GROUPING_FROM;
-        // Runs of equal points, then one intersection point per run.
-        let mut starts = Vec::new();
-        for k in 0..order.len() {
-            if k == 0 || same_point(order[k], order[k - 1]) != Ordering::Equal {
-                starts.push(k);
-            }
+        let parallel = self.records.len() >= PARALLEL_ASSEMBLY_FROM;
+        let records = &mut self.records;
+        if parallel {
+            records.par_sort_unstable();
+        } else {
+            records.sort_unstable();
         }
-        starts.push(order.len());
-        let point = |w: &[usize]| {
-            let group: Vec<_> = order[w[0]..w[1]].iter().map(|&r| records[r]).collect();
-            point_of(&segs, &group)
-        };
+        // Sorted by rounded points, which is the exact sweep order except within a run
+        // of equal rounded y that holds a crossing: there the exact y may differ. Such
+        // runs are re-sorted exactly; elsewhere equal keys mean equal points.
+        let mut starts = Vec::new();
+        let mut k = 0;
+        while k < records.len() {
+            let ky = records[k].ky;
+            let mut end = k + 1;
+            while end < records.len() && records[end].ky == ky {
+                end += 1;
+            }
+            let run = &mut records[k..end];
+            if run.len() >= 2 && run.iter().any(Record::is_crossing) {
+                for g in exact_groups(segments, run) {
+                    starts.push(k + g);
+                }
+            } else {
+                for m in k..end {
+                    if m == k || records[m].kx != records[m - 1].kx {
+                        starts.push(m);
+                    }
+                }
+            }
+            k = end;
+        }
+        starts.push(records.len());
+        let records = &self.records;
+        let point = |w: &[usize]| point_of(segments, &segs, &records[w[0]..w[1]]);
         let points: Vec<IntersectionPoint> = if parallel {
             starts.par_windows(2).map(point).collect()
         } else {
@@ -109,21 +210,62 @@ impl PairResults {
     }
 }
 
-/// One intersection point from the records of the pairs that meet there.
-fn point_of(segs: &[Oriented], group: &[(EventPoint, usize, usize)]) -> IntersectionPoint {
-    // Prefer the input-point representation when the point is an endpoint.
-    let at = group
+/// Sort `run` exactly (sweep order, then pair) and return where its groups of equal
+/// points start.
+fn exact_groups(segments: &[Segment2], run: &mut [Record]) -> Vec<usize> {
+    let mut keyed: Vec<(EventPoint, Option<Hom>, Record)> = run
         .iter()
-        .map(|r| r.0)
-        .find(|e| e.as_input().is_some())
-        .unwrap_or(group[0].0);
-    let mut all: Vec<usize> = group.iter().flat_map(|r| [r.1, r.2]).collect();
+        .map(|r| {
+            let e = r.exact(segments);
+            (EventPoint::new(e), small_int::hom(&e), *r)
+        })
+        .collect();
+    let same_point = |a: &(EventPoint, Option<Hom>, Record),
+                      b: &(EventPoint, Option<Hom>, Record)| {
+        match (a.1, b.1) {
+            (Some(p), Some(q)) => small_int::sweep_cmp(p, q),
+            _ => a.0.cmp(&b.0),
+        }
+    };
+    keyed.sort_unstable_by(|a, b| same_point(a, b).then(a.2.pair.cmp(&b.2.pair)));
+    let mut starts = Vec::new();
+    for (m, r) in keyed.iter().enumerate() {
+        run[m] = r.2;
+        if m == 0 || same_point(&keyed[m - 1], r) != Ordering::Equal {
+            starts.push(m);
+        }
+    }
+    starts
+}
+
+/// One intersection point from the records of the pairs that meet there.
+fn point_of(segments: &[Segment2], segs: &[Oriented], group: &[Record]) -> IntersectionPoint {
+    let first = group[0];
+    if group.len() == 1 && first.is_crossing() {
+        // The common case: two segments crossing properly.
+        let pair = vec![first.i(), first.j()];
+        return IntersectionPoint {
+            point: first.point(),
+            exact: first.exact(segments),
+            interior: pair.clone(),
+            segments: pair,
+            upper: Vec::new(),
+            lower: Vec::new(),
+        };
+    }
+    // Prefer the input-point representation when the point is an endpoint.
+    let at = group.iter().find(|r| !r.is_crossing()).copied();
+    let exact = at.unwrap_or(first).exact(segments);
+    let mut all: Vec<usize> = group.iter().flat_map(|r| [r.i(), r.j()]).collect();
     all.sort_unstable();
     all.dedup();
     let (mut upper, mut lower, mut interior) = (Vec::new(), Vec::new(), Vec::new());
     for &s in &all {
-        let (is_upper, is_lower) = match at.as_input() {
-            Some(q) => (segs[s].upper == q, segs[s].lower == q),
+        let (is_upper, is_lower) = match at {
+            Some(r) => {
+                let q = r.point();
+                (segs[s].upper == q, segs[s].lower == q)
+            }
             None => (false, false),
         };
         if is_upper {
@@ -137,8 +279,8 @@ fn point_of(segs: &[Oriented], group: &[(EventPoint, usize, usize)]) -> Intersec
         }
     }
     IntersectionPoint {
-        point: at.approx(),
-        exact: at.exact,
+        point: first.point(),
+        exact,
         segments: all,
         upper,
         lower,

@@ -7,7 +7,8 @@
 //! the output (only crossings of segments adjacent on the sweep line stay queued).
 //! [`find_intersections`], the default, gives the same answer by the fastest exact method
 //! for the input: the sweep, or [`pairwise_intersections`] (exact tests of the pairs with
-//! overlapping bounding boxes) when few pairs share x-ranges ([`IntersectAlgorithm`]).
+//! overlapping bounding boxes, found with a uniform grid) unless many pairs share grid
+//! cells without meeting ([`IntersectAlgorithm`]).
 //!
 //! ## Sweep order
 //!
@@ -193,23 +194,24 @@ impl Sink for Collect {
 /// Which method [`find_intersections_with`] uses. All give the same answer, exactly.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum IntersectAlgorithm {
-    /// Choose by counting the pairs of segments whose x-ranges overlap (O(n log n)):
-    /// [`Pairwise`](IntersectAlgorithm::Pairwise) when there are at most
-    /// [`PAIRWISE_LIMIT_PER_SEGMENT`] per segment, else the sweep.
+    /// Choose from the number m of candidate pairs (pairs of segments sharing a cell of
+    /// a uniform grid, counted in O(n)) and an estimate of the number K of meeting pairs
+    /// (from a sample of segments): [`Pairwise`](IntersectAlgorithm::Pairwise) when
+    /// m is at most [`PAIRWISE_LIMIT_PER_SEGMENT`] times `n + K`, else the sweep.
     #[default]
     Default,
     /// The book's plane sweep (FINDINTERSECTIONS): O((n + I) log n), output-sensitive.
     Sweep,
-    /// Exact tests of the pairs with overlapping bounding boxes, found by sorting:
-    /// O(n log n + m + K log K) for m pairs with overlapping x-ranges.
+    /// Exact tests of the pairs with overlapping bounding boxes, found with a uniform
+    /// grid: O(n + m + K log K) for m candidate pairs and K meeting pairs.
     Pairwise,
 }
 
-/// [`IntersectAlgorithm::Default`] uses the pairwise method while the number of pairs with
-/// overlapping x-ranges is at most this many per segment. A box test costs about a
+/// [`IntersectAlgorithm::Default`] uses the pairwise method while the number of candidate
+/// pairs is at most this many per segment or meeting pair. A candidate test costs about a
 /// thousandth of a sweep event (measured with `compgeom-bench intersect`), so below this
 /// the pairwise scan is the faster exact method; above it the sweep's output sensitivity
-/// wins (many long segments that share x-ranges but do not meet).
+/// wins (many long segments that share cells but do not meet).
 pub const PAIRWISE_LIMIT_PER_SEGMENT: usize = 1000;
 
 /// All intersection points and overlaps of the closed segments (see the
@@ -231,11 +233,10 @@ pub fn find_intersections_with(
         IntersectAlgorithm::Pairwise => pairwise_intersections(segments),
         IntersectAlgorithm::Default => {
             sweep::check_finite(segments)?;
-            let limit = segments.len().saturating_mul(PAIRWISE_LIMIT_PER_SEGMENT);
-            if pairwise::x_overlapping_pairs(segments, limit).is_some() {
-                pairwise_intersections(segments)
-            } else {
-                sweep_intersections(segments)
+            brute_force::check_count(segments)?;
+            match pairwise::prefer_pairwise(segments) {
+                Some(grid) => Ok(pairwise::intersections_on(segments, &grid)),
+                None => sweep_intersections(segments),
             }
         }
     }

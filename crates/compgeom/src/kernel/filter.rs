@@ -153,7 +153,7 @@ mod tests {
 
     #[test]
     fn double_double_decides_what_f64_cannot() {
-        // fl(1/3)·3 - 1 = -2^-54: the fused multiply-add keeps the product exact.
+        // fl(1/3)·3 - 1 = -2^-54: the two-product keeps the product exact.
         let third = DoubleDouble::val(1.0 / 3.0);
         let d = third
             .times(&DoubleDouble::val(3.0))
@@ -166,6 +166,25 @@ mod tests {
         assert_eq!(DoubleDouble::diff(2.0, 2.0).sign(), Some(Ordering::Equal));
         let big = DoubleDouble::val(1e300).times(&DoubleDouble::val(1e300));
         assert_eq!(big.sign(), None); // overflow
+                                      // The two-product is exact.
+        let cases = [
+            (0.1, 0.3),
+            (1.0 / 3.0, 3.0),
+            (1e150, 7e-151),
+            (-2.5e-7, 9.75e13),
+            (1e-320, 1e300),
+            (0.0, 5.0),
+            (1e200, 1e200),
+        ];
+        for (a, b) in cases {
+            let p = a * b;
+            assert_eq!(product_error(a, b, p), a.mul_add(b, -p), "{a} * {b}");
+        }
+        // times_f64 agrees with times by an exact f64.
+        let x = DoubleDouble::diff(0.1, -(2f64.powi(-70)));
+        let (a, b) = (x.times_f64(3.0), x.times(&DoubleDouble::val(3.0)));
+        assert_eq!((a.hi, a.lo), (b.hi, b.lo));
+        assert!(a.e <= b.e);
     }
 }
 
@@ -177,7 +196,7 @@ mod tests {
 /// Error terms, with `u = 2^-53` and `eta` as for [`Bounded`]: differences of inputs
 /// are exact (two-sum); a sum adds at most `3u·(|x.lo| + |y.lo| + |t1|)` where `t1` is
 /// the exact error of `x.hi + y.hi`; a product (its `hi·hi` part is exact through a
-/// fused multiply-add, up to underflow) adds at most
+/// two-product, up to underflow) adds at most
 /// `4u·(|x.hi·y.lo| + |x.lo·y.hi| + |p_err|) + |x.lo·y.lo|` besides the propagated
 /// `|x|·e_y + |y|·e_x + e_x·e_y`. Each step adds `eta` for underflow, and the final test
 /// applies the same `1 + 2^-40` safety factor.
@@ -186,6 +205,41 @@ pub(crate) struct DoubleDouble {
     hi: f64,
     lo: f64,
     e: f64,
+}
+
+/// Veltkamp's splitting constant `2^27 + 1`.
+const SPLITTER: f64 = 134_217_729.0;
+
+/// `a = hi + lo` with both halves of at most 26 significant bits (for `|a|` well
+/// inside the normal range).
+#[inline]
+fn split(a: f64) -> (f64, f64) {
+    let c = SPLITTER * a;
+    let hi = c - (c - a);
+    (hi, a - hi)
+}
+
+/// Magnitudes between these keep every step of [`product_error`] free of underflow and
+/// overflow (then Dekker's two-product is exact).
+const TWO_PRODUCT_RANGE: (f64, f64) = (1e-250, 1e250);
+
+/// The rounding error `a·b - p` of `p = fl(a·b)`, exactly: Dekker's two-product in plain
+/// arithmetic when `|a|`, `|b|` and `|p|` lie in [`TWO_PRODUCT_RANGE`] (the common case;
+/// `f64::mul_add` is a library call on targets built without FMA, several times
+/// slower), else the fused multiply-add.
+#[inline]
+fn product_error(a: f64, b: f64, p: f64) -> f64 {
+    let (lo, hi) = TWO_PRODUCT_RANGE;
+    let fits = |v: f64| v.abs() > lo && v.abs() < hi;
+    if fits(a) && fits(b) && fits(p) {
+        let (ah, al) = split(a);
+        let (bh, bl) = split(b);
+        ((ah * bh - p) + ah * bl + al * bh) + al * bl
+    } else if a == 0.0 || b == 0.0 {
+        0.0
+    } else {
+        a.mul_add(b, -p)
+    }
 }
 
 /// `a + b = s + err` exactly (no overflow).
@@ -199,6 +253,31 @@ impl DoubleDouble {
     /// The leading `f64` of the value.
     pub(crate) fn head(&self) -> f64 {
         self.hi
+    }
+
+    /// A lower and an upper bound on the magnitude of the exact value (the lower bound
+    /// may be negative: no information).
+    pub(crate) fn magnitude_bounds(&self) -> (f64, f64) {
+        // Each bound is one or two roundings from the real expression; the factors
+        // `1 ± 2^-48` cover them with a wide margin.
+        const WIDE: f64 = 1.0 / 281_474_976_710_656.0; // 2^-48
+        let off = (self.lo.abs() + self.e * SAFETY) * (1.0 + WIDE);
+        let low = (self.hi.abs() - off) * (1.0 - WIDE);
+        let high = (self.hi.abs() + off) * (1.0 + WIDE);
+        (low, high)
+    }
+
+    /// `self · k` for an `f64` `k`: [`Arith::times`] with `DoubleDouble::val(k)`, the
+    /// terms that vanish for an exact `f64` factor (`lo = e = 0`) left out, so the same
+    /// error bound holds.
+    pub(crate) fn times_f64(&self, k: f64) -> DoubleDouble {
+        let p = self.hi * k;
+        let p_err = product_error(self.hi, k, p);
+        let b = self.lo * k;
+        let c = b + p_err;
+        let (hi, lo) = two_sum(p, c);
+        let e = k.abs() * self.e + 4.0 * U * (b.abs() + p_err.abs()) + ETA;
+        DoubleDouble { hi, lo, e }
     }
 }
 
@@ -234,7 +313,7 @@ impl Arith for DoubleDouble {
 
     fn times(&self, o: &Self) -> Self {
         let p = self.hi * o.hi;
-        let p_err = self.hi.mul_add(o.hi, -p);
+        let p_err = product_error(self.hi, o.hi, p);
         let (a, b) = (self.hi * o.lo, self.lo * o.hi);
         let c = (a + b) + p_err;
         let (hi, lo) = two_sum(p, c);

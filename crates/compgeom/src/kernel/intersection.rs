@@ -42,6 +42,62 @@ fn contains(s: Segment2, p: Point2) -> bool {
         && orient2d(s.a, s.b, p) == Orientation::Collinear
 }
 
+/// Shewchuk's `ccwerrboundA`, `(3 + 16ε)ε` with `ε = 2^-53`: a plain `f64` orientation
+/// whose magnitude exceeds this times `|l| + |r|` has the exact sign (absent underflow).
+const CCW_ERRBOUND_A: f64 = 3.330_669_073_875_472e-16;
+
+/// Below this, `|l| + |r|` is too small for the relative bound: no decision.
+const FILTER_FLOOR: f64 = 1e-290;
+
+/// The sign of the orientation of `(a, b, c)` (`1` counter-clockwise, `-1` clockwise) when
+/// plain `f64` arithmetic decides it, else `0` (collinear or too close to tell).
+#[inline]
+fn orient_filtered(a: Point2, b: Point2, c: Point2) -> i8 {
+    let l = (b.x - a.x) * (c.y - a.y);
+    let r = (b.y - a.y) * (c.x - a.x);
+    let det = l - r;
+    let mag = l.abs() + r.abs();
+    // NaN or infinite values fail every comparison: undecided.
+    if !(FILTER_FLOOR..f64::MAX).contains(&mag) {
+        return 0;
+    }
+    // The absolute term covers the underflow of the smaller product.
+    let bound = CCW_ERRBOUND_A * mag + 1e-300;
+    if det > bound {
+        1
+    } else if -det > bound {
+        -1
+    } else {
+        0
+    }
+}
+
+/// The answer of [`segment_intersection`] when four filtered orientations decide it
+/// (no common point, or a proper crossing), `None` when some orientation is zero or
+/// too close to zero to tell (the exact code then decides).
+#[inline]
+fn straddle_filter(s: Segment2, t: Segment2) -> Option<SegmentIntersection> {
+    let o1 = orient_filtered(s.a, s.b, t.a);
+    let o2 = orient_filtered(s.a, s.b, t.b);
+    if o1 == 0 || o2 == 0 {
+        return None;
+    }
+    if o1 == o2 {
+        return Some(SegmentIntersection::None);
+    }
+    let o3 = orient_filtered(t.a, t.b, s.a);
+    let o4 = orient_filtered(t.a, t.b, s.b);
+    if o3 == 0 || o4 == 0 {
+        return None;
+    }
+    if o3 == o4 {
+        return Some(SegmentIntersection::None);
+    }
+    // Each segment's ends lie strictly on both sides of the other's line: the lines are
+    // not parallel and meet in one point interior to both segments.
+    Some(SegmentIntersection::Crossing(Crossing { s, t }))
+}
+
 /// The exact intersection of the closed segments `s` and `t`.
 ///
 /// Coordinates must be finite (non-finite input gives an unspecified answer, no panic).
@@ -58,6 +114,11 @@ fn contains(s: Segment2, p: Point2) -> bool {
 /// ```
 pub fn segment_intersection(s: Segment2, t: Segment2) -> SegmentIntersection {
     use SegmentIntersection as I;
+    // The common case, decided by four filtered orientations: both ends of one segment
+    // strictly on one side of the other's line, or a proper crossing.
+    if let Some(found) = straddle_filter(s, t) {
+        return found;
+    }
     match (s.is_degenerate(), t.is_degenerate()) {
         (true, true) => {
             return if s.a == t.a {
