@@ -16,9 +16,10 @@
 //! Builders: [`Dcel::from_segments`] (the arrangement of arbitrary segments, split at
 //! crossings and with overlaps merged, via [`crate::intersect::find_intersections`]) and
 //! [`Dcel::from_polygons`] (faces labelled with the polygons containing them). Cost:
-//! O((n + k) log n) for the sweep and the angular sorts, plus O(h · (n + k)) to link the h
-//! components that do not touch any other to the faces containing them (a ray shot to
-//! the left of each component's leftmost vertex, tested against every edge).
+//! O((n + k) log n) for the sweep and the angular sorts; the components that do not touch
+//! any other are linked to the faces containing them by one more sweep (the half-edge
+//! just left of each component's leftmost vertex, read from the sweep status), O(V log V
+//! + V·s) for a status of at most s edges.
 //!
 //! [`Dcel::validate`] checks every invariant; [`Dcel::face_polygon`] exports a face.
 //!
@@ -35,6 +36,7 @@
 //! ```
 mod build;
 mod export;
+mod holes;
 mod validate;
 
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};

@@ -20,15 +20,15 @@
 //!    `next(e)` is the one just clockwise of `twin(e)` (records are rebuilt rather than
 //!    patched; the order is decided exactly from input-segment directions).
 //! 3. *Cycles and G*: a cycle is an outer boundary iff it turns left at its leftmost
-//!    vertex; each other cycle is linked to the face of the half-edge hit by a ray to the
-//!    left of its leftmost vertex (an exact ray-shooting query; see [`crate::dcel`]).
+//!    vertex; each other cycle is linked to the face of the half-edge immediately left of
+//!    its leftmost vertex, read from the status of a sweep (see [`crate::dcel`]).
 //! 4. *Labels*: instead of locating each face, labels spread from the unbounded face
 //!    across edges: crossing a piece of an S1 edge into the face on its left enters the
 //!    S1 face left of that edge; crossing a piece of an S2-only edge keeps the S1 label.
 //!    This is exact and linear.
 //!
-//! Cost: O((n + k) log n) for n edges and k intersection points, plus the ray shots
-//! (O(n + k) each, one per connected component that is not the outermost).
+//! Cost: O((n + k) log n) for n edges and k intersection points, plus the hole-linking
+//! sweep (see [`crate::dcel`]).
 //!
 //! [`boolean`] builds the arrangement of the rings of both polygon sets once, labels
 //! each face with its winding numbers with respect to A and B (crossing a ring edge from
