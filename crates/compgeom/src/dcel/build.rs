@@ -388,6 +388,11 @@ fn link<E>(
             data: (),
         })
         .collect();
+    let approx: Vec<super::holes::Rounded> = points
+        .iter()
+        .zip(&vertices)
+        .map(|(p, v)| super::holes::Rounded::of(p, v.approx))
+        .collect();
     // Cycles.
     let m = half_edges.len();
     let mut cycle_of = vec![usize::MAX; m];
@@ -415,7 +420,9 @@ fn link<E>(
         let cur = lowest[c];
         let better = cur == usize::MAX || {
             let (a, b) = (half_edges[h].origin.0, half_edges[cur].origin.0);
-            a != b && points[a].compare_xy(&points[b]) == Ordering::Less
+            a != b
+                && super::holes::compare_xy_filtered(&points[a], &approx[a], &points[b], &approx[b])
+                    == Ordering::Less
         };
         if better {
             lowest[c] = h;
@@ -458,8 +465,15 @@ fn link<E>(
                 query[half_edges[lowest[c]].origin.0] = true;
             }
         }
-        let left =
-            super::holes::faces_left_of(&points, &half_edges, carriers, out_start, out, &query);
+        let left = super::holes::faces_left_of(
+            &points,
+            &approx,
+            &half_edges,
+            carriers,
+            out_start,
+            out,
+            &query,
+        );
         (0..cycles.len())
             .map(|c| {
                 if is_outer[c] {

@@ -27,6 +27,7 @@ use std::cmp::Ordering;
 /// are `v`'s outgoing half-edges in counter-clockwise order from direction +x.
 pub(super) fn faces_left_of<E>(
     points: &[ExactPoint],
+    approx: &[Rounded],
     half_edges: &[HalfEdge<E>],
     carriers: &[Carrier],
     out_start: &[usize],
@@ -34,21 +35,10 @@ pub(super) fn faces_left_of<E>(
     query: &[bool],
 ) -> Vec<Option<usize>> {
     let n = points.len();
-    let approx: Vec<Point2> = points.iter().map(ExactPoint::approx).collect();
-    let cmp_y = |a: usize, b: usize| {
-        if approx[a].y != approx[b].y {
-            approx[a].y.total_cmp(&approx[b].y)
-        } else {
-            points[a].compare_y(&points[b])
-        }
-    };
-    let cmp_x = |a: usize, b: usize| {
-        if approx[a].x != approx[b].x {
-            approx[a].x.total_cmp(&approx[b].x)
-        } else {
-            points[a].compare_x(&points[b])
-        }
-    };
+    let cmp_y =
+        |a: usize, b: usize| compare_y_filtered(&points[a], &approx[a], &points[b], &approx[b]);
+    let cmp_x =
+        |a: usize, b: usize| compare_x_filtered(&points[a], &approx[a], &points[b], &approx[b]);
     // Sweep order: higher y first, then smaller x.
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| cmp_y(b, a).then_with(|| cmp_x(a, b)));
@@ -67,12 +57,10 @@ pub(super) fn faces_left_of<E>(
     };
     // True when vertex `q` lies east of (left of, going down) the edge `(up, low)`.
     let east = |q: usize, e: &(usize, Point2, Point2)| {
-        orient_exact(&ExactPoint::Input(e.1), &ExactPoint::Input(e.2), &points[q])
-            == Orientation::CounterClockwise
+        side(&points[q], approx[q].p, e.1, e.2) == Orientation::CounterClockwise
     };
     let west = |q: usize, e: &(usize, Point2, Point2)| {
-        orient_exact(&ExactPoint::Input(e.1), &ExactPoint::Input(e.2), &points[q])
-            == Orientation::Clockwise
+        side(&points[q], approx[q].p, e.1, e.2) == Orientation::Clockwise
     };
     let mut answer = vec![None; n];
     // Status entries: (half-edge running down, its carrier's upper and lower ends).
@@ -119,4 +107,98 @@ pub(super) fn faces_left_of<E>(
         prev = Some(v);
     }
     answer
+}
+
+/// A vertex's rounded point, and which of its coordinates are known to be exact (all of
+/// an input point's; x of a crossing with a vertical segment, y of one with a horizontal
+/// segment): where both rounded coordinates are equal and exact, the points are equal
+/// on that axis with no exact arithmetic (grid and axis-parallel data).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Rounded {
+    p: Point2,
+    x_exact: bool,
+    y_exact: bool,
+}
+
+impl Rounded {
+    /// The rounded point of `e` (`approx` is its nearest `f64` point).
+    pub(crate) fn of(e: &ExactPoint, approx: Point2) -> Rounded {
+        match e {
+            ExactPoint::Input(_) => Rounded {
+                p: approx,
+                x_exact: true,
+                y_exact: true,
+            },
+            ExactPoint::Crossing(c) => Rounded {
+                p: approx,
+                x_exact: c.s.a.x == c.s.b.x || c.t.a.x == c.t.b.x,
+                y_exact: c.s.a.y == c.s.b.y || c.t.a.y == c.t.b.y,
+            },
+        }
+    }
+}
+
+/// Exact comparison of x coordinates, decided by the rounded points where they differ
+/// (rounding to nearest is monotone) or are both exact.
+pub(super) fn compare_x_filtered(
+    a: &ExactPoint,
+    ra: &Rounded,
+    b: &ExactPoint,
+    rb: &Rounded,
+) -> Ordering {
+    if ra.p.x != rb.p.x || (ra.x_exact && rb.x_exact) {
+        ra.p.x.total_cmp(&rb.p.x)
+    } else {
+        a.compare_x(b)
+    }
+}
+
+/// As [`compare_x_filtered`] for y.
+pub(super) fn compare_y_filtered(
+    a: &ExactPoint,
+    ra: &Rounded,
+    b: &ExactPoint,
+    rb: &Rounded,
+) -> Ordering {
+    if ra.p.y != rb.p.y || (ra.y_exact && rb.y_exact) {
+        ra.p.y.total_cmp(&rb.p.y)
+    } else {
+        a.compare_y(b)
+    }
+}
+
+/// Exact lexicographic (x, then y) comparison, filtered as [`compare_x_filtered`].
+pub(crate) fn compare_xy_filtered(
+    a: &ExactPoint,
+    ra: &Rounded,
+    b: &ExactPoint,
+    rb: &Rounded,
+) -> Ordering {
+    compare_x_filtered(a, ra, b, rb).then_with(|| compare_y_filtered(a, ra, b, rb))
+}
+
+/// Orientation of `(u, l, q)`, exactly: first in `f64` from `q`'s rounded point `pq`
+/// with an error bound covering both the arithmetic and the rounding of a constructed
+/// `q` (at most half an ulp per coordinate), then, when that cannot decide, by
+/// [`orient_exact`].
+fn side(q: &ExactPoint, pq: Point2, u: Point2, l: Point2) -> Orientation {
+    let (dx, dy) = (l.x - u.x, l.y - u.y);
+    let (qx, qy) = (pq.x - u.x, pq.y - u.y);
+    let (left, right) = (dx * qy, dy * qx);
+    let det = left - right;
+    // Arithmetic: the bound of the classic orientation filter, generously rounded up.
+    let mut err = 4.0e-16 * (left.abs() + right.abs());
+    if let ExactPoint::Crossing(_) = q {
+        // |q - pq| <= 2^-53 |pq| per coordinate; |dx|, |dy| carry relative error 2^-53.
+        err += 1.2e-16 * (dx.abs() + dy.abs()) * (pq.x.abs() + pq.y.abs()) * 1.01;
+    }
+    if det.abs() > err && det.abs() > 1e-280 && err.is_finite() {
+        if det > 0.0 {
+            Orientation::CounterClockwise
+        } else {
+            Orientation::Clockwise
+        }
+    } else {
+        orient_exact(&ExactPoint::Input(u), &ExactPoint::Input(l), q)
+    }
 }

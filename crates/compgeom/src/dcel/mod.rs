@@ -41,6 +41,7 @@ mod validate;
 
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
 pub use export::exact_coords;
+pub(crate) use holes::{compare_xy_filtered, Rounded};
 
 use crate::kernel::{ExactPoint, Point2};
 
