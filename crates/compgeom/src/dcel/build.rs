@@ -259,7 +259,7 @@ impl<E> Dcel<(), E, ()> {
         link(
             arr.vertices.clone(),
             half_edges,
-            &carriers,
+            carriers,
             &out_start,
             &mut out,
             resolve_holes,
@@ -355,7 +355,7 @@ pub fn polygon_segments(polygons: &MultiPolygon) -> Result<(Vec<Segment2>, Vec<u
 fn link<E>(
     points: Vec<ExactPoint>,
     mut half_edges: Vec<HalfEdge<E>>,
-    carriers: &[Carrier],
+    carriers: Vec<Carrier>,
     out_start: &[usize],
     out: &mut [usize],
     resolve_holes: bool,
@@ -469,7 +469,7 @@ fn link<E>(
             &points,
             &approx,
             &half_edges,
-            carriers,
+            &carriers,
             out_start,
             out,
             &query,
@@ -514,10 +514,36 @@ fn link<E>(
         vertices,
         half_edges,
         faces,
+        carriers,
     }
 }
 
 impl<V, E, F> Dcel<V, E, F> {
+    /// The same subdivision with new half-edge data, `data[h]` for half-edge `h`
+    /// (`data.len()` must be the number of half-edges).
+    pub(crate) fn map_edge_data<G>(self, data: Vec<G>) -> Dcel<V, G, F> {
+        debug_assert_eq!(data.len(), self.half_edges.len());
+        let half_edges = self
+            .half_edges
+            .into_iter()
+            .zip(data)
+            .map(|(h, d)| HalfEdge {
+                origin: h.origin,
+                twin: h.twin,
+                next: h.next,
+                prev: h.prev,
+                face: h.face,
+                data: d,
+            })
+            .collect();
+        Dcel {
+            vertices: self.vertices,
+            half_edges,
+            faces: self.faces,
+            carriers: self.carriers,
+        }
+    }
+
     /// Replace the face data by labels propagated from the unbounded face (labelled
     /// `outside`) across edges: the face left of half-edge `h` gets `cross(label of the
     /// face right of h, data of h)`. Every face is reached (each component's outer
@@ -549,6 +575,7 @@ impl<V, E, F> Dcel<V, E, F> {
             vertices,
             half_edges,
             faces,
+            carriers,
         } = self;
         let faces = faces
             .into_iter()
@@ -563,6 +590,7 @@ impl<V, E, F> Dcel<V, E, F> {
             vertices,
             half_edges,
             faces,
+            carriers,
         }
     }
 }

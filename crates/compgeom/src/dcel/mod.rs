@@ -116,6 +116,9 @@ pub struct Dcel<V = (), E = (), F = ()> {
     pub(crate) vertices: Vec<Vertex<V>>,
     pub(crate) half_edges: Vec<HalfEdge<E>>,
     pub(crate) faces: Vec<Face<F>>,
+    /// The input segment under each half-edge and whether it runs the segment's way
+    /// (what makes a result composable: see [`crate::overlay::overlay`]).
+    pub(crate) carriers: Vec<Carrier>,
 }
 
 impl<V, E, F> Dcel<V, E, F> {
@@ -158,6 +161,11 @@ impl<V, E, F> Dcel<V, E, F> {
     /// All face handles, the unbounded face first.
     pub fn face_ids(&self) -> impl Iterator<Item = FaceId> {
         (0..self.faces.len()).map(FaceId)
+    }
+    /// The input segment carrying half-edge `h` and whether `h` runs the segment's way:
+    /// its exact direction, also for a piece between constructed points.
+    pub fn carrier(&self, h: HalfEdgeId) -> Carrier {
+        self.carriers[h.0]
     }
     /// The twin of `h`.
     pub fn twin(&self, h: HalfEdgeId) -> HalfEdgeId {
