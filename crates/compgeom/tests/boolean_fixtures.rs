@@ -769,3 +769,99 @@ fn jts_and_geos_xml_overlay_suites() {
         failures.len()
     );
 }
+
+/// Turf's intersect / difference / union fixtures: the output is valid and its symmetric
+/// difference with turf's expected result has area ≈ 0 (the [`compare`] tolerance).
+/// Features that are not polygons (the linestring and multipoint cases) contribute no
+/// area, so those cases expect an empty result; a union case without an expected file
+/// is not run.
+#[test]
+fn turf_suite() {
+    let Some(dir) = existing_cases_dir() else {
+        return;
+    };
+    let dir = dir.join("turf");
+    let mut run = 0;
+    let mut failures = Vec::new();
+    let mut invalid: Vec<String> = Vec::new();
+    for op in ["intersect", "difference", "union"] {
+        let mut names: Vec<PathBuf> = std::fs::read_dir(dir.join(op).join("in"))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .collect();
+        names.sort();
+        for input in names {
+            let out = dir.join(op).join("out").join(input.file_name().unwrap());
+            if !out.exists() {
+                continue;
+            }
+            let feats: Vec<MultiPolygon> = read(&input)["features"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(geometry)
+                .collect();
+            let want_v = read(&out);
+            let (got, want) = match op {
+                "union" => (
+                    compgeom::overlay::union_all(&MultiPolygon(
+                        feats.iter().flat_map(|m| m.0.clone()).collect(),
+                    )),
+                    geometry(&want_v),
+                ),
+                _ => {
+                    let outs = want_v["features"].as_array().unwrap();
+                    let want = if outs.len() > feats.len() {
+                        geometry(&outs[outs.len() - 1])
+                    } else {
+                        MultiPolygon::default()
+                    };
+                    let bop = if op == "intersect" {
+                        BooleanOp::Intersection
+                    } else {
+                        BooleanOp::Difference
+                    };
+                    let mut acc: compgeom::Result<MultiPolygon> = Ok(feats[0].clone());
+                    for f in &feats[1..] {
+                        acc = acc.and_then(|a| boolean_with(&a, f, bop, &POSITIVE));
+                    }
+                    (acc, want)
+                }
+            };
+            run += 1;
+            let name = format!("{op}/{}", input.file_name().unwrap().to_string_lossy());
+            match got {
+                Ok(g) => {
+                    let problems = compgeom::overlay::validity_problems(&g).unwrap();
+                    if !problems.is_empty() {
+                        // Still the right point set: exact symmetric difference ≈ 0.
+                        let d = boolean_with(&g, &want, BooleanOp::Xor, &NONZERO).unwrap();
+                        let s = scale(&[&g, &want]);
+                        assert!(area(&d).abs() <= 1e-9 * s * s, "{name}");
+                        invalid.push(name.clone());
+                        continue;
+                    }
+                    if let Err(e) = compare(&name, &g, &want) {
+                        failures.push(e);
+                    }
+                }
+                Err(e) => failures.push(format!("{name}: {e}")),
+            }
+        }
+    }
+    println!("turf: {run} cases");
+    assert!(run >= 9, "only {run} turf cases ran");
+    // Known: these two outputs are the right point set but fail the validity check on
+    // their f64 coordinates (an edge crossing; a ring orientation), most likely from
+    // rounding constructed crossings on thin parts (no snap rounding yet; see
+    // compgeom::overlay) — not yet confirmed case by case. Any other invalid output,
+    // or these becoming valid, fails here.
+    assert_eq!(
+        invalid,
+        [
+            "intersect/issue-412.geojson",
+            "difference/issue-#721-inverse.geojson"
+        ]
+    );
+    assert!(failures.is_empty(), "{failures:#?}");
+}
