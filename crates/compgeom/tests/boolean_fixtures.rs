@@ -1,4 +1,4 @@
-//! Boolean operations against the polygon-clipping and martinez fixture suites in the
+//! Boolean operations against the polygon-clipping, martinez, iOverlay and Clipper2 fixture suites in the
 //! shared cases folder (see its README): for every case and operation the output must be
 //! valid and the area of its symmetric difference with the expected result must be
 //! ≈ 0 (relative tolerance 1e-9 of the squared coordinate magnitude).
@@ -461,4 +461,407 @@ fn ioverlay_suite() {
         failures.len(),
         failures.join("\n")
     );
+}
+
+/// One case of Clipper2's `Polygons.txt`.
+struct ClipperCase {
+    caption: String,
+    op: BooleanOp,
+    fill: String,
+    area: f64,
+    count: i64,
+    subjects: Vec<Vec<Point2>>,
+    clips: Vec<Vec<Point2>>,
+}
+
+fn clipper_cases(text: &str) -> Vec<ClipperCase> {
+    let mut out: Vec<ClipperCase> = Vec::new();
+    let mut in_clips = false;
+    for line in text.lines().map(str::trim) {
+        if let Some(c) = line.strip_prefix("CAPTION:") {
+            out.push(ClipperCase {
+                caption: c.trim().trim_end_matches('.').to_string(),
+                op: BooleanOp::Union,
+                fill: String::new(),
+                area: 0.0,
+                count: 0,
+                subjects: Vec::new(),
+                clips: Vec::new(),
+            });
+            in_clips = false;
+            continue;
+        }
+        let Some(case) = out.last_mut() else { continue };
+        if let Some(t) = line.strip_prefix("CLIPTYPE:") {
+            case.op = match t.trim() {
+                "UNION" => BooleanOp::Union,
+                "INTERSECTION" => BooleanOp::Intersection,
+                "DIFFERENCE" => BooleanOp::Difference,
+                "XOR" => BooleanOp::Xor,
+                other => panic!("clip type {other}"),
+            };
+        } else if let Some(t) = line.strip_prefix("FILLRULE:") {
+            case.fill = t.trim().to_string();
+        } else if let Some(t) = line.strip_prefix("SOL_AREA:") {
+            case.area = t.trim().parse().unwrap();
+        } else if let Some(t) = line.strip_prefix("SOL_COUNT:") {
+            case.count = t.trim().parse().unwrap();
+        } else if line == "SUBJECTS" {
+            in_clips = false;
+        } else if line == "CLIPS" {
+            in_clips = true;
+        } else if !line.is_empty() {
+            let nums: Vec<f64> = line
+                .split(',')
+                .map(str::trim)
+                .filter(|s| !s.is_empty())
+                .map(|s| s.parse().unwrap())
+                .collect();
+            let path: Vec<Point2> = nums.chunks(2).map(|c| Point2::new(c[0], c[1])).collect();
+            if in_clips {
+                case.clips.push(path);
+            } else {
+                case.subjects.push(path);
+            }
+        }
+    }
+    out
+}
+
+/// Paths as a polygon set (one polygon per path, rings as given). A path with fewer than
+/// three distinct points encloses nothing and adds zero winding anywhere, so it is left
+/// out (the polygon model rejects such rings).
+fn clipper_set(paths: &[Vec<Point2>]) -> MultiPolygon {
+    MultiPolygon(
+        paths
+            .iter()
+            .filter(|p| {
+                let mut k: Vec<_> = p.iter().map(|q| (q.x.to_bits(), q.y.to_bits())).collect();
+                k.sort_unstable();
+                k.dedup();
+                k.len() >= 3
+            })
+            .map(|p| Polygon::new(p.clone(), vec![]))
+            .collect(),
+    )
+}
+
+/// Clipper2's Polygons.txt: for every case the exact area of the result region (from the
+/// labelled arrangement, in rationals) against SOL_AREA, and the number of output rings
+/// against SOL_COUNT. SOL_AREA comes from Clipper's integer-rounded output, so the
+/// tolerances are Clipper's own (tolerances.json: 1% of the area unless overridden,
+/// count exact unless overridden; see below for why the count is a lower bound).
+/// POSITIVE/NEGATIVE fill are winding > 0 / < 0 with the
+/// rings as given, read from the same winding numbers.
+#[test]
+fn clipper2_polygons_suite() {
+    use compgeom::overlay::{boolean_dcel, faces_to_polygons};
+    use num_traits::ToPrimitive;
+    let Some(dir) = existing_cases_dir() else {
+        return;
+    };
+    let dir = dir.join("clipper2");
+    let text = std::fs::read_to_string(dir.join("Polygons.txt")).unwrap();
+    let tol: Value = read(&dir.join("tolerances.json"));
+    let cases = clipper_cases(&text);
+    assert_eq!(cases.len(), 65);
+    let mut failures = Vec::new();
+    let mut split = 0;
+    for c in &cases {
+        let (a, b) = (clipper_set(&c.subjects), clipper_set(&c.clips));
+        let d = boolean_dcel(&a, &b, FillRule::NonZero).unwrap();
+        d.validate().unwrap();
+        let rule = |w: i32| match c.fill.as_str() {
+            "EVENODD" => w % 2 != 0,
+            "NONZERO" => w != 0,
+            "POSITIVE" => w > 0,
+            "NEGATIVE" => w < 0,
+            other => panic!("fill rule {other}"),
+        };
+        let inside = |f| {
+            let (wa, wb) = d.face(f).data;
+            c.op.apply(rule(wa), rule(wb))
+        };
+        let exact: f64 = d
+            .face_ids()
+            .skip(1)
+            .filter(|&f| inside(f))
+            .map(|f| d.face_area_exact(f).to_f64().unwrap())
+            .sum();
+        let out = faces_to_polygons(&d, inside, |e| e.carrier, false);
+        assert_valid_with(&out, true);
+        assert!(
+            (area(&out) - exact).abs() <= 1e-9 * exact.max(1.0),
+            "{}",
+            c.caption
+        );
+        let rings: i64 = out.0.iter().map(|p| 1 + p.holes.len() as i64).sum();
+        let area_rel = tol["area_rel"][&c.caption].as_f64().unwrap_or(0.01);
+        let count_abs = tol["count_abs"][&c.caption].as_i64().unwrap_or(0);
+        if c.area > 0.0 && (exact - c.area).abs() > area_rel * exact {
+            failures.push(format!("case {}: area {exact} vs {}", c.caption, c.area));
+        }
+        // Clipper keeps a boundary that touches itself at a vertex as one path; valid OGC
+        // output splits it there into simple rings (e.g. a shell and a hole touching it),
+        // so the ring count can only be higher: SOL_COUNT is a lower bound here.
+        if c.count > 0 && rings < c.count - count_abs {
+            failures.push(format!("case {}: {rings} rings vs {}", c.caption, c.count));
+        }
+        if c.count > 0 && rings != c.count {
+            split += 1;
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+    println!("clipper2: 65 cases, areas within tolerance; {split} with more (split) rings than Clipper's paths");
+}
+
+/// Text between `<tag ...>` and `</tag>` after `from`, with the opening tag's attributes.
+fn xml_element<'a>(s: &'a str, tag: &str) -> Option<(&'a str, &'a str, &'a str)> {
+    let open = s.find(&format!("<{tag}"))?;
+    let attrs_end = open + s[open..].find('>')?;
+    let close = attrs_end + s[attrs_end..].find(&format!("</{tag}>"))?;
+    let rest = &s[close + tag.len() + 3..];
+    Some((
+        &s[open + tag.len() + 1..attrs_end],
+        s[attrs_end + 1..close].trim(),
+        rest,
+    ))
+}
+
+fn xml_attr<'a>(attrs: &'a str, name: &str) -> Option<&'a str> {
+    let i = attrs.find(&format!("{name}=\""))? + name.len() + 2;
+    Some(&attrs[i..i + attrs[i..].find('"')?])
+}
+
+fn perimeter_of(m: &MultiPolygon) -> f64 {
+    m.0.iter()
+        .flat_map(|p| p.rings())
+        .map(|r| {
+            (0..r.len())
+                .map(|i| {
+                    let (p, q) = (r[i], r[(i + 1) % r.len()]);
+                    (q.x - p.x).hypot(q.y - p.y)
+                })
+                .sum::<f64>()
+        })
+        .sum()
+}
+
+/// Polygonal WKT read as a polygon set; `None` for other geometry types (points, lines,
+/// collections) and for hex WKB.
+fn polygonal(wkt: &str) -> Option<MultiPolygon> {
+    let head = wkt.trim_start().to_ascii_uppercase();
+    if head.contains("EMPTY") && !head.contains('(') {
+        // An empty result of any type (JTS types it by the operation's dimension).
+        return Some(MultiPolygon::default());
+    }
+    if !(head.starts_with("POLYGON") || head.starts_with("MULTIPOLYGON")) {
+        return None;
+    }
+    compgeom::io::read_polygons(wkt, compgeom::io::Format::Wkt, "case").ok()
+}
+
+/// The polygon–polygon overlay cases of the JTS and GEOS XML test suites
+/// (`intersection`, `union`, `difference`, `symdifference` and their `…ng` variants, on
+/// two polygonal operands): the result is valid and its symmetric difference with the
+/// expected geometry (computed exactly by the crate) has area ≈ 0. Tolerances: with a
+/// floating precision model 1e-9 of the inputs' area; where the run's precision model is
+/// a grid of cell 1/S the expected output was snapped to that grid by its producer, so
+/// the allowed area is the perimeter of both results times one cell (each vertex moves by
+/// at most √2/2 cell). Cases left out, counted and asserted by kind: operands that are
+/// not polygonal or are hex WKB (not polygon booleans / not read by compgeom::io), and
+/// `…sr` ops (snap-rounding to a grid given in the case).
+#[test]
+fn jts_and_geos_xml_overlay_suites() {
+    let Some(dir) = existing_cases_dir() else {
+        return;
+    };
+    let mut files = Vec::new();
+    let mut stack = vec![dir.join("jts-testxml"), dir.join("geos-xmltester")];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|x| x == "xml") {
+                files.push(p);
+            }
+        }
+    }
+    files.sort();
+    let (mut run, mut not_polygonal, mut snap_rounded) = (0, 0, 0);
+    let mut failures = Vec::new();
+    for f in &files {
+        let text = std::fs::read_to_string(f).unwrap();
+        let cell = text
+            .find("<precisionModel")
+            .and_then(|i| xml_attr(&text[i..i + text[i..].find('>').unwrap()], "scale"))
+            .and_then(|s| s.parse::<f64>().ok())
+            .map_or(0.0, |s| 1.0 / s);
+        for (ci, case) in text.split("<case").skip(1).enumerate() {
+            let a = xml_element(case, "a").map(|(_, t, _)| t);
+            let b = xml_element(case, "b").map(|(_, t, _)| t);
+            let mut rest = case;
+            while let Some((attrs, expected, after)) = xml_element(rest, "op") {
+                rest = after;
+                let name = xml_attr(attrs, "name").unwrap_or("").to_ascii_lowercase();
+                let base = name.strip_suffix("ng").unwrap_or(&name);
+                let op = match base.strip_suffix("sr").unwrap_or(base) {
+                    "intersection" => BooleanOp::Intersection,
+                    "union" => BooleanOp::Union,
+                    "difference" => BooleanOp::Difference,
+                    "symdifference" => BooleanOp::Xor,
+                    _ => continue,
+                };
+                if base.ends_with("sr") {
+                    snap_rounded += 1;
+                    continue;
+                }
+                let operand = |n: Option<&str>| match n.map(str::to_ascii_uppercase).as_deref() {
+                    Some("A") => a,
+                    Some("B") => b,
+                    _ => None,
+                };
+                let x = operand(xml_attr(attrs, "arg1")).and_then(polygonal);
+                let y = match xml_attr(attrs, "arg2") {
+                    None => Some(MultiPolygon::default()),
+                    arg => operand(arg).and_then(polygonal),
+                };
+                let (Some(x), Some(y), Some(want)) = (x, y, polygonal(expected)) else {
+                    not_polygonal += 1;
+                    continue;
+                };
+                run += 1;
+                let label = format!("{}#{ci} {name}", f.file_name().unwrap().to_string_lossy());
+                let got = if xml_attr(attrs, "arg2").is_none() {
+                    compgeom::overlay::union_all(&x)
+                } else {
+                    boolean_with(&x, &y, op, &POSITIVE)
+                };
+                let got = match got {
+                    Ok(g) => g,
+                    Err(e) => {
+                        failures.push(format!("{label}: {e}"));
+                        continue;
+                    }
+                };
+                assert_valid_with(&got, true);
+                let want =
+                    boolean_with(&want, &MultiPolygon::default(), BooleanOp::Union, &POSITIVE)
+                        .unwrap();
+                let diff = area(&boolean(&got, &want, BooleanOp::Xor).unwrap());
+                let tol = if cell > 0.0 {
+                    (perimeter_of(&got) + perimeter_of(&want)) * cell
+                } else {
+                    1e-9 * (area(&x) + area(&y)).max(scale(&[&x, &y]).powi(2) * 1e-6)
+                };
+                if diff > tol {
+                    failures.push(format!("{label}: area(got △ want) = {diff:e} > {tol:e}"));
+                }
+            }
+        }
+    }
+    println!("jts/geos xml: {run} polygon overlay tests run, {not_polygonal} with non-polygonal or WKB operands, {snap_rounded} snap-rounding ops left out");
+    assert!(run >= 60, "only {run} cases ran");
+    assert!(
+        failures.is_empty(),
+        "{} failures: {failures:#?}",
+        failures.len()
+    );
+}
+
+/// Turf's intersect / difference / union fixtures: the output is valid and its symmetric
+/// difference with turf's expected result has area ≈ 0 (the [`compare`] tolerance).
+/// Features that are not polygons (the linestring and multipoint cases) contribute no
+/// area, so those cases expect an empty result; a union case without an expected file
+/// is not run.
+#[test]
+fn turf_suite() {
+    let Some(dir) = existing_cases_dir() else {
+        return;
+    };
+    let dir = dir.join("turf");
+    let mut run = 0;
+    let mut failures = Vec::new();
+    let mut invalid: Vec<String> = Vec::new();
+    for op in ["intersect", "difference", "union"] {
+        let mut names: Vec<PathBuf> = std::fs::read_dir(dir.join(op).join("in"))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .collect();
+        names.sort();
+        for input in names {
+            let out = dir.join(op).join("out").join(input.file_name().unwrap());
+            if !out.exists() {
+                continue;
+            }
+            let feats: Vec<MultiPolygon> = read(&input)["features"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(geometry)
+                .collect();
+            let want_v = read(&out);
+            let (got, want) = match op {
+                "union" => (
+                    compgeom::overlay::union_all(&MultiPolygon(
+                        feats.iter().flat_map(|m| m.0.clone()).collect(),
+                    )),
+                    geometry(&want_v),
+                ),
+                _ => {
+                    let outs = want_v["features"].as_array().unwrap();
+                    let want = if outs.len() > feats.len() {
+                        geometry(&outs[outs.len() - 1])
+                    } else {
+                        MultiPolygon::default()
+                    };
+                    let bop = if op == "intersect" {
+                        BooleanOp::Intersection
+                    } else {
+                        BooleanOp::Difference
+                    };
+                    let mut acc: compgeom::Result<MultiPolygon> = Ok(feats[0].clone());
+                    for f in &feats[1..] {
+                        acc = acc.and_then(|a| boolean_with(&a, f, bop, &POSITIVE));
+                    }
+                    (acc, want)
+                }
+            };
+            run += 1;
+            let name = format!("{op}/{}", input.file_name().unwrap().to_string_lossy());
+            match got {
+                Ok(g) => {
+                    let problems = compgeom::overlay::validity_problems(&g).unwrap();
+                    if !problems.is_empty() {
+                        // Still the right point set: exact symmetric difference ≈ 0.
+                        let d = boolean_with(&g, &want, BooleanOp::Xor, &NONZERO).unwrap();
+                        let s = scale(&[&g, &want]);
+                        assert!(area(&d).abs() <= 1e-9 * s * s, "{name}");
+                        invalid.push(name.clone());
+                        continue;
+                    }
+                    if let Err(e) = compare(&name, &g, &want) {
+                        failures.push(e);
+                    }
+                }
+                Err(e) => failures.push(format!("{name}: {e}")),
+            }
+        }
+    }
+    println!("turf: {run} cases");
+    assert!(run >= 9, "only {run} turf cases ran");
+    // Known: these two outputs are the right point set but fail the validity check on
+    // their f64 coordinates (an edge crossing; a ring orientation), most likely from
+    // rounding constructed crossings on thin parts (no snap rounding yet; see
+    // compgeom::overlay) — not yet confirmed case by case. Any other invalid output,
+    // or these becoming valid, fails here.
+    assert_eq!(
+        invalid,
+        [
+            "intersect/issue-412.geojson",
+            "difference/issue-#721-inverse.geojson"
+        ]
+    );
+    assert!(failures.is_empty(), "{failures:#?}");
 }

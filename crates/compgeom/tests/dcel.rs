@@ -1,5 +1,5 @@
 //! DCEL builders: counts, invariants (validate after every build), Euler, hole linking.
-use compgeom::dcel::{Dcel, FaceId};
+use compgeom::dcel::{Dcel, FaceId, HalfEdgeId, VertexId};
 use compgeom::{MultiPolygon, Point2, Polygon, Segment2};
 use num_rational::BigRational;
 use num_traits::Zero;
@@ -141,5 +141,109 @@ proptest! {
         for f in d.face_ids().skip(1) {
             prop_assert!(d.face_area_exact(f) > BigRational::zero());
         }
+    }
+}
+
+/// Brute-force oracle for the graph G: the face holding the points just left of vertex
+/// `v`, found by testing every edge and vertex against the leftward ray, in rationals.
+fn face_left_of<V, E, F>(d: &Dcel<V, E, F>, v: VertexId) -> FaceId {
+    use compgeom::dcel::exact_coords;
+    let (px, py) = exact_coords(&d.vertex(v).point);
+    // (x of the hit, half-edge whose left face holds the points just right of it)
+    let mut best: Option<(BigRational, HalfEdgeId)> = None;
+    let mut consider = |x: BigRational, h: HalfEdgeId| {
+        if x < px && best.as_ref().map_or(true, |(b, _)| x > *b) {
+            best = Some((x, h));
+        }
+    };
+    for w in d.vertex_ids() {
+        let (wx, wy) = exact_coords(&d.vertex(w).point);
+        if w == v || wy != py || d.vertex(w).incident.is_none() {
+            continue;
+        }
+        // The wedge at w holding direction +x: left of the outgoing half-edge with the
+        // largest counter-clockwise angle from +x.
+        let key = |h: HalfEdgeId| {
+            let (ax, ay) = exact_coords(&d.vertex(d.destination(h)).point);
+            let (dx, dy) = (ax - &wx, ay - &wy);
+            let half =
+                u8::from(!(dy > BigRational::zero() || (dy.is_zero() && dx > BigRational::zero())));
+            (half, dx, dy)
+        };
+        let last = d
+            .around(w)
+            .max_by(|&a, &b| {
+                let (ha, ax, ay) = key(a);
+                let (hb, bx, by) = key(b);
+                ha.cmp(&hb).then_with(|| (bx * ay).cmp(&(ax * by)))
+            })
+            .unwrap();
+        consider(wx, last);
+    }
+    for i in 0..d.edge_count() {
+        let h = HalfEdgeId(2 * i);
+        let (ax, ay) = exact_coords(&d.vertex(d.half_edge(h).origin).point);
+        let (bx, by) = exact_coords(&d.vertex(d.destination(h)).point);
+        if (ay > py) == (by > py) || ay == py || by == py {
+            continue;
+        }
+        let x = &ax + (&bx - &ax) * (&py - &ay) / (&by - &ay);
+        consider(x, if ay > by { h } else { d.twin(h) });
+    }
+    best.map_or(FaceId::UNBOUNDED, |(_, h)| d.half_edge(h).face)
+}
+
+/// Every inner cycle sits in the face the brute-force ray finds.
+fn check_holes<V, E, F>(d: &Dcel<V, E, F>) -> Result<(), TestCaseError> {
+    for f in d.face_ids() {
+        for &start in &d.face(f).inner {
+            let v = d
+                .cycle(start)
+                .map(|h| d.half_edge(h).origin)
+                .min_by(|&a, &b| d.vertex(a).point.compare_xy(&d.vertex(b).point))
+                .unwrap();
+            prop_assert_eq!(
+                face_left_of(d, v),
+                f,
+                "inner cycle at {:?}",
+                d.vertex(v).approx
+            );
+        }
+    }
+    Ok(())
+}
+
+fn grid_squares(n: usize, range: i32) -> impl Strategy<Value = Vec<Segment2>> {
+    prop::collection::vec((0..range, 0..range, 1..5i32), 1..n).prop_map(|v| {
+        v.into_iter()
+            .flat_map(|(x, y, w)| ring_segments(&square(x as f64, y as f64, w as f64)))
+            .collect()
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(150))]
+    #[test]
+    fn holes_link_to_the_face_left_of_them_grid(segs in small_segments(25, 14)) {
+        let d = Dcel::from_segments(&segs).unwrap();
+        d.validate().unwrap();
+        check_holes(&d)?;
+    }
+
+    #[test]
+    fn holes_link_to_the_face_left_of_them_squares(segs in grid_squares(14, 16)) {
+        let d = Dcel::from_segments(&segs).unwrap();
+        d.validate().unwrap();
+        check_holes(&d)?;
+    }
+
+    #[test]
+    fn holes_link_to_the_face_left_of_them_float(
+        v in prop::collection::vec(((-10f64..10.0, -10f64..10.0), (-1f64..1.0, -1f64..1.0)), 1..20)
+    ) {
+        let segs: Vec<Segment2> = v.into_iter().map(|((x, y), (dx, dy))| s((x, y), (x + dx, y + dy))).collect();
+        let d = Dcel::from_segments(&segs).unwrap();
+        d.validate().unwrap();
+        check_holes(&d)?;
     }
 }

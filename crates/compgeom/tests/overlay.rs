@@ -44,12 +44,150 @@ fn overlay_of_two_maps_labels_every_face() {
 }
 
 #[test]
-fn overlay_rejects_constructed_vertices() {
+fn overlay_takes_subdivisions_with_constructed_vertices() {
     let s = |a: (f64, f64), b: (f64, f64)| Segment2::new(a.into(), b.into());
+    // An X (a crossing vertex) overlaid with a segment through the crossing and one
+    // cutting both arms: the pieces find the X's edges they lie in.
     let x = Dcel::from_segments(&[s((0., 0.), (2., 2.)), s((0., 2.), (2., 0.))]).unwrap();
-    let y = Dcel::from_segments(&[s((5., 5.), (6., 6.))]).unwrap();
-    assert!(overlay(&x, &y).is_err());
-    assert!(overlay(&y, &y).is_ok());
+    let y = Dcel::from_segments(&[s((1., -1.), (1., 3.)), s((-1., 1.5), (3., 1.5))]).unwrap();
+    let o = overlay(&x, &y).unwrap();
+    o.validate().unwrap();
+    for h in o.half_edge_ids() {
+        let e = o.half_edge(h).data;
+        assert!(e.s1.is_some() || e.s2.is_some());
+        if let Some(g) = e.s1 {
+            // The piece lies on its S1 edge and runs the same way.
+            assert_eq!(x.carrier(g).seg, o.carrier(h).seg);
+            assert_eq!(x.carrier(g).forward, o.carrier(h).forward);
+        }
+    }
+    // 4 ends of the X and its centre (shared with the vertical line), 4 ends of the two
+    // lines, the horizontal line meeting both upper arms and the vertical line.
+    assert_eq!(o.vertex_count(), 12);
+}
+
+/// Exact area of every label triple (faces of A, B, C containing a region).
+type Areas = std::collections::BTreeMap<(Vec<usize>, Vec<usize>, Vec<usize>), BigRational>;
+
+fn add(m: &mut Areas, k: (Vec<usize>, Vec<usize>, Vec<usize>), a: BigRational) {
+    if !a.is_zero() {
+        *m.entry(k).or_insert_with(BigRational::zero) += a;
+    }
+}
+
+/// Three polygon layers overlaid as (A ⊕ B) ⊕ C, A ⊕ (B ⊕ C) and in one arrangement of
+/// all rings: the same exact area for every label triple.
+fn three_layers_agree(a: &MultiPolygon, b: &MultiPolygon, c: &MultiPolygon) {
+    let (da, db, dc) = (
+        Dcel::from_polygons(a).unwrap(),
+        Dcel::from_polygons(b).unwrap(),
+        Dcel::from_polygons(c).unwrap(),
+    );
+    let ab = overlay(&da, &db).unwrap();
+    let ab_c = overlay(&ab, &dc).unwrap();
+    ab_c.validate().unwrap();
+    let bc = overlay(&db, &dc).unwrap();
+    let a_bc = overlay(&da, &bc).unwrap();
+    a_bc.validate().unwrap();
+    let mut left = Areas::new();
+    for f in ab_c.face_ids().skip(1) {
+        let l = ab_c.face(f).data;
+        let m = ab.face(l.s1).data;
+        let key = (
+            da.face(m.s1).data.clone(),
+            db.face(m.s2).data.clone(),
+            dc.face(l.s2).data.clone(),
+        );
+        add(&mut left, key, ab_c.face_area_exact(f));
+    }
+    let mut right = Areas::new();
+    for f in a_bc.face_ids().skip(1) {
+        let l = a_bc.face(f).data;
+        let m = bc.face(l.s2).data;
+        let key = (
+            da.face(l.s1).data.clone(),
+            db.face(m.s1).data.clone(),
+            dc.face(m.s2).data.clone(),
+        );
+        add(&mut right, key, a_bc.face_area_exact(f));
+    }
+    // One arrangement of all rings, labelled by the polygons containing each face.
+    let (na, nb) = (a.0.len(), b.0.len());
+    let all = MultiPolygon(a.0.iter().chain(&b.0).chain(&c.0).cloned().collect());
+    let flat = Dcel::from_polygons(&all).unwrap();
+    let mut direct = Areas::new();
+    for f in flat.face_ids().skip(1) {
+        let l = &flat.face(f).data;
+        let key = (
+            l.iter().copied().filter(|&i| i < na).collect(),
+            l.iter()
+                .filter(|&&i| i >= na && i < na + nb)
+                .map(|i| i - na)
+                .collect(),
+            l.iter()
+                .filter(|&&i| i >= na + nb)
+                .map(|i| i - na - nb)
+                .collect(),
+        );
+        add(&mut direct, key, flat.face_area_exact(f));
+    }
+    assert_eq!(left, direct);
+    assert_eq!(right, direct);
+}
+
+#[test]
+fn overlay_of_an_overlay_three_layers() {
+    // C's diagonal edges cross the constructed vertices' edges of A ⊕ B.
+    let tri =
+        |pts: &[(f64, f64)]| Polygon::new(pts.iter().map(|&(x, y)| pt(x, y)).collect(), vec![]);
+    let a = MultiPolygon(vec![
+        rect(0., 0., 4., 4.),
+        tri(&[(5., 0.), (9., 1.), (6., 4.)]),
+    ]);
+    let b = MultiPolygon(vec![tri(&[(-1., -1.), (7., 2.), (1., 5.)])]);
+    let c = MultiPolygon(vec![
+        tri(&[(0.5, 3.), (8., -0.5), (8., 4.5)]),
+        rect(2., 1., 1., 1.),
+    ]);
+    three_layers_agree(&a, &b, &c);
+    // And a fourth layer on top of the three.
+    let d = MultiPolygon(vec![rect(1.5, -2., 0.25, 9.)]);
+    let abc = overlay(
+        &overlay(
+            &Dcel::from_polygons(&a).unwrap(),
+            &Dcel::from_polygons(&b).unwrap(),
+        )
+        .unwrap(),
+        &Dcel::from_polygons(&c).unwrap(),
+    )
+    .unwrap();
+    let four = overlay(&abc, &Dcel::from_polygons(&d).unwrap()).unwrap();
+    four.validate().unwrap();
+    let total: BigRational = four
+        .face_ids()
+        .skip(1)
+        .map(|f| four.face_area_exact(f))
+        .sum();
+    let flat = Dcel::from_polygons(&MultiPolygon(
+        a.0.iter()
+            .chain(&b.0)
+            .chain(&c.0)
+            .chain(&d.0)
+            .cloned()
+            .collect(),
+    ))
+    .unwrap();
+    let want: BigRational = flat
+        .face_ids()
+        .skip(1)
+        .map(|f| flat.face_area_exact(f))
+        .sum();
+    assert_eq!(total, want);
+}
+
+fn float_tri() -> impl Strategy<Value = Polygon> {
+    prop::collection::vec((-5f64..5.0, -5f64..5.0), 3)
+        .prop_map(|v| Polygon::new(v.into_iter().map(|(x, y)| pt(x, y)).collect(), vec![]))
 }
 
 #[test]
@@ -107,6 +245,24 @@ fn grid_ring() -> impl Strategy<Value = Vec<Point2>> {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(100))]
+    #[test]
+    fn three_layer_overlays_compose(
+        a in prop::collection::vec(float_tri(), 1..3),
+        b in prop::collection::vec(float_tri(), 1..3),
+        c in prop::collection::vec(grid_ring(), 1..3),
+    ) {
+        let distinct = |p: &Polygon| {
+            let mut k: Vec<_> = p.exterior.iter().map(|q| (q.x.to_bits(), q.y.to_bits())).collect();
+            k.sort_unstable();
+            k.dedup();
+            k.len() >= 3
+        };
+        let c = MultiPolygon(c.into_iter().map(|r| Polygon::new(r, vec![])).collect());
+        let (a, b) = (MultiPolygon(a), MultiPolygon(b));
+        prop_assume!(a.0.iter().chain(&b.0).chain(&c.0).all(distinct));
+        three_layers_agree(&a, &b, &c);
+    }
+
     #[test]
     fn make_valid_gives_valid_polygons_with_the_even_odd_area(rs in prop::collection::vec(grid_ring(), 1..3)) {
         let m = MultiPolygon(rs.into_iter().map(|r| Polygon::new(r, vec![])).collect());

@@ -10,12 +10,13 @@
 //!    point enters the test) — and `next(e)` is the outgoing half-edge just clockwise of
 //!    `twin(e)`. The boundary cycles follow. A cycle is an outer boundary iff it turns
 //!    left (strictly) at each visit of its lexicographically smallest vertex; the others
-//!    are the outer boundaries of connected components, i.e. holes of the face found by
-//!    shooting a ray to the left from that vertex (the book's graph G).
+//!    are the outer boundaries of connected components, i.e. holes of the face of the
+//!    half-edge just left of that vertex, found by one sweep (the book's graph G; see
+//!    `holes.rs`).
 use super::{Dcel, Face, FaceId, HalfEdge, HalfEdgeId, Vertex, VertexId};
 use crate::intersect::find_intersections;
+use crate::kernel::MultiPolygon;
 use crate::kernel::{compare_slopes, compare_xy, ExactPoint, Orientation, Point2, Segment2};
-use crate::kernel::{Crossing, MultiPolygon};
 use crate::{Error, Result};
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -212,7 +213,17 @@ impl<E> Dcel<(), E, ()> {
         let n = arr.vertices.len();
         let mut half_edges = Vec::with_capacity(2 * arr.edges.len());
         let mut carriers = Vec::with_capacity(2 * arr.edges.len());
-        let mut out: Vec<Vec<usize>> = vec![Vec::new(); n];
+        // Outgoing half-edges per vertex, as one array cut into slices (no list per vertex).
+        let mut out_start = vec![0usize; n + 1];
+        for (u, v, _) in &arr.edges {
+            out_start[*u + 1] += 1;
+            out_start[*v + 1] += 1;
+        }
+        for i in 0..n {
+            out_start[i + 1] += out_start[i];
+        }
+        let mut fill = out_start.clone();
+        let mut out = vec![0usize; 2 * arr.edges.len()];
         for (i, (u, v, sources)) in arr.edges.iter().enumerate() {
             let s0 = sources[0];
             let seg = arr.segments[s0.segment];
@@ -241,13 +252,15 @@ impl<E> Dcel<(), E, ()> {
                     data: edge_data(src, carrier),
                 });
                 carriers.push(carrier);
-                out[o].push(id);
+                out[fill[o]] = id;
+                fill[o] += 1;
             }
         }
         link(
             arr.vertices.clone(),
             half_edges,
-            &carriers,
+            carriers,
+            &out_start,
             &mut out,
             resolve_holes,
         )
@@ -342,13 +355,21 @@ pub fn polygon_segments(polygons: &MultiPolygon) -> Result<(Vec<Segment2>, Vec<u
 fn link<E>(
     points: Vec<ExactPoint>,
     mut half_edges: Vec<HalfEdge<E>>,
-    carriers: &[Carrier],
-    out: &mut [Vec<usize>],
+    carriers: Vec<Carrier>,
+    out_start: &[usize],
+    out: &mut [usize],
     resolve_holes: bool,
 ) -> Dcel<(), E, ()> {
     // Angular order and next/prev.
-    for list in out.iter_mut() {
-        list.sort_by(|&a, &b| carriers[a].angle_cmp(&carriers[b]));
+    for v in 0..points.len() {
+        let list = &mut out[out_start[v]..out_start[v + 1]];
+        if list.len() > 2 {
+            list.sort_unstable_by(|&a, &b| carriers[a].angle_cmp(&carriers[b]));
+        } else if list.len() == 2
+            && carriers[list[0]].angle_cmp(&carriers[list[1]]) == Ordering::Greater
+        {
+            list.swap(0, 1);
+        }
         let k = list.len();
         for j in 0..k {
             let incoming = list[j] ^ 1;
@@ -359,13 +380,18 @@ fn link<E>(
     }
     let vertices: Vec<Vertex<()>> = points
         .iter()
-        .zip(out.iter())
-        .map(|(p, list)| Vertex {
+        .enumerate()
+        .map(|(v, p)| Vertex {
             point: *p,
             approx: p.approx(),
-            incident: list.first().map(|&h| HalfEdgeId(h)),
+            incident: (out_start[v] < out_start[v + 1]).then(|| HalfEdgeId(out[out_start[v]])),
             data: (),
         })
+        .collect();
+    let approx: Vec<super::holes::Rounded> = points
+        .iter()
+        .zip(&vertices)
+        .map(|(p, v)| super::holes::Rounded::of(p, v.approx))
         .collect();
     // Cycles.
     let m = half_edges.len();
@@ -394,7 +420,9 @@ fn link<E>(
         let cur = lowest[c];
         let better = cur == usize::MAX || {
             let (a, b) = (half_edges[h].origin.0, half_edges[cur].origin.0);
-            a != b && points[a].compare_xy(&points[b]) == Ordering::Less
+            a != b
+                && super::holes::compare_xy_filtered(&points[a], &approx[a], &points[b], &approx[b])
+                    == Ordering::Less
         };
         if better {
             lowest[c] = h;
@@ -426,19 +454,38 @@ fn link<E>(
             });
         }
     }
-    // Holes: the cycle hit by a ray to the left of the leftmost vertex. Rounded points
-    // (computed once) serve only as exact-safe filters.
-    let approx: Vec<Point2> = vertices.iter().map(|v| v.approx).collect();
-    let hit: Vec<Option<usize>> = (0..cycles.len())
-        .map(|c| {
-            if is_outer[c] || !resolve_holes {
-                None
-            } else {
-                let v = half_edges[lowest[c]].origin.0;
-                shoot_left(&points, &approx, &half_edges, carriers, out, v).map(|h| cycle_of[h])
+    // Holes (the book's graph G): each inner cycle is linked to the half-edge just left
+    // of its leftmost vertex, read from the status of one sweep. With a single inner
+    // cycle there is nothing to decide: it lies in the unbounded face.
+    let inner_count = is_outer.iter().filter(|&&o| !o).count();
+    let hit: Vec<Option<usize>> = if resolve_holes && inner_count > 1 {
+        let mut query = vec![false; points.len()];
+        for c in 0..cycles.len() {
+            if !is_outer[c] {
+                query[half_edges[lowest[c]].origin.0] = true;
             }
-        })
-        .collect();
+        }
+        let left = super::holes::faces_left_of(
+            &points,
+            &approx,
+            &half_edges,
+            &carriers,
+            out_start,
+            out,
+            &query,
+        );
+        (0..cycles.len())
+            .map(|c| {
+                if is_outer[c] {
+                    None
+                } else {
+                    left[half_edges[lowest[c]].origin.0].map(|h| cycle_of[h])
+                }
+            })
+            .collect()
+    } else {
+        vec![None; cycles.len()]
+    };
     for c in 0..cycles.len() {
         if is_outer[c] {
             continue;
@@ -467,79 +514,36 @@ fn link<E>(
         vertices,
         half_edges,
         faces,
+        carriers,
     }
-}
-
-/// The half-edge whose face contains the points just left of vertex `v` (an input point:
-/// the leftmost vertex of a component never is a crossing), or `None` when the ray to the
-/// left meets nothing (the unbounded face).
-fn shoot_left<E>(
-    points: &[ExactPoint],
-    approx: &[Point2],
-    half_edges: &[HalfEdge<E>],
-    carriers: &[Carrier],
-    out: &[Vec<usize>],
-    v: usize,
-) -> Option<usize> {
-    let p = match points[v] {
-        ExactPoint::Input(p) => p,
-        ExactPoint::Crossing(c) => c.approx(), // unreachable in an arrangement
-    };
-    let pv = ExactPoint::Input(p);
-    let far = Point2::new(p.x - p.x.abs() - 1.0, p.y);
-    let ray = Segment2::new(far, p);
-    // Best candidate: (hit point, half-edge).
-    let mut best: Option<(ExactPoint, usize)> = None;
-    let consider = |at: ExactPoint, h: usize, best: &mut Option<(ExactPoint, usize)>| {
-        if at.compare_x(&pv) != Ordering::Less {
-            return;
-        }
-        if best
-            .as_ref()
-            .map_or(true, |(b, _)| at.compare_x(b) == Ordering::Greater)
-        {
-            *best = Some((at, h));
-        }
-    };
-    // Vertices on the ray's line, left of v: the face between the last and the first
-    // outgoing half-edge (the wedge containing direction +x).
-    for (w, list) in out.iter().enumerate() {
-        if w == v || list.is_empty() {
-            continue;
-        }
-        let a = approx[w];
-        // Rounding is monotone and p is an f64 point: a rounded y different from p.y, or a
-        // rounded x right of p.x, rules the vertex out exactly.
-        if a.y != p.y || a.x > p.x {
-            continue;
-        }
-        if points[w].compare_y(&pv) == Ordering::Equal {
-            consider(points[w], list[list.len() - 1], &mut best);
-        }
-    }
-    // Edges strictly crossing the line: the half-edge running downwards has v's side on
-    // its left.
-    for h in (0..half_edges.len()).step_by(2) {
-        let (a, b) = (half_edges[h].origin.0, half_edges[h ^ 1].origin.0);
-        let (pa, pb) = (approx[a], approx[b]);
-        if (pa.y > p.y && pb.y > p.y) || (pa.y < p.y && pb.y < p.y) || pa.x.min(pb.x) >= p.x {
-            continue;
-        }
-        let ya = points[a].compare_y(&pv);
-        let yb = points[b].compare_y(&pv);
-        if ya == Ordering::Equal || yb == Ordering::Equal || ya == yb {
-            continue;
-        }
-        let Some(c) = Crossing::new(carriers[h].seg, ray) else {
-            continue;
-        };
-        let down = if ya == Ordering::Greater { h } else { h ^ 1 };
-        consider(ExactPoint::Crossing(c), down, &mut best);
-    }
-    best.map(|(_, h)| h)
 }
 
 impl<V, E, F> Dcel<V, E, F> {
+    /// The same subdivision with new half-edge data, `data[h]` for half-edge `h`
+    /// (`data.len()` must be the number of half-edges).
+    pub(crate) fn map_edge_data<G>(self, data: Vec<G>) -> Dcel<V, G, F> {
+        debug_assert_eq!(data.len(), self.half_edges.len());
+        let half_edges = self
+            .half_edges
+            .into_iter()
+            .zip(data)
+            .map(|(h, d)| HalfEdge {
+                origin: h.origin,
+                twin: h.twin,
+                next: h.next,
+                prev: h.prev,
+                face: h.face,
+                data: d,
+            })
+            .collect();
+        Dcel {
+            vertices: self.vertices,
+            half_edges,
+            faces: self.faces,
+            carriers: self.carriers,
+        }
+    }
+
     /// Replace the face data by labels propagated from the unbounded face (labelled
     /// `outside`) across edges: the face left of half-edge `h` gets `cross(label of the
     /// face right of h, data of h)`. Every face is reached (each component's outer
@@ -571,6 +575,7 @@ impl<V, E, F> Dcel<V, E, F> {
             vertices,
             half_edges,
             faces,
+            carriers,
         } = self;
         let faces = faces
             .into_iter()
@@ -585,6 +590,7 @@ impl<V, E, F> Dcel<V, E, F> {
             vertices,
             half_edges,
             faces,
+            carriers,
         }
     }
 }

@@ -16,9 +16,10 @@
 //! Builders: [`Dcel::from_segments`] (the arrangement of arbitrary segments, split at
 //! crossings and with overlaps merged, via [`crate::intersect::find_intersections`]) and
 //! [`Dcel::from_polygons`] (faces labelled with the polygons containing them). Cost:
-//! O((n + k) log n) for the sweep and the angular sorts, plus O(h · (n + k)) to link the h
-//! components that do not touch any other to the faces containing them (a ray shot to
-//! the left of each component's leftmost vertex, tested against every edge).
+//! O((n + k) log n) for the sweep and the angular sorts; the components that do not touch
+//! any other are linked to the faces containing them by one more sweep (the half-edge
+//! just left of each component's leftmost vertex, read from the sweep status), O(V log V
+//! + V·s) for a status of at most s edges.
 //!
 //! [`Dcel::validate`] checks every invariant; [`Dcel::face_polygon`] exports a face.
 //!
@@ -35,10 +36,12 @@
 //! ```
 mod build;
 mod export;
+mod holes;
 mod validate;
 
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
 pub use export::exact_coords;
+pub(crate) use holes::{compare_xy_filtered, Rounded};
 
 use crate::kernel::{ExactPoint, Point2};
 
@@ -113,6 +116,9 @@ pub struct Dcel<V = (), E = (), F = ()> {
     pub(crate) vertices: Vec<Vertex<V>>,
     pub(crate) half_edges: Vec<HalfEdge<E>>,
     pub(crate) faces: Vec<Face<F>>,
+    /// The input segment under each half-edge and whether it runs the segment's way
+    /// (what makes a result composable: see [`crate::overlay::overlay`]).
+    pub(crate) carriers: Vec<Carrier>,
 }
 
 impl<V, E, F> Dcel<V, E, F> {
@@ -155,6 +161,11 @@ impl<V, E, F> Dcel<V, E, F> {
     /// All face handles, the unbounded face first.
     pub fn face_ids(&self) -> impl Iterator<Item = FaceId> {
         (0..self.faces.len()).map(FaceId)
+    }
+    /// The input segment carrying half-edge `h` and whether `h` runs the segment's way:
+    /// its exact direction, also for a piece between constructed points.
+    pub fn carrier(&self, h: HalfEdgeId) -> Carrier {
+        self.carriers[h.0]
     }
     /// The twin of `h`.
     pub fn twin(&self, h: HalfEdgeId) -> HalfEdgeId {

@@ -25,8 +25,8 @@
 //! a ring below three distinct points (such a ring is dropped). Snap rounding would cure
 //! this and is not implemented. Vertices from the input are never moved.
 //!
-//! Cost: O((n + k) log n) for n input edges and k intersection points, plus the exact
-//! ray shots linking separate components (see [`crate::dcel`]).
+//! Cost: O((n + k) log n) for n input edges and k intersection points, plus the
+//! hole-linking sweep (see [`crate::dcel`]).
 use super::result::faces_to_polygons;
 use crate::dcel::{polygon_segments, Arrangement, Carrier, Dcel};
 use crate::io::ring_orientation;

@@ -20,15 +20,15 @@
 //!    `next(e)` is the one just clockwise of `twin(e)` (records are rebuilt rather than
 //!    patched; the order is decided exactly from input-segment directions).
 //! 3. *Cycles and G*: a cycle is an outer boundary iff it turns left at its leftmost
-//!    vertex; each other cycle is linked to the face of the half-edge hit by a ray to the
-//!    left of its leftmost vertex (an exact ray-shooting query; see [`crate::dcel`]).
+//!    vertex; each other cycle is linked to the face of the half-edge immediately left of
+//!    its leftmost vertex, read from the status of a sweep (see [`crate::dcel`]).
 //! 4. *Labels*: instead of locating each face, labels spread from the unbounded face
 //!    across edges: crossing a piece of an S1 edge into the face on its left enters the
 //!    S1 face left of that edge; crossing a piece of an S2-only edge keeps the S1 label.
 //!    This is exact and linear.
 //!
-//! Cost: O((n + k) log n) for n edges and k intersection points, plus the ray shots
-//! (O(n + k) each, one per connected component that is not the outermost).
+//! Cost: O((n + k) log n) for n edges and k intersection points, plus the hole-linking
+//! sweep (see [`crate::dcel`]).
 //!
 //! [`boolean`] builds the arrangement of the rings of both polygon sets once, labels
 //! each face with its winding numbers with respect to A and B (crossing a ring edge from
@@ -59,9 +59,11 @@ pub use result::faces_to_polygons;
 pub use validate::{validity_problems, Problem};
 
 use crate::dcel::Arrangement;
-use crate::dcel::{Carrier, Dcel, FaceId, HalfEdgeId, PolygonLabel, Source};
-use crate::kernel::{ExactPoint, MultiPolygon, Segment2};
+use crate::dcel::{Carrier, Dcel, FaceId, HalfEdgeId, PolygonLabel};
+use crate::kernel::{compare_xy, ExactPoint, MultiPolygon, Segment2};
 use crate::{Error, Result};
+use std::cmp::Ordering;
+use std::collections::HashMap;
 
 /// Data of a half-edge of an overlay: the half-edges of S1 and S2 it is (a piece of),
 /// running the same way.
@@ -84,27 +86,95 @@ pub struct OverlayFace {
     pub s2: FaceId,
 }
 
-fn edge_segments<V, E, F>(d: &Dcel<V, E, F>, which: &str) -> Result<Vec<Segment2>> {
-    (0..d.edge_count())
-        .map(|i| {
-            let h = HalfEdgeId(2 * i);
-            match (d.origin_point(h), d.origin_point(d.twin(h))) {
-                (ExactPoint::Input(a), ExactPoint::Input(b)) => Ok(Segment2::new(*a, *b)),
-                _ => Err(Error::InvalidInput(format!(
-                    "{which}: edge {i} ends at a constructed point; overlay takes \
-                     subdivisions whose vertices are input points"
-                ))),
+/// How the segments fed to the sweep for one subdivision map back to its half-edges.
+enum Fed {
+    /// An edge between input points, fed as itself; the half-edge running its way.
+    Edge(HalfEdgeId),
+    /// An input segment carrying edges with constructed ends (a result of an earlier
+    /// overlay), fed whole; its half-edges running its way, in order along it.
+    Carrier(Segment2, Vec<HalfEdgeId>),
+}
+
+/// Compare two points along segment `seg`'s direction (exactly).
+fn along(seg: Segment2, p: &ExactPoint, q: &ExactPoint) -> Ordering {
+    let o = p.compare_xy(q);
+    if compare_xy(seg.a, seg.b) == Ordering::Greater {
+        o.reverse()
+    } else {
+        o
+    }
+}
+
+/// The segments of a subdivision for the sweep: edges between input points as they are,
+/// and each input segment under edges with constructed ends once, whole.
+fn layer_segments<V, E, F>(d: &Dcel<V, E, F>) -> (Vec<Segment2>, Vec<Fed>) {
+    let mut segs = Vec::new();
+    let mut fed = Vec::new();
+    let mut by_carrier: HashMap<[u64; 4], usize> = HashMap::new();
+    for i in 0..d.edge_count() {
+        let h = HalfEdgeId(2 * i);
+        if let (ExactPoint::Input(a), ExactPoint::Input(b)) =
+            (d.origin_point(h), d.origin_point(d.twin(h)))
+        {
+            segs.push(Segment2::new(*a, *b));
+            fed.push(Fed::Edge(h));
+            continue;
+        }
+        let c = d.carrier(h);
+        let way = if c.forward { h } else { d.twin(h) };
+        let key = [c.seg.a.x, c.seg.a.y, c.seg.b.x, c.seg.b.y].map(|x| (x + 0.0).to_bits());
+        let k = *by_carrier.entry(key).or_insert_with(|| {
+            segs.push(c.seg);
+            fed.push(Fed::Carrier(c.seg, Vec::new()));
+            fed.len() - 1
+        });
+        if let Fed::Carrier(_, list) = &mut fed[k] {
+            list.push(way);
+        }
+    }
+    for f in &mut fed {
+        if let Fed::Carrier(seg, list) = f {
+            let seg = *seg;
+            list.sort_by(|&x, &y| along(seg, d.origin_point(x), d.origin_point(y)));
+        }
+    }
+    (segs, fed)
+}
+
+/// The half-edge of a layer under the piece `from → to` of the result, given one of the
+/// piece's sources in that layer (`forward`: the piece runs the fed segment's way), or
+/// `None` when the layer's edges on that segment do not cover the piece.
+fn locate<V, E, F>(
+    d: &Dcel<V, E, F>,
+    fed: &Fed,
+    forward: bool,
+    from: &ExactPoint,
+    to: &ExactPoint,
+) -> Option<HalfEdgeId> {
+    match fed {
+        Fed::Edge(h) => Some(if forward { *h } else { d.twin(*h) }),
+        Fed::Carrier(seg, list) => {
+            let (u, v) = if forward { (from, to) } else { (to, from) };
+            let i =
+                list.partition_point(|&e| along(*seg, d.origin_point(e), u) != Ordering::Greater);
+            let e = *list.get(i.checked_sub(1)?)?;
+            if along(*seg, d.origin_point(d.twin(e)), v) == Ordering::Less {
+                return None;
             }
-        })
-        .collect()
+            Some(if forward { e } else { d.twin(e) })
+        }
+    }
 }
 
 /// MAPOVERLAY(S1, S2): the overlay of two subdivisions, each face labelled with the
 /// faces of S1 and S2 containing it, each half-edge with the half-edges it comes from.
 ///
-/// Both subdivisions must have input (not constructed) points as vertices, e.g. built
-/// by [`Dcel::from_polygons`] or [`Dcel::from_segments`] of non-crossing segments;
-/// otherwise `Err(InvalidInput)`.
+/// Overlays compose: either subdivision may itself be an overlay (or any subdivision
+/// built by this crate, whose vertices may be constructed crossings), as MAPOVERLAY
+/// allows. An edge between input points is swept as itself; the input segment under
+/// edges with constructed ends is swept whole (the edges on it cover it), and each piece
+/// of the result finds the edge it lies in by an exact search along that segment. A
+/// subdivision whose edges do not cover the segments under them is `Err(InvalidInput)`.
 ///
 /// ```
 /// use compgeom::dcel::Dcel;
@@ -122,20 +192,44 @@ pub fn overlay<V1, E1, F1, V2, E2, F2>(
     s1: &Dcel<V1, E1, F1>,
     s2: &Dcel<V2, E2, F2>,
 ) -> Result<Dcel<(), OverlayEdge, OverlayFace>> {
-    let mut segs = edge_segments(s1, "S1")?;
+    let (mut segs, fed1) = layer_segments(s1);
     let n1 = segs.len();
-    segs.extend(edge_segments(s2, "S2")?);
+    let (segs2, fed2) = layer_segments(s2);
+    segs.extend(segs2);
     let arr = Arrangement::of_segments(&segs)?;
-    let half =
-        |s: &Source, base: usize| HalfEdgeId(2 * (s.segment - base) + usize::from(!s.forward));
-    let d = Dcel::from_arrangement(&arr, |sources, carrier| {
-        let s1 = sources.iter().find(|s| s.segment < n1).map(|s| half(s, 0));
-        let s2 = sources
-            .iter()
-            .find(|s| s.segment >= n1)
-            .map(|s| half(s, n1));
-        OverlayEdge { s1, s2, carrier }
-    })?;
+    let d = Dcel::from_arrangement(&arr, |sources, carrier| (sources.to_vec(), carrier))?;
+    let mut data = Vec::with_capacity(2 * d.edge_count());
+    for g in d.half_edge_ids() {
+        let (from, to) = (d.origin_point(g), d.origin_point(d.twin(g)));
+        let (sources, carrier) = &d.half_edge(g).data;
+        let find = |in1: bool, which: &str| -> Result<Option<HalfEdgeId>> {
+            let mut any = false;
+            for s in sources.iter().filter(|s| (s.segment < n1) == in1) {
+                any = true;
+                let found = if in1 {
+                    locate(s1, &fed1[s.segment], s.forward, from, to)
+                } else {
+                    locate(s2, &fed2[s.segment - n1], s.forward, from, to)
+                };
+                if found.is_some() {
+                    return Ok(found);
+                }
+            }
+            if any {
+                return Err(Error::InvalidInput(format!(
+                    "{which}: an edge does not cover the input segment it lies on between \
+                     two of its vertices (not a subdivision built by this crate)"
+                )));
+            }
+            Ok(None)
+        };
+        data.push(OverlayEdge {
+            s1: find(true, "S1")?,
+            s2: find(false, "S2")?,
+            carrier: *carrier,
+        });
+    }
+    let d = d.map_edge_data(data);
     let outside = OverlayFace {
         s1: FaceId::UNBOUNDED,
         s2: FaceId::UNBOUNDED,
@@ -159,6 +253,7 @@ pub fn overlay_polygons(
         vertices,
         half_edges,
         faces,
+        carriers,
     } = o;
     let faces = faces
         .into_iter()
@@ -175,5 +270,6 @@ pub fn overlay_polygons(
         vertices,
         half_edges,
         faces,
+        carriers,
     })
 }

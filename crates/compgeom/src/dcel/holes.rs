@@ -1,0 +1,204 @@
+//! The graph G of book §2.3: which face holds each boundary component, by one sweep.
+//!
+//! A cycle that is not an outer boundary is the outside of a connected component; it
+//! lies in the face of the half-edge immediately to the left of its leftmost vertex.
+//! As the book does, that half-edge is read off the sweep status when the vertex is
+//! reached: a horizontal line moves down over the vertices (higher y first, then
+//! smaller x, the order of [`crate::intersect`]); the status holds the non-horizontal
+//! edges crossing the line, left to right. At a query vertex `p` the candidates are the
+//! rightmost status edge strictly west of `p` and the previous vertex on the same line;
+//! the nearer one wins.
+//!
+//! Edges of a subdivision never cross, so the status order only changes at vertices
+//! and each comparison is one exact orientation test of a vertex (an input point or a
+//! constructed crossing) against the input segment carrying an edge. Vertices are
+//! ordered by their rounded coordinates where they differ (rounding is monotone, so
+//! that is exact) and by exact comparisons where they tie.
+//!
+//! Cost: O(V log V) for the vertex order plus O(s) per status update for a status of
+//! at most s edges (a vector: s is small for polygon data — the number of edges a
+//! horizontal line meets).
+use super::{Carrier, HalfEdge};
+use crate::kernel::{orient_exact, ExactPoint, Orientation, Point2};
+use std::cmp::Ordering;
+
+/// For every vertex `v` with `query[v]`, the half-edge whose face contains the points
+/// just left of `v`, or `None` (unbounded face). `out[out_start[v]..out_start[v + 1]]`
+/// are `v`'s outgoing half-edges in counter-clockwise order from direction +x.
+pub(super) fn faces_left_of<E>(
+    points: &[ExactPoint],
+    approx: &[Rounded],
+    half_edges: &[HalfEdge<E>],
+    carriers: &[Carrier],
+    out_start: &[usize],
+    out: &[usize],
+    query: &[bool],
+) -> Vec<Option<usize>> {
+    let n = points.len();
+    let cmp_y =
+        |a: usize, b: usize| compare_y_filtered(&points[a], &approx[a], &points[b], &approx[b]);
+    let cmp_x =
+        |a: usize, b: usize| compare_x_filtered(&points[a], &approx[a], &points[b], &approx[b]);
+    // Sweep order: higher y first, then smaller x.
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| cmp_y(b, a).then_with(|| cmp_x(a, b)));
+    let mut rank = vec![0usize; n];
+    for (r, &v) in order.iter().enumerate() {
+        rank[v] = r;
+    }
+    // The input segment of an edge, upper end first (input points: exact).
+    let down = |h: usize| -> (Point2, Point2) {
+        let s = carriers[h].seg;
+        if s.a.y > s.b.y || (s.a.y == s.b.y && s.a.x < s.b.x) {
+            (s.a, s.b)
+        } else {
+            (s.b, s.a)
+        }
+    };
+    // True when vertex `q` lies east of (left of, going down) the edge `(up, low)`.
+    let east = |q: usize, e: &(usize, Point2, Point2)| {
+        side(&points[q], approx[q].p, e.1, e.2) == Orientation::CounterClockwise
+    };
+    let west = |q: usize, e: &(usize, Point2, Point2)| {
+        side(&points[q], approx[q].p, e.1, e.2) == Orientation::Clockwise
+    };
+    let mut answer = vec![None; n];
+    // Status entries: (half-edge running down, its carrier's upper and lower ends).
+    let mut status: Vec<(usize, Point2, Point2)> = Vec::new();
+    let mut prev: Option<usize> = None;
+    for &v in &order {
+        let same_line = prev.filter(|&w| cmp_y(w, v) == Ordering::Equal);
+        if query[v] {
+            let idx = status.partition_point(|e| east(v, e));
+            let a = idx.checked_sub(1).map(|i| status[i]);
+            answer[v] = match (a, same_line) {
+                // The status edge wins when it passes strictly between w and v.
+                (Some(e), Some(w)) if west(w, &e) => Some(e.0),
+                (_, Some(w)) if out_start[w] < out_start[w + 1] => {
+                    // The wedge at w holding direction +x lies left of its last
+                    // (counter-clockwise) outgoing half-edge.
+                    Some(out[out_start[w + 1] - 1])
+                }
+                (a, _) => a.map(|e| e.0),
+            };
+        }
+        let list = &out[out_start[v]..out_start[v + 1]];
+        // Edges ending here leave the status.
+        for &h in list {
+            let other = half_edges[h ^ 1].origin.0;
+            if rank[other] < rank[v] && cmp_y(other, v) != Ordering::Equal {
+                if let Some(i) = status.iter().position(|e| e.0 == h ^ 1) {
+                    status.remove(i);
+                }
+            }
+        }
+        // Edges starting here enter it, left to right (counter-clockwise order of the
+        // downward directions), at the place of v.
+        let at = status.partition_point(|e| east(v, e));
+        let mut k = at;
+        for &h in list {
+            let other = half_edges[h ^ 1].origin.0;
+            if rank[other] > rank[v] && cmp_y(other, v) != Ordering::Equal {
+                let (up, low) = down(h);
+                status.insert(k, (h, up, low));
+                k += 1;
+            }
+        }
+        prev = Some(v);
+    }
+    answer
+}
+
+/// A vertex's rounded point, and which of its coordinates are known to be exact (all of
+/// an input point's; x of a crossing with a vertical segment, y of one with a horizontal
+/// segment): where both rounded coordinates are equal and exact, the points are equal
+/// on that axis with no exact arithmetic (grid and axis-parallel data).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Rounded {
+    p: Point2,
+    x_exact: bool,
+    y_exact: bool,
+}
+
+impl Rounded {
+    /// The rounded point of `e` (`approx` is its nearest `f64` point).
+    pub(crate) fn of(e: &ExactPoint, approx: Point2) -> Rounded {
+        match e {
+            ExactPoint::Input(_) => Rounded {
+                p: approx,
+                x_exact: true,
+                y_exact: true,
+            },
+            ExactPoint::Crossing(c) => Rounded {
+                p: approx,
+                x_exact: c.s.a.x == c.s.b.x || c.t.a.x == c.t.b.x,
+                y_exact: c.s.a.y == c.s.b.y || c.t.a.y == c.t.b.y,
+            },
+        }
+    }
+}
+
+/// Exact comparison of x coordinates, decided by the rounded points where they differ
+/// (rounding to nearest is monotone) or are both exact.
+pub(super) fn compare_x_filtered(
+    a: &ExactPoint,
+    ra: &Rounded,
+    b: &ExactPoint,
+    rb: &Rounded,
+) -> Ordering {
+    if ra.p.x != rb.p.x || (ra.x_exact && rb.x_exact) {
+        ra.p.x.total_cmp(&rb.p.x)
+    } else {
+        a.compare_x(b)
+    }
+}
+
+/// As [`compare_x_filtered`] for y.
+pub(super) fn compare_y_filtered(
+    a: &ExactPoint,
+    ra: &Rounded,
+    b: &ExactPoint,
+    rb: &Rounded,
+) -> Ordering {
+    if ra.p.y != rb.p.y || (ra.y_exact && rb.y_exact) {
+        ra.p.y.total_cmp(&rb.p.y)
+    } else {
+        a.compare_y(b)
+    }
+}
+
+/// Exact lexicographic (x, then y) comparison, filtered as [`compare_x_filtered`].
+pub(crate) fn compare_xy_filtered(
+    a: &ExactPoint,
+    ra: &Rounded,
+    b: &ExactPoint,
+    rb: &Rounded,
+) -> Ordering {
+    compare_x_filtered(a, ra, b, rb).then_with(|| compare_y_filtered(a, ra, b, rb))
+}
+
+/// Orientation of `(u, l, q)`, exactly: first in `f64` from `q`'s rounded point `pq`
+/// with an error bound covering both the arithmetic and the rounding of a constructed
+/// `q` (at most half an ulp per coordinate), then, when that cannot decide, by
+/// [`orient_exact`].
+fn side(q: &ExactPoint, pq: Point2, u: Point2, l: Point2) -> Orientation {
+    let (dx, dy) = (l.x - u.x, l.y - u.y);
+    let (qx, qy) = (pq.x - u.x, pq.y - u.y);
+    let (left, right) = (dx * qy, dy * qx);
+    let det = left - right;
+    // Arithmetic: the bound of the classic orientation filter, generously rounded up.
+    let mut err = 4.0e-16 * (left.abs() + right.abs());
+    if let ExactPoint::Crossing(_) = q {
+        // |q - pq| <= 2^-53 |pq| per coordinate; |dx|, |dy| carry relative error 2^-53.
+        err += 1.2e-16 * (dx.abs() + dy.abs()) * (pq.x.abs() + pq.y.abs()) * 1.01;
+    }
+    if det.abs() > err && det.abs() > 1e-280 && err.is_finite() {
+        if det > 0.0 {
+            Orientation::CounterClockwise
+        } else {
+            Orientation::Clockwise
+        }
+    } else {
+        orient_exact(&ExactPoint::Input(u), &ExactPoint::Input(l), q)
+    }
+}
