@@ -496,3 +496,37 @@ fn dag_size_and_depth_are_linear_and_logarithmic() {
         }
     }
 }
+
+/// Large enough for the search to start from the grid of cells (at least 64 segments):
+/// points on an integer grid (equal x everywhere, cell bounds through vertices), queries
+/// on the half-integer grid, every answer against brute force; and a polygon layer.
+#[test]
+fn grid_started_queries_match_brute_force() {
+    let mut state = 99u64;
+    let mut next = move |m: u64| {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        ((state >> 33) % m) as f64
+    };
+    let pts: Vec<Point2> = (0..160).map(|_| p(next(21), next(13))).collect();
+    let t = delaunay(&pts).unwrap();
+    let v = t.vertices();
+    let segs: Vec<Segment2> = t
+        .edges()
+        .iter()
+        .map(|&(a, b)| Segment2::new(v[a as usize], v[b as usize]))
+        .collect();
+    assert!(segs.len() >= 64);
+    for seed in [1, 2] {
+        let map = TrapezoidalMap::with_seed(&segs, seed).unwrap();
+        map.validate().unwrap();
+        for q in grid_queries(0.0, 20.0) {
+            check_map_query(&map, &segs, q);
+        }
+    }
+    let layer = triangles_layer(&pts).unwrap();
+    let mut queries = grid_queries(0.0, 20.0);
+    queries.extend((0..2000).map(|_| p(next(2100) / 100.0, next(1300) / 100.0)));
+    check_layer(&layer, &queries, 7);
+}

@@ -228,14 +228,14 @@ impl TrapezoidalMap {
 
     /// Size and depth of the search structure.
     pub fn stats(&self) -> DagStats {
-        let (x, y, leaves, depth) = self.core.dag_stats();
+        let f = &self.core.frozen;
         DagStats {
             segments: self.core.segs.len(),
-            trapezoids: leaves,
-            x_nodes: x,
-            y_nodes: y,
-            nodes: self.core.nodes.len(),
-            depth,
+            trapezoids: self.core.traps.len(),
+            x_nodes: f.x_nodes,
+            y_nodes: f.y_nodes,
+            nodes: f.x_nodes + f.y_nodes + self.core.traps.len(),
+            depth: f.depth,
         }
     }
 
@@ -280,8 +280,7 @@ impl TrapezoidalMap {
 
     /// Check the map's invariants: neighbour links are mutual, every trapezoid's left
     /// point precedes its right point (lexicographically), its top and bottom segments
-    /// span its x-range and the top is above the bottom, and every leaf of D is a distinct
-    /// trapezoid. Error: the first broken invariant.
+    /// span its x-range and the top is above the bottom, and every trapezoid is a leaf of D. Error: the first broken invariant.
     pub fn validate(&self) -> Result<()> {
         let c = &self.core;
         let bad = |m: String| Err(Error::Verification(m));
@@ -341,14 +340,12 @@ impl TrapezoidalMap {
             }
         }
         let mut seen = vec![false; n];
-        for node in &c.nodes {
-            if node.kind == super::trapmap::LEAF {
-                let t = node.idx as usize;
-                if t >= n || seen[t] {
-                    return bad(format!("leaf for trapezoid {t} is missing or repeated"));
-                }
-                seen[t] = true;
+        for t in c.frozen.leaves() {
+            let t = t as usize;
+            if t >= n {
+                return bad(format!("a leaf names trapezoid {t} of {n}"));
             }
+            seen[t] = true;
         }
         if let Some(t) = seen.iter().position(|s| !s) {
             return bad(format!("trapezoid {t} has no leaf"));

@@ -89,7 +89,10 @@ pub(crate) struct Core {
     /// Endpoints `[left, right]` in lexicographic order.
     pub segs: Vec<[u32; 2]>,
     pub traps: Vec<Trap>,
+    /// The search structure as built (dropped by [`Core::freeze`]).
     pub nodes: Vec<Node>,
+    /// The search structure laid out for queries.
+    pub frozen: Frozen,
 }
 
 /// Lexicographic (x, then y) comparison: the x-order after the shear.
@@ -152,6 +155,7 @@ impl Core {
             segs,
             traps: Vec::with_capacity(4 * order.len() + 1),
             nodes: Vec::with_capacity(8 * order.len() + 1),
+            frozen: Frozen::default(),
         };
         core.traps.push(Trap::new(NONE, NONE, NONE, NONE));
         core.nodes.push(Node {
@@ -171,6 +175,7 @@ impl Core {
             core.insert(s, &mut b)?;
         }
         core.compact(&b.leaf);
+        core.freeze();
         Ok(core)
     }
 
@@ -440,59 +445,13 @@ impl Core {
     /// vertex it lies on.
     #[inline]
     pub fn locate(&self, q: Point2) -> CoreHit {
-        let nodes = &self.nodes[..];
-        let points = &self.points[..];
-        let mut n = 0usize;
-        loop {
-            let node = nodes[n];
-            n = match node.kind {
-                LEAF => return CoreHit::Trap(node.idx),
-                XNODE => match lex(q, points[node.idx as usize]) {
-                    Ordering::Less => node.a,
-                    Ordering::Greater => node.b,
-                    Ordering::Equal => return CoreHit::Point(node.idx),
-                },
-                _ => {
-                    let [l, r] = self.segs[node.idx as usize];
-                    let (lp, rp) = (points[l as usize], points[r as usize]);
-                    match orient(lp, rp, q) {
-                        Ordering::Greater => node.a,
-                        Ordering::Less => node.b,
-                        Ordering::Equal => {
-                            // Within the segment's x-range and on its line.
-                            return if q == lp {
-                                CoreHit::Point(l)
-                            } else if q == rp {
-                                CoreHit::Point(r)
-                            } else {
-                                CoreHit::Seg(node.idx)
-                            };
-                        }
-                    }
-                }
-            } as usize;
-        }
+        self.frozen.locate(q, &self.segs)
     }
 
-    /// (x-nodes, y-nodes, leaves, longest root-to-leaf path counted in internal nodes).
-    pub fn dag_stats(&self) -> (usize, usize, usize, usize) {
-        let mut depth = vec![0u32; self.nodes.len()];
-        let (mut x, mut y, mut leaves) = (0, 0, 0);
-        for i in (0..self.nodes.len()).rev() {
-            let n = self.nodes[i];
-            match n.kind {
-                LEAF => leaves += 1,
-                kind => {
-                    if kind == XNODE {
-                        x += 1;
-                    } else {
-                        y += 1;
-                    }
-                    depth[i] = 1 + depth[n.a as usize].max(depth[n.b as usize]);
-                }
-            }
-        }
-        (x, y, leaves, depth.first().copied().unwrap_or(0) as usize)
+    /// Lay D out for queries (see [`Frozen`]) and drop the construction's nodes.
+    fn freeze(&mut self) {
+        self.frozen = Frozen::new(self);
+        self.nodes = Vec::new();
     }
 }
 
@@ -504,4 +463,273 @@ struct Builder {
     old: Vec<Trap>,
     up: Vec<u32>,
     lo: Vec<u32>,
+}
+
+/// Child reference flag: a leaf, whose low 30 bits are the trapezoid.
+const LEAF_REF: u32 = 1 << 31;
+/// Flag in a node's `a`: the node is an x-node.
+const X_FLAG: u32 = 1 << 30;
+const REF_MASK: u32 = !X_FLAG;
+
+/// A node of the query layout: two child references (a leaf is folded into its
+/// parent's reference, so a query never loads it) and the coordinates it tests inline:
+/// an x-node's point in `c[0..2]`, a y-node's left and right endpoints in `c[0..4]`.
+/// One node is one 40-byte record: about one cache miss per level.
+#[derive(Debug, Clone, Copy, Default)]
+struct QNode {
+    a: u32,
+    b: u32,
+    c: [f64; 4],
+}
+
+/// D in depth-first preorder (a node's first child usually follows it), with the
+/// statistics computed on the way.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Frozen {
+    nodes: Vec<QNode>,
+    /// The point (x-node) or segment (y-node) of each node, for reporting hits.
+    item: Vec<u32>,
+    root: u32,
+    /// Where to start the search, per cell of a uniform grid over the points.
+    grid: Grid,
+    pub x_nodes: usize,
+    pub y_nodes: usize,
+    /// The longest root-to-leaf path, in internal nodes.
+    pub depth: usize,
+}
+
+impl Frozen {
+    fn new(core: &Core) -> Frozen {
+        let old = &core.nodes;
+        if old.is_empty() {
+            return Frozen::default();
+        }
+        let mut id = vec![NONE; old.len()];
+        let mut order = Vec::new();
+        // Iterative DFS: preorder numbering and postorder (for the depths).
+        let mut post = Vec::new();
+        let mut stack = vec![(0u32, false)];
+        while let Some((n, done)) = stack.pop() {
+            let node = old[n as usize];
+            if node.kind == LEAF {
+                continue;
+            }
+            if done {
+                post.push(n);
+                continue;
+            }
+            if id[n as usize] != NONE {
+                continue;
+            }
+            id[n as usize] = order.len() as u32;
+            order.push(n);
+            stack.push((n, true));
+            stack.push((node.b, false));
+            stack.push((node.a, false));
+        }
+        let mut depth = vec![0u32; old.len()];
+        for &n in &post {
+            let node = old[n as usize];
+            depth[n as usize] = 1 + depth[node.a as usize].max(depth[node.b as usize]);
+        }
+        let reference = |n: u32| {
+            let node = old[n as usize];
+            if node.kind == LEAF {
+                LEAF_REF | node.idx
+            } else {
+                id[n as usize]
+            }
+        };
+        let mut f = Frozen {
+            nodes: Vec::with_capacity(order.len()),
+            item: Vec::with_capacity(order.len()),
+            root: reference(0),
+            grid: Grid::default(),
+            x_nodes: 0,
+            y_nodes: 0,
+            depth: depth[0] as usize,
+        };
+        for &n in &order {
+            let node = old[n as usize];
+            let (a, b) = (reference(node.a), reference(node.b));
+            let q = if node.kind == XNODE {
+                f.x_nodes += 1;
+                let p = core.points[node.idx as usize];
+                QNode {
+                    a: a | X_FLAG,
+                    b,
+                    c: [p.x, p.y, 0.0, 0.0],
+                }
+            } else {
+                f.y_nodes += 1;
+                let [l, r] = core.segs[node.idx as usize];
+                let (l, r) = (core.points[l as usize], core.points[r as usize]);
+                QNode {
+                    a,
+                    b,
+                    c: [l.x, l.y, r.x, r.y],
+                }
+            };
+            f.nodes.push(q);
+            f.item.push(node.idx);
+        }
+        f.grid = Grid::new(&f, &core.points, core.segs.len());
+        f
+    }
+
+    /// The deepest node on the common search path of every point of the closed box
+    /// `[x0, x1] × [y0, y1]`: below it, points of the box part ways. Exact: an x-node
+    /// is passed when the box is strictly on one side of its vertical line, a y-node
+    /// when all four corners are strictly on one side of its segment's line (then, by
+    /// convexity, so is the whole box).
+    fn common_start(&self, x0: f64, x1: f64, y0: f64, y1: f64) -> u32 {
+        let mut r = self.root;
+        while r & LEAF_REF == 0 {
+            let n = &self.nodes[r as usize];
+            r = if n.a & X_FLAG != 0 {
+                if x1 < n.c[0] {
+                    n.a & REF_MASK
+                } else if x0 > n.c[0] {
+                    n.b
+                } else {
+                    break;
+                }
+            } else {
+                let (l, rp) = (Point2::new(n.c[0], n.c[1]), Point2::new(n.c[2], n.c[3]));
+                let first = orient(l, rp, Point2::new(x0, y0));
+                let same = first != Ordering::Equal
+                    && [(x1, y0), (x0, y1), (x1, y1)]
+                        .iter()
+                        .all(|&(x, y)| orient(l, rp, Point2::new(x, y)) == first);
+                match (same, first) {
+                    (true, Ordering::Greater) => n.a,
+                    (true, _) => n.b,
+                    _ => break,
+                }
+            };
+        }
+        r
+    }
+
+    /// Every trapezoid referenced by a leaf, with repetitions (for validation).
+    pub fn leaves(&self) -> Vec<u32> {
+        let mut out: Vec<u32> = self
+            .nodes
+            .iter()
+            .flat_map(|n| [n.a & REF_MASK, n.b])
+            .filter(|r| r & LEAF_REF != 0)
+            .map(|r| r & !LEAF_REF)
+            .collect();
+        if self.root & LEAF_REF != 0 || self.nodes.is_empty() {
+            out.push(self.root & !LEAF_REF);
+        }
+        out
+    }
+
+    #[inline]
+    fn locate(&self, q: Point2, segs: &[[u32; 2]]) -> CoreHit {
+        let nodes = &self.nodes[..];
+        let mut r = self.grid.start(q).unwrap_or(self.root);
+        while r & LEAF_REF == 0 {
+            let n = &nodes[r as usize];
+            let next = if n.a & X_FLAG != 0 {
+                match lex(q, Point2::new(n.c[0], n.c[1])) {
+                    Ordering::Less => n.a & REF_MASK,
+                    Ordering::Greater => n.b,
+                    Ordering::Equal => return CoreHit::Point(self.item[r as usize]),
+                }
+            } else {
+                let (l, rp) = (Point2::new(n.c[0], n.c[1]), Point2::new(n.c[2], n.c[3]));
+                match orient(l, rp, q) {
+                    Ordering::Greater => n.a,
+                    Ordering::Less => n.b,
+                    Ordering::Equal => {
+                        // Within the segment's x-range and on its line.
+                        let s = self.item[r as usize];
+                        let [li, ri] = segs[s as usize];
+                        return if q == l {
+                            CoreHit::Point(li)
+                        } else if q == rp {
+                            CoreHit::Point(ri)
+                        } else {
+                            CoreHit::Seg(s)
+                        };
+                    }
+                }
+            };
+            r = next;
+        }
+        CoreHit::Trap(r & !LEAF_REF)
+    }
+}
+
+/// A uniform grid over the points' bounding box giving, per cell, the node where the
+/// searches of all the cell's points part ways ([`Frozen::common_start`]): a query
+/// skips the top of D. The cell bounds are stored; a query uses a cell only after
+/// checking, exactly, that it lies in the cell's closed box (else it starts at the root).
+#[derive(Debug, Clone, Default)]
+struct Grid {
+    xs: Vec<f64>,
+    ys: Vec<f64>,
+    inv_w: f64,
+    inv_h: f64,
+    start: Vec<u32>,
+}
+
+impl Grid {
+    fn new(f: &Frozen, points: &[Point2], segments: usize) -> Grid {
+        if segments < 64 || points.is_empty() {
+            return Grid::default();
+        }
+        let (mut lo, mut hi) = (points[0], points[0]);
+        for p in points {
+            lo = Point2::new(lo.x.min(p.x), lo.y.min(p.y));
+            hi = Point2::new(hi.x.max(p.x), hi.y.max(p.y));
+        }
+        let (w, h) = (hi.x - lo.x, hi.y - lo.y);
+        if !(w > 0.0 && h > 0.0 && w.is_finite() && h.is_finite()) {
+            return Grid::default();
+        }
+        // About one cell per two segments, square cells.
+        let cells = (segments / 2) as f64;
+        let nx = ((cells * w / h).sqrt().ceil() as usize).clamp(1, 1 << 12);
+        let ny = ((cells * h / w).sqrt().ceil() as usize).clamp(1, 1 << 12);
+        let xs: Vec<f64> = (0..=nx)
+            .map(|i| lo.x + w * (i as f64 / nx as f64))
+            .collect();
+        let ys: Vec<f64> = (0..=ny)
+            .map(|j| lo.y + h * (j as f64 / ny as f64))
+            .collect();
+        let mut start = Vec::with_capacity(nx * ny);
+        for j in 0..ny {
+            for i in 0..nx {
+                start.push(f.common_start(xs[i], xs[i + 1], ys[j], ys[j + 1]));
+            }
+        }
+        Grid {
+            inv_w: nx as f64 / w,
+            inv_h: ny as f64 / h,
+            xs,
+            ys,
+            start,
+        }
+    }
+
+    /// The start node for `q`, if `q` is (exactly) inside the cell its coordinates round to.
+    #[inline(always)]
+    fn start(&self, q: Point2) -> Option<u32> {
+        let (nx, ny) = (self.xs.len().checked_sub(1)?, self.ys.len().checked_sub(1)?);
+        let fx = (q.x - self.xs[0]) * self.inv_w;
+        let fy = (q.y - self.ys[0]) * self.inv_h;
+        if !(fx >= 0.0 && fy >= 0.0) {
+            return None;
+        }
+        let (i, j) = ((fx as usize).min(nx - 1), (fy as usize).min(ny - 1));
+        if self.xs[i] <= q.x && q.x <= self.xs[i + 1] && self.ys[j] <= q.y && q.y <= self.ys[j + 1]
+        {
+            Some(self.start[j * nx + i])
+        } else {
+            None
+        }
+    }
 }
