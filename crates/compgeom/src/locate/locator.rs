@@ -133,9 +133,17 @@ impl PointLocator {
     /// (shared endpoints, an endpoint on another segment and collinear overlaps are
     /// fine); the first crossing pair is an `Err`.
     pub fn from_segments(segments: &[Segment2]) -> Result<(PointLocator, SegmentsDcel)> {
+        Self::from_segments_with_seed(segments, DEFAULT_SEED)
+    }
+
+    /// [`PointLocator::from_segments`] with the insertion order drawn from `seed`.
+    pub fn from_segments_with_seed(
+        segments: &[Segment2],
+        seed: u64,
+    ) -> Result<(PointLocator, SegmentsDcel)> {
         check_no_crossings(segments)?;
         let d = Dcel::from_segments(segments)?;
-        Ok((Self::from_dcel(&d)?, d))
+        Ok((Self::from_dcel_with_seed(&d, seed)?, d))
     }
 
     /// The locator of the subdivision of [`Dcel::from_polygons`]`(polygons)` (each face
@@ -143,6 +151,14 @@ impl PointLocator {
     /// edges and vertices but their boundaries must not cross; the first crossing is an
     /// `Err` naming the two polygons (numbered as in `polygons`).
     pub fn from_polygons(polygons: &MultiPolygon) -> Result<(PointLocator, PolygonsDcel)> {
+        Self::from_polygons_with_seed(polygons, DEFAULT_SEED)
+    }
+
+    /// [`PointLocator::from_polygons`] with the insertion order drawn from `seed`.
+    pub fn from_polygons_with_seed(
+        polygons: &MultiPolygon,
+        seed: u64,
+    ) -> Result<(PointLocator, PolygonsDcel)> {
         let (segs, owner) = polygon_segments(polygons)?;
         if let Err(e) = check_no_crossings(&segs) {
             // Name polygons rather than ring edges.
@@ -165,7 +181,7 @@ impl PointLocator {
             return Err(e);
         }
         let d = Dcel::from_polygons(polygons)?;
-        Ok((Self::from_dcel(&d)?, d))
+        Ok((Self::from_dcel_with_seed(&d, seed)?, d))
     }
 
     /// Locate `q`, exactly. Expected O(log n) time. Error: a non-finite coordinate.
