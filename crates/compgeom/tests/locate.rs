@@ -231,7 +231,13 @@ proptest! {
     /// The raw map of interior-disjoint segments (Delaunay edges: shared endpoints, equal
     /// x, vertical edges) against the brute-force segments above and below each query.
     #[test]
-    fn trapezoidal_map_vs_brute_force(pts in grid_points(6, 16), seed in any::<u64>()) {
+    fn trapezoidal_map_vs_brute_force(
+        pts in grid_points(6, 16),
+        seed in any::<u64>(),
+        scale in prop::sample::select(vec![1.0, 0.1, 1e-300, 1e300, 3.0e-320]),
+    ) {
+        // Scaled copies: tiny (subnormal) and huge coordinates exercise the exact fallback.
+        let pts: Vec<Point2> = pts.iter().map(|q| p(q.x * scale, q.y * scale)).collect();
         let Ok(t) = delaunay(&pts) else { return Ok(()) };
         let v = t.vertices();
         let segs: Vec<Segment2> = t.edges().iter().map(|&(a, b)| Segment2::new(v[a as usize], v[b as usize])).collect();
@@ -239,7 +245,7 @@ proptest! {
         map.validate().unwrap();
         prop_assert!(map.trapezoid_count() <= 3 * segs.len() + 1);
         for q in grid_queries(0.0, 6.0) {
-            check_map_query(&map, &segs, q);
+            check_map_query(&map, &segs, p(q.x * scale, q.y * scale));
         }
     }
 }
