@@ -11,6 +11,7 @@ mod delaunay;
 mod hull;
 mod intersect;
 mod kernel;
+mod locate;
 mod lp;
 mod range;
 mod util;
@@ -26,6 +27,7 @@ const GROUPS: &[&str] = &[
     "boolean",
     "lp",
     "range",
+    "locate",
     "voronoi",
     "delaunay",
 ];
@@ -36,6 +38,7 @@ fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
         "hull" => Some(hull::run(quick)),
         "intersect" => Some(intersect::run(quick)),
         "range" => Some(range::run(quick)),
+        "locate" => Some(locate::run(quick)),
         "lp" => Some(lp::run(quick)),
         "delaunay" => Some(delaunay::run(quick)),
         "voronoi" => Some(voronoi::run(quick)),

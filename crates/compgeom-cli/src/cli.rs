@@ -84,6 +84,9 @@ pub enum Command {
     /// Orthogonal range queries: points in rectangles, counts, k nearest (book chapter 5).
     #[command(after_long_help = crate::commands::range::JSON_HELP)]
     Range(RangeArgs),
+    /// Point location in a polygon layer or segments: trapezoidal map (book chapter 6).
+    #[command(after_long_help = crate::commands::locate::JSON_HELP)]
+    Locate(crate::commands::locate::LocateArgs),
     /// Voronoi diagram of points (nearest or farthest site), cells clipped to a rectangle or any polygon (chapter 7).
     #[command(after_long_help = crate::commands::voronoi::JSON_HELP)]
     Voronoi(VoronoiArgs),

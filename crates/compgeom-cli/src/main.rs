@@ -33,6 +33,7 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
         cli::Command::Hull(args) => commands::hull::run(&args),
         cli::Command::Intersect(args) => commands::intersect::run(&args),
         cli::Command::Range(args) => commands::range::run(&args),
+        cli::Command::Locate(args) => commands::locate::run(&args),
         cli::Command::Window(args) => commands::window::run(&args),
         cli::Command::Halfplanes(args) => commands::halfplanes::run(&args),
         cli::Command::Lp(args) => commands::lp::run(&args),

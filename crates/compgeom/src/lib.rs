@@ -23,6 +23,7 @@
 //! | 2.4 | boolean operations | [`overlay::boolean`], [`overlay::boolean_with`], [`overlay::union_all`], [`overlay::make_valid`] |
 //! | 4 | half-plane intersection, linear programming, smallest enclosing disc, casting | [`lp::intersect_halfplanes`], [`lp::lp2d`], [`lp::lp_d`], [`lp::smallest_enclosing_disc`], [`lp::castability`] |
 //! | 5 | orthogonal range searching | [`range::KdTree`], [`range::RangeTree`], [`range::LayeredRangeTree`], [`range::RangeTreeD`] |
+//! | 6 | point location: trapezoidal map, randomized incremental search structure | [`locate::PointLocator`], [`locate::TrapezoidalMap`], [`locate::check_no_crossings`] |
 //! | 7 | Voronoi diagram (dual of Delaunay, Fortune), farthest-point diagram | [`voronoi::voronoi_diagram`], [`voronoi::dual_voronoi`], [`voronoi::fortune_voronoi`], [`voronoi::clip_cells`], [`voronoi::clip_cells_to_polygon`], [`voronoi::farthest_point_voronoi`], [`voronoi::verify_voronoi`], [`voronoi::NearestSite`] |
 //! | 9 | Delaunay triangulation, constrained Delaunay, terrains, EMST | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::constrained_delaunay`], [`delaunay::polygon_delaunay`], [`delaunay::Terrain`], [`delaunay::euclidean_mst`], [`delaunay::verify_delaunay`], [`delaunay::verify_cdt`] |
 //! | 10 | windowing: interval, priority search and segment trees | [`windowing::IntervalTree`], [`windowing::PrioritySearchTree`], [`windowing::SegmentTree`], [`windowing::AxisParallelWindow`], [`windowing::SegmentWindow`] |
@@ -43,6 +44,7 @@ pub mod hull;
 pub mod intersect;
 pub mod io;
 pub mod kernel;
+pub mod locate;
 pub mod lp;
 pub mod overlay;
 pub mod range;

@@ -9,6 +9,7 @@ pub mod halfplanes;
 pub mod hull;
 pub mod interpolate;
 pub mod intersect;
+pub mod locate;
 pub mod lp;
 pub mod overlay;
 pub mod range;

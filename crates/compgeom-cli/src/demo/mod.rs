@@ -9,6 +9,7 @@
 mod delaunay;
 mod hull;
 mod intersect;
+mod locate;
 mod lp;
 mod overlay;
 mod range;
@@ -40,6 +41,7 @@ const SECTIONS: &[SectionFn] = &[
     overlay::section,
     lp::section,
     range::section,
+    locate::section,
     voronoi::section,
     delaunay::section,
 ];

@@ -1,0 +1,267 @@
+//! `compgeom locate`: point location (book chapter 6) via `compgeom::locate`: the
+//! trapezoidal map of a polygon layer or of segments, with its randomized search
+//! structure, answering which feature holds each query point.
+
+use crate::cli::{InputArgs, InputFormat, OutputArgs, OutputFormat};
+use crate::error::CliError;
+use crate::output;
+use clap::Args;
+use compgeom::dcel::FaceId;
+use compgeom::io::{read_polygons, read_segments};
+use compgeom::locate::{polygons_at, Location, PointLocator, DEFAULT_SEED};
+use compgeom::render::{Layer, Picture, Style};
+use compgeom::{Bbox2, Point2};
+use serde_json::{json, Value};
+use std::path::PathBuf;
+
+/// `--help` text describing the JSON output.
+pub const JSON_HELP: &str = "\
+MAP is a polygon layer (WKT (MULTI)POLYGON, GeoJSON (Multi)Polygon features, CSV rings),
+each polygon a feature, or a set of segments (WKT (MULTI)LINESTRING, GeoJSON, CSV
+x1,y1,x2,y2 lines); polygons are tried first. Polygons may share edges and vertices,
+segments may touch and overlap, but boundaries must not cross (an error names the first
+crossing pair). POINTS holds the query points (any points format).
+
+JSON output (--format json, the default) is one object:
+  results  [{\"feature\": i | null, \"on\": \"face\" | \"edge\" | \"vertex\"}, ...], one per query
+           in query order. For a polygon layer, feature is the index of the polygon
+           containing the point (the lowest, where several contain it; boundaries
+           included), null outside all; for segments, the index of the lowest segment
+           through the point, null when the point is on none, and then also
+           \"face\": the index of the face of the segments' subdivision holding the point
+           (0 = the unbounded face). `on` says whether the point is inside a face, on an
+           edge, or at a vertex of the subdivision.
+Polygons are numbered in reading order (a MultiPolygon feature gives several). Every
+decision is exact. --seed picks the random insertion order (the answers do not depend on
+it, only the search structure does). --verify checks the map's and the subdivision's
+invariants. --svg draws the trapezoidal map with its vertical extensions and the query
+points coloured by answer.
+
+Examples:
+  compgeom locate districts.geojson --queries stops.csv
+  compgeom locate walls.wkt --queries probes.csv --seed 7 --svg map.svg";
+
+/// Arguments of `compgeom locate`.
+#[derive(Debug, Clone, Args)]
+pub struct LocateArgs {
+    /// The map: a polygon layer or segments, or `-` for standard input.
+    #[arg(value_name = "MAP")]
+    pub map: PathBuf,
+
+    /// Format of MAP. Default: from the file extension, otherwise from the content.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub input_format: Option<InputFormat>,
+
+    /// Query points (`-` for standard input).
+    #[arg(long, value_name = "POINTS")]
+    pub queries: PathBuf,
+
+    /// Seed of the random insertion order of the segments.
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_SEED)]
+    pub seed: u64,
+
+    /// Output, picture and verification.
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// The map read: polygons, or segments.
+enum Map {
+    Polygons(compgeom::MultiPolygon),
+    Segments(Vec<compgeom::Segment2>),
+}
+
+fn read_map(args: &LocateArgs) -> Result<Map, CliError> {
+    let src = InputArgs {
+        input: args.map.clone(),
+        input_format: args.input_format,
+    }
+    .read()?;
+    match read_polygons(&src.text, src.format, &src.name) {
+        Ok(p) => Ok(Map::Polygons(p)),
+        Err(pe) => match read_segments(&src.text, src.format, &src.name) {
+            Ok(s) => Ok(Map::Segments(s)),
+            Err(_) => Err(pe.into()),
+        },
+    }
+}
+
+/// Run `compgeom locate`.
+pub fn run(args: &LocateArgs) -> Result<(), CliError> {
+    if args.output.format != OutputFormat::Json {
+        return Err(CliError::bad_input(format!(
+            "locate writes json, not {:?}",
+            args.output.format
+        )));
+    }
+    let map = read_map(args)?;
+    let queries = InputArgs {
+        input: args.queries.clone(),
+        input_format: None,
+    }
+    .read_points()?;
+    // (locator, per-query JSON, per-query colour key for the picture)
+    let (loc, results, faces) = match &map {
+        Map::Polygons(polys) => {
+            let (loc, dcel) = PointLocator::from_polygons_with_seed(polys, args.seed)?;
+            if args.output.verify {
+                loc.map().validate()?;
+                dcel.validate()?;
+            }
+            let found = loc.locate_all(&queries)?;
+            let mut results = Vec::with_capacity(found.len());
+            let mut keys = Vec::with_capacity(found.len());
+            for l in found {
+                let feature = polygons_at(&dcel, l).first().copied();
+                results.push(json!({"feature": feature, "on": on(l)}));
+                keys.push((feature, l));
+            }
+            (loc, results, keys)
+        }
+        Map::Segments(segs) => {
+            let (loc, dcel) = PointLocator::from_segments_with_seed(segs, args.seed)?;
+            if args.output.verify {
+                loc.map().validate()?;
+                dcel.validate()?;
+            }
+            let found = loc.locate_all(&queries)?;
+            let mut results = Vec::with_capacity(found.len());
+            let mut keys = Vec::with_capacity(found.len());
+            for l in found {
+                let through = |h: compgeom::dcel::HalfEdgeId| {
+                    dcel.half_edge(h).data.iter().map(|s| s.segment).min()
+                };
+                let v = match l {
+                    Location::Face(f) => {
+                        keys.push((Some(f.0), l));
+                        json!({"feature": Value::Null, "on": "face", "face": f.0})
+                    }
+                    Location::Edge(h) => {
+                        keys.push((None, l));
+                        json!({"feature": through(h), "on": "edge"})
+                    }
+                    Location::Vertex(v) => {
+                        keys.push((None, l));
+                        json!({"feature": dcel.around(v).filter_map(through).min(), "on": "vertex"})
+                    }
+                };
+                results.push(v);
+            }
+            (loc, results, keys)
+        }
+    };
+    if let Some(svg) = &args.output.svg {
+        let (segs, is_polygons) = match &map {
+            Map::Polygons(p) => (polygon_edges(p), true),
+            Map::Segments(s) => (s.clone(), false),
+        };
+        let pic = locate_picture(&loc, &segs, is_polygons, &queries, &faces);
+        output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
+    }
+    let mut value = json!({ "results": results });
+    if args.output.verify {
+        value["verified"] = json!(true);
+    }
+    let text = serde_json::to_string(&value)
+        .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?;
+    output::emit(args.output.output.as_deref(), &output::with_newline(text))
+}
+
+fn on(l: Location) -> &'static str {
+    match l {
+        Location::Face(_) => "face",
+        Location::Edge(_) => "edge",
+        Location::Vertex(_) => "vertex",
+    }
+}
+
+const PALETTE: [&str; 8] = [
+    "#1f77b4", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#ff7f0e",
+];
+
+/// The edges of every ring of a polygon layer.
+pub fn polygon_edges(p: &compgeom::MultiPolygon) -> Vec<compgeom::Segment2> {
+    p.0.iter()
+        .flat_map(|poly| poly.rings())
+        .flat_map(|r| {
+            (0..r.len()).map(move |i| compgeom::Segment2::new(r[i], r[(i + 1) % r.len()]))
+        })
+        .collect()
+}
+
+/// The trapezoidal map (trapezoids with their vertical sides), the map's segments `segs`,
+/// and the queries coloured by answer: `keys` gives per query the feature (polygon
+/// layers) or face (segments) and the location; red on an edge, black at a vertex, grey
+/// outside every feature.
+pub fn locate_picture(
+    loc: &PointLocator,
+    segs: &[compgeom::Segment2],
+    is_polygons: bool,
+    queries: &[Point2],
+    keys: &[(Option<usize>, Location)],
+) -> Picture {
+    let m = loc.map();
+    let st = m.stats();
+    let mut bbox = Bbox2::of_points(m.vertices().iter().chain(queries));
+    if bbox.is_empty() {
+        bbox = Bbox2::of_points(&[Point2::new(0.0, 0.0), Point2::new(1.0, 1.0)]);
+    }
+    let pad = 0.08 * bbox.width().max(bbox.height()).max(1e-9);
+    let bbox = Bbox2::of_points(&[
+        Point2::new(bbox.min.x - pad, bbox.min.y - pad),
+        Point2::new(bbox.max.x + pad, bbox.max.y + pad),
+    ]);
+    let mut pic = Picture::new(800, 640).with_title(format!(
+        "trapezoidal map: {} segments, {} trapezoids, search structure {} nodes, depth {}",
+        st.segments, st.trapezoids, st.nodes, st.depth
+    ));
+    let mut traps = Layer::new(
+        format!(
+            "trapezoids ({}) and vertical extensions",
+            m.trapezoid_count()
+        ),
+        Style::area("#7f7f7f")
+            .with_fill("#c6dbef")
+            .with_fill_opacity(0.35)
+            .with_stroke_width(0.8)
+            .with_dash("4 3"),
+    );
+    for t in 0..m.trapezoid_count() {
+        let poly = m.trapezoid_polygon(t, &bbox);
+        let (a, b) = (poly[0].x, poly[1].x);
+        if b > a {
+            traps = traps.ring(&poly);
+        }
+    }
+    pic.add(traps);
+    pic.add(Layer::new("map", Style::lines("#333333").with_stroke_width(1.6)).segments(segs));
+    let mut groups: Vec<(String, &str, Vec<Point2>)> = Vec::new();
+    let mut add = |name: String, colour: &'static str, q: Point2| {
+        if let Some(g) = groups.iter_mut().find(|g| g.0 == name) {
+            g.2.push(q);
+        } else {
+            groups.push((name, colour, vec![q]));
+        }
+    };
+    for (&q, &(key, l)) in queries.iter().zip(keys) {
+        match l {
+            Location::Vertex(_) => add("queries at a vertex".into(), "#000000", q),
+            Location::Edge(_) => add("queries on an edge".into(), "#d62728", q),
+            Location::Face(f) => match key {
+                Some(k) if f != FaceId::UNBOUNDED || is_polygons => {
+                    let what = if is_polygons { "feature" } else { "face" };
+                    add(
+                        format!("queries in {what} {k}"),
+                        PALETTE[k % PALETTE.len()],
+                        q,
+                    )
+                }
+                _ => add("queries outside".into(), "#999999", q),
+            },
+        }
+    }
+    for (name, colour, pts) in groups {
+        pic.add(Layer::new(name, Style::points(colour).with_radius(3.5)).points(&pts));
+    }
+    pic
+}
