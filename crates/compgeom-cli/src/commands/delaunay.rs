@@ -26,7 +26,8 @@ JSON output (--format json, the default) is one object:
   note             present when there are no triangles (fewer than 3 distinct points, or all
                    collinear): not an error
   constraints      [[u, v], ...]  constrained edges (with --constraints or --polygon; pieces of a
-                                 constraint split at input points are listed separately)
+                                 constraint split at input points or crossings are listed
+                                 separately)
   verified         true; present only with --verify (a failed check exits 1 instead)
 
 With --constraints or --polygon, input_to_vertex covers the points, then the constraint
@@ -59,8 +60,9 @@ pub struct DelaunayArgs {
     pub algorithm: AlgorithmArg,
 
     /// Segment constraints (x1,y1,x2,y2 lines, WKT or GeoJSON): the constrained Delaunay
-    /// triangulation, with every segment an edge (split where input points lie on it).
-    /// Crossing constraints are an error.
+    /// triangulation, with every segment a union of edges (split where input points lie on
+    /// it, and at crossings with other segments: each crossing is a Steiner vertex at the
+    /// nearest f64 point, listed after the input vertices).
     #[arg(long, value_name = "SEGMENTS", conflicts_with = "polygon")]
     pub constraints: Option<std::path::PathBuf>,
 

@@ -50,6 +50,7 @@
 //! ```
 
 mod cdt;
+mod constrain;
 mod emst;
 mod fast;
 mod incremental;
