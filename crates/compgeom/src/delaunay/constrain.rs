@@ -122,6 +122,11 @@ impl<'a> Constrained<'a> {
     /// vertex id and whether it is new.
     pub(crate) fn add_point(&mut self, p: Point2) -> (u32, bool) {
         let at = self.mesh.locate_any(p);
+        self.add_point_at(p, at)
+    }
+
+    /// [`Constrained::add_point`] for a point already located at `at`.
+    pub(crate) fn add_point_at(&mut self, p: Point2, at: Found) -> (u32, bool) {
         if let Found::Vertex(v) = at {
             return (v, false);
         }
@@ -309,8 +314,9 @@ impl<'a> Constrained<'a> {
     }
 
     /// Lawson flips from the half-edges in `stack` (and those they expose) until every
-    /// unconstrained edge is locally Delaunay.
-    pub(crate) fn restore(&mut self, mut stack: Vec<u32>) {
+    /// unconstrained edge is locally Delaunay. Returns the triangles changed by flips.
+    pub(crate) fn restore(&mut self, mut stack: Vec<u32>) -> Vec<u32> {
+        let mut touched = Vec::new();
         while let Some(h) = stack.pop() {
             let m = &self.mesh;
             let f = m.twin[h as usize];
@@ -323,14 +329,77 @@ impl<'a> Constrained<'a> {
             if in_circle(m.pt(b), m.pt(a), m.pt(d), m.pt(p)) > 0 {
                 self.flip(h);
                 let (t, u) = (h / 3, f / 3);
+                touched.extend_from_slice(&[t, u]);
                 stack.extend_from_slice(&[3 * t, 3 * t + 1, 3 * u + 1, 3 * u + 2]);
             }
         }
+        touched
     }
 
     /// [`Constrained::restore`] over every edge.
     pub(crate) fn restore_all(&mut self) {
         self.restore((0..self.mesh.v.len() as u32).collect());
+    }
+
+    /// The triangles around vertex `v` (ghosts included).
+    pub(crate) fn star(&self, v: u32) -> Vec<u32> {
+        self.out_edges(v).into_iter().map(|h| h / 3).collect()
+    }
+}
+
+/// Where [`Constrained::walk_to`] ended.
+pub(crate) enum WalkTo {
+    /// The point is here.
+    At(Found),
+    /// The way is barred by the constrained edge `a–b`.
+    Blocked(u32, u32),
+    /// The walk did not settle (it may cycle in a constrained triangulation).
+    Lost,
+}
+
+impl Constrained<'_> {
+    /// The visibility walk from triangle `t` towards `p` that never crosses a constrained
+    /// edge, except `allow` (entering the ghost beyond it means `p` is outside there).
+    pub(crate) fn walk_to(&self, t: u32, p: Point2, allow: Option<(u32, u32)>) -> WalkTo {
+        let m = &self.mesh;
+        let mut cur = t;
+        let mut from = u32::MAX;
+        let limit = 64 + 4 * u64::from(m.slots());
+        let mut steps = 0u64;
+        loop {
+            steps += 1;
+            if steps > limit {
+                return WalkTo::Lost;
+            }
+            if m.is_ghost(cur) {
+                return WalkTo::At(Found::Face(cur));
+            }
+            let base = 3 * cur;
+            let mut zero_mask = 0u32;
+            let mut moved = false;
+            for k in 0..3 {
+                let h = base + k;
+                if h == from {
+                    continue;
+                }
+                let (a, b) = (m.v[h as usize], m.v[next(h) as usize]);
+                let s = orient(m.pt(a), m.pt(b), p);
+                if s < 0 {
+                    if self.is_fixed(a, b) && allow != Some(key(a, b)) {
+                        return WalkTo::Blocked(a, b);
+                    }
+                    from = m.twin[h as usize];
+                    cur = from / 3;
+                    moved = true;
+                    break;
+                } else if s == 0 {
+                    zero_mask |= 1 << k;
+                }
+            }
+            if !moved {
+                return WalkTo::At(m.classify(base, zero_mask));
+            }
+        }
     }
 }
 

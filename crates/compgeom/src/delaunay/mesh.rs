@@ -88,6 +88,17 @@ impl<'a> Mesh<'a> {
         m
     }
 
+    /// An empty mesh over `pts` (the caller adds and links triangles).
+    pub(crate) fn empty(pts: Vec<Point2>) -> Self {
+        Mesh {
+            pts: Cow::Owned(pts),
+            v: Vec::new(),
+            twin: Vec::new(),
+            last: 0,
+            stack: Vec::new(),
+        }
+    }
+
     /// Appends a point (a Steiner point) and returns its vertex id; the mesh owns its
     /// points from then on.
     pub(crate) fn push_point(&mut self, p: Point2) -> u32 {
@@ -235,7 +246,7 @@ impl<'a> Mesh<'a> {
         }
     }
 
-    fn classify(&self, base: u32, zero_mask: u32) -> Found {
+    pub(crate) fn classify(&self, base: u32, zero_mask: u32) -> Found {
         match zero_mask.count_ones() {
             0 => Found::Face(base / 3),
             1 => Found::Edge(base + zero_mask.trailing_zeros()),
