@@ -22,7 +22,7 @@
 use super::fast::{dedup_sorted, hilbert_order};
 use super::mesh::{next, prev, NONE};
 use super::pred::{in_circle, orient};
-use super::triangulation::Triangulation;
+use super::triangulation::{Triangulation, NO_NEIGHBOR};
 use crate::Point2;
 use std::cmp::Ordering;
 
@@ -318,12 +318,34 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
     for &p in &distinct {
         dag.insert(p);
     }
-    let tris: Vec<[u32; 3]> = (0..dag.children.len())
-        .filter(|&t| dag.children[t][0] == NONE)
-        .map(|t| [dag.v[3 * t], dag.v[3 * t + 1], dag.v[3 * t + 2]])
-        .filter(|t| t.iter().all(|&v| v < M2))
-        .collect();
-    Triangulation::from_triangles(pts, &tris, &rep)
+    // The leaves with real corners are the triangles; their twins give the neighbours
+    // directly (no edge matching).
+    let nodes = dag.children.len();
+    let mut id = vec![NO_NEIGHBOR; nodes];
+    let mut tris: Vec<[u32; 3]> = Vec::with_capacity(2 * n);
+    for t in 0..nodes {
+        let c = [dag.v[3 * t], dag.v[3 * t + 1], dag.v[3 * t + 2]];
+        if dag.children[t][0] == NONE && c.iter().all(|&v| v < M2) {
+            id[t] = tris.len() as u32;
+            tris.push(c);
+        }
+    }
+    let mut nbs: Vec<[u32; 3]> = Vec::with_capacity(tris.len());
+    for t in 0..nodes {
+        if id[t] == NO_NEIGHBOR {
+            continue;
+        }
+        // Neighbour opposite corner i = across half-edge i + 1.
+        nbs.push([1, 2, 0].map(|k| {
+            let g = dag.twin[3 * t + k];
+            if g == NONE {
+                NO_NEIGHBOR
+            } else {
+                id[(g / 3) as usize]
+            }
+        }));
+    }
+    Triangulation::from_triangles_and_neighbours(pts, tris, nbs, &rep)
 }
 
 /// A biased randomized insertion order (Amenta, Choi & Rote 2003): each point joins round
