@@ -323,16 +323,16 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
     let nodes = dag.children.len();
     let mut id = vec![NO_NEIGHBOR; nodes];
     let mut tris: Vec<[u32; 3]> = Vec::with_capacity(2 * n);
-    for t in 0..nodes {
+    for (t, slot) in id.iter_mut().enumerate() {
         let c = [dag.v[3 * t], dag.v[3 * t + 1], dag.v[3 * t + 2]];
         if dag.children[t][0] == NONE && c.iter().all(|&v| v < M2) {
-            id[t] = tris.len() as u32;
+            *slot = tris.len() as u32;
             tris.push(c);
         }
     }
     let mut nbs: Vec<[u32; 3]> = Vec::with_capacity(tris.len());
-    for t in 0..nodes {
-        if id[t] == NO_NEIGHBOR {
+    for (t, &slot) in id.iter().enumerate() {
+        if slot == NO_NEIGHBOR {
             continue;
         }
         // Neighbour opposite corner i = across half-edge i + 1.
