@@ -1218,15 +1218,16 @@ mod delaunay_commands {
         );
         let v: Value = serde_json::from_slice(&out.stdout).unwrap();
         assert_eq!(v["constraints"], serde_json::json!([[0, 2]]));
-        // Crossing constraints: bad input.
+        // Crossing constraints: split at the crossing (2, 2), a Steiner vertex.
         fs::write(&segs, "0,0,4,4\n4,0,0,4\n").unwrap();
-        compgeom()
-            .args(["delaunay", "--constraints"])
+        let out = compgeom()
+            .args(["delaunay", "--verify", "--constraints"])
             .arg(&segs)
             .arg(&p)
             .assert()
-            .code(2)
-            .stderr(predicate::str::contains("cross"));
+            .success();
+        let v: Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
+        assert_eq!(v["vertices"][6], serde_json::json!([2.0, 2.0]));
         let poly = d.path().join("poly.wkt");
         fs::write(
             &poly,

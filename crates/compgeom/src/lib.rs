@@ -25,7 +25,7 @@
 //! | 5 | orthogonal range searching | [`range::KdTree`], [`range::RangeTree`], [`range::LayeredRangeTree`], [`range::RangeTreeD`] |
 //! | 6 | point location: trapezoidal map, randomized incremental search structure | [`locate::PointLocator`], [`locate::TrapezoidalMap`], [`locate::check_no_crossings`] |
 //! | 7 | Voronoi diagram (dual of Delaunay, Fortune), farthest-point diagram | [`voronoi::voronoi_diagram`], [`voronoi::dual_voronoi`], [`voronoi::fortune_voronoi`], [`voronoi::clip_cells`], [`voronoi::clip_cells_to_polygon`], [`voronoi::farthest_point_voronoi`], [`voronoi::verify_voronoi`], [`voronoi::NearestSite`] |
-//! | 9 | Delaunay triangulation, constrained Delaunay, terrains, EMST | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::constrained_delaunay`], [`delaunay::polygon_delaunay`], [`delaunay::Terrain`], [`delaunay::euclidean_mst`], [`delaunay::verify_delaunay`], [`delaunay::verify_cdt`] |
+//! | 9 | Delaunay triangulation, constrained Delaunay (crossing constraints split), Delaunay refinement (Ruppert), terrains, EMST | [`delaunay::delaunay`], [`delaunay::delaunay_with`], [`delaunay::constrained_delaunay`], [`delaunay::polygon_delaunay`], [`delaunay::refine`], [`delaunay::Terrain`], [`delaunay::euclidean_mst`], [`delaunay::verify_delaunay`], [`delaunay::verify_cdt`] |
 //! | 10 | windowing: interval, priority search and segment trees | [`windowing::IntervalTree`], [`windowing::PrioritySearchTree`], [`windowing::SegmentTree`], [`windowing::AxisParallelWindow`], [`windowing::SegmentWindow`] |
 //!
 //! ## Exactness

@@ -7,8 +7,8 @@ use crate::output;
 use crate::progress::{Spinner, LARGE_INPUT};
 use clap::{Args, ValueEnum};
 use compgeom::delaunay::{
-    constrained_delaunay, delaunay_with, polygon_delaunay_with_points, verify_cdt, verify_delaunay,
-    DelaunayAlgorithm, DelaunayOptions, Triangulation,
+    constrained_delaunay, delaunay_with, polygon_delaunay_with_points, refine, verify_cdt,
+    verify_delaunay, Cdt, DelaunayAlgorithm, DelaunayOptions, RefineOptions, Triangulation,
 };
 use compgeom::io::{write_shape, Shape};
 use compgeom::render::{Layer, Picture, Style};
@@ -18,7 +18,8 @@ use serde::Serialize;
 /// `--help` text describing the JSON output.
 pub const JSON_HELP: &str = "\
 JSON output (--format json, the default) is one object:
-  vertices         [[x, y], ...]   the distinct input points in first-seen order (exact values)
+  vertices         [[x, y], ...]   the distinct input points in first-seen order (exact values),
+                                   then Steiner points (constraint crossings, refinement)
   triangles        [[i, j, k], ...] counter-clockwise, indices into vertices
   input_to_vertex  [v, ...]        for every input point, its vertex (duplicates share one)
   algorithm        \"default\" | \"incremental\"
@@ -26,7 +27,12 @@ JSON output (--format json, the default) is one object:
   note             present when there are no triangles (fewer than 3 distinct points, or all
                    collinear): not an error
   constraints      [[u, v], ...]  constrained edges (with --constraints or --polygon; pieces of a
-                                 constraint split at input points are listed separately)
+                                 constraint split at input points or crossings are listed
+                                 separately)
+  steiner          with --refine or --max-area: the number of Steiner points added (they are the
+                   last vertices)
+  exempt           with --refine: triangles left below the angle bound by the small-input-angle
+                   rule (indices into triangles; empty for inputs without angles below 60 degrees)
   verified         true; present only with --verify (a failed check exits 1 instead)
 
 With --constraints or --polygon, input_to_vertex covers the points, then the constraint
@@ -40,7 +46,8 @@ run for the same input.
 
 Examples:
   compgeom delaunay points.csv --svg delaunay.svg --verify
-  compgeom delaunay points.csv --algorithm incremental --format geojson -o tin.geojson";
+  compgeom delaunay points.csv --algorithm incremental --format geojson -o tin.geojson
+  compgeom delaunay empty.csv --polygon shape.wkt --refine 25 --max-area 0.5 --svg mesh.svg";
 
 /// Arguments of `compgeom delaunay`.
 #[derive(Debug, Clone, Args)]
@@ -59,8 +66,9 @@ pub struct DelaunayArgs {
     pub algorithm: AlgorithmArg,
 
     /// Segment constraints (x1,y1,x2,y2 lines, WKT or GeoJSON): the constrained Delaunay
-    /// triangulation, with every segment an edge (split where input points lie on it).
-    /// Crossing constraints are an error.
+    /// triangulation, with every segment a union of edges (split where input points lie on
+    /// it, and at crossings with other segments: each crossing is a Steiner vertex at the
+    /// nearest f64 point, listed after the input vertices).
     #[arg(long, value_name = "SEGMENTS", conflicts_with = "polygon")]
     pub constraints: Option<std::path::PathBuf>,
 
@@ -68,6 +76,18 @@ pub struct DelaunayArgs {
     /// their rings and POINTS (which may be an empty file), keeping only the triangles inside.
     #[arg(long, value_name = "POLY")]
     pub polygon: Option<std::path::PathBuf>,
+
+    /// Delaunay refinement (Ruppert): add Steiner points until every triangle has all angles
+    /// at least MIN_ANGLE degrees (0..=34; guaranteed to finish up to 20.7 when input
+    /// segments meet at 60 degrees or more; near smaller input angles some triangles are
+    /// left and listed in "exempt"). Only the domain (polygon interior or convex hull) is
+    /// refined.
+    #[arg(long, value_name = "MIN_ANGLE")]
+    pub refine: Option<f64>,
+
+    /// With refinement: also split every triangle of area above A.
+    #[arg(long, value_name = "A")]
+    pub max_area: Option<f64>,
 
     /// Draw the circumcircles of this many triangles in the SVG.
     #[arg(long, value_name = "N", default_value_t = 0)]
@@ -112,6 +132,10 @@ struct DelaunayJson<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     constraints: Option<&'a [(u32, u32)]>,
     #[serde(skip_serializing_if = "Option::is_none")]
+    steiner: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    exempt: Option<&'a [u32]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     note: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     verified: Option<bool>,
@@ -129,32 +153,50 @@ pub fn run(args: &DelaunayArgs) -> Result<(), CliError> {
         .read()
     };
     let mut constraints = None;
+    let mut refined = None;
+    let refining = args.refine.is_some() || args.max_area.is_some();
     let tri = {
         let _spin = Spinner::start("triangulating", large);
-        if let Some(path) = &args.constraints {
+        let cdt = if let Some(path) = &args.constraints {
             let src = read_other(path)?;
             let segs = compgeom::io::read_segments(&src.text, src.format, &src.name)?;
-            let cdt = constrained_delaunay(&points, &segs)?;
-            if args.output.verify {
-                verify_cdt(&cdt)?;
-            }
-            constraints = Some(cdt.constraints);
-            cdt.triangulation
+            Some(constrained_delaunay(&points, &segs)?)
         } else if let Some(path) = &args.polygon {
             let src = read_other(path)?;
             let polys = compgeom::io::read_polygons(&src.text, src.format, &src.name)?;
-            let cdt = polygon_delaunay_with_points(&points, &polys.0)?;
-            if args.output.verify {
-                verify_cdt(&cdt)?;
-            }
-            constraints = Some(cdt.constraints);
-            cdt.triangulation
+            Some(polygon_delaunay_with_points(&points, &polys.0)?)
+        } else if refining {
+            Some(Cdt {
+                triangulation: delaunay_with(&points, &args.algorithm.options())?,
+                constraints: Vec::new(),
+            })
         } else {
-            let t = delaunay_with(&points, &args.algorithm.options())?;
-            if args.output.verify {
-                verify_delaunay(&t)?;
+            None
+        };
+        match cdt {
+            Some(mut cdt) => {
+                if refining {
+                    let mut opts = RefineOptions::new(args.refine.unwrap_or(0.0));
+                    if let Some(a) = args.max_area {
+                        opts = opts.with_max_area(a);
+                    }
+                    let r = refine(&cdt, &opts)?;
+                    cdt = r.cdt;
+                    refined = Some((r.steiner, r.exempt));
+                }
+                if args.output.verify {
+                    verify_cdt(&cdt)?;
+                }
+                constraints = Some(cdt.constraints);
+                cdt.triangulation
             }
-            t
+            None => {
+                let t = delaunay_with(&points, &args.algorithm.options())?;
+                if args.output.verify {
+                    verify_delaunay(&t)?;
+                }
+                t
+            }
         }
     };
     let text = match args.output.format.geometry_format() {
@@ -166,6 +208,8 @@ pub fn run(args: &DelaunayArgs) -> Result<(), CliError> {
                 algorithm: args.algorithm.name(),
                 input_points: points.len(),
                 constraints: constraints.as_deref(),
+                steiner: refined.as_ref().map(|r| r.0),
+                exempt: refined.as_ref().map(|r| r.1.as_slice()),
                 note: tri
                     .is_degenerate()
                     .then_some("no triangles: fewer than 3 distinct points, or all collinear"),
@@ -177,13 +221,23 @@ pub fn run(args: &DelaunayArgs) -> Result<(), CliError> {
         Some(format) => write_shape(&triangles_shape(&tri), format)?,
     };
     if let Some(svg) = &args.output.svg {
-        let title = format!(
-            "Delaunay triangulation ({}): n = {}, {} triangles",
-            args.algorithm.name(),
-            tri.vertices().len(),
-            tri.triangles().len()
-        );
-        let picture = delaunay_picture(&tri, &title, args.circumcircles);
+        let title = match &refined {
+            Some((steiner, _)) => format!(
+                "refined constrained Delaunay mesh: {} vertices ({steiner} Steiner), {} triangles",
+                tri.vertices().len(),
+                tri.triangles().len()
+            ),
+            None => format!(
+                "Delaunay triangulation ({}): n = {}, {} triangles",
+                args.algorithm.name(),
+                tri.vertices().len(),
+                tri.triangles().len()
+            ),
+        };
+        let mut picture = delaunay_picture(&tri, &title, args.circumcircles);
+        if let Some(c) = &constraints {
+            add_constraints(&mut picture, &tri, c);
+        }
         output::write_atomic(svg, picture.to_svg_string().as_bytes())?;
     }
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
@@ -205,6 +259,22 @@ pub fn triangles_shape(tri: &Triangulation) -> Shape {
     } else {
         Shape::MultiPolygon(MultiPolygon(triangle_polygons(tri)))
     }
+}
+
+/// The constrained edges, drawn over the triangulation.
+pub fn add_constraints(pic: &mut Picture, tri: &Triangulation, constraints: &[(u32, u32)]) {
+    let v = tri.vertices();
+    let segs: Vec<compgeom::Segment2> = constraints
+        .iter()
+        .map(|&(a, b)| compgeom::Segment2::new(v[a as usize], v[b as usize]))
+        .collect();
+    pic.add(
+        Layer::new(
+            format!("constrained edges ({})", segs.len()),
+            Style::lines("#2ca02c").with_stroke_width(2.0),
+        )
+        .segments(&segs),
+    );
 }
 
 /// A circle as a 64-gon (drawing only).

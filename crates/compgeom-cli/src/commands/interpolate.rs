@@ -6,6 +6,8 @@ use crate::error::CliError;
 use crate::output;
 use clap::Args;
 use compgeom::delaunay::{verify_delaunay, Terrain};
+use compgeom::render::{Layer, Picture, Style};
+use compgeom::{Point2, Polygon};
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -20,8 +22,12 @@ JSON output is one object:
 
 SAMPLES are x,y,z lines (or OFF); --at POINTS are x,y lines, WKT or GeoJSON.
 
+--svg FILE draws the terrain's triangles coloured by mean height (six bands, legend with
+their ranges), the samples, and the query points (black: inside, with a height; red
+crosses: outside the hull).
+
 Example:
-  compgeom interpolate samples.csv --at queries.csv";
+  compgeom interpolate samples.csv --at queries.csv --svg terrain.svg";
 
 /// Arguments of `compgeom interpolate`.
 #[derive(Debug, Clone, Args)]
@@ -30,7 +36,7 @@ pub struct InterpolateArgs {
     #[command(flatten)]
     pub input: InputArgs,
 
-    /// Output and verification (only JSON output; --svg is not drawn for this command).
+    /// Output, picture and verification (only JSON output).
     #[command(flatten)]
     pub output: OutputArgs,
 
@@ -60,12 +66,104 @@ pub fn run(args: &InterpolateArgs) -> Result<(), CliError> {
     if args.output.verify {
         verify_delaunay(terrain.triangulation())?;
     }
+    let heights = terrain.heights(&queries);
+    if let Some(svg) = &args.output.svg {
+        let pic = terrain_picture(&terrain, &queries, &heights);
+        output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
+    }
     let json = HeightsJson {
-        heights: terrain.heights(&queries),
+        heights,
         samples: samples.len(),
         verified: args.output.verify.then_some(true),
     };
     let text = serde_json::to_string(&json)
         .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?;
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
+}
+
+/// Colours of the height bands, low to high.
+const BANDS: [&str; 6] = [
+    "#313695", "#4575b4", "#74add1", "#fdae61", "#f46d43", "#a50026",
+];
+
+/// The terrain's triangles coloured by mean height, the samples, and the queries.
+pub fn terrain_picture(terrain: &Terrain, queries: &[Point2], heights: &[Option<f64>]) -> Picture {
+    let t = terrain.triangulation();
+    let v = t.vertices();
+    let z = terrain.vertex_heights();
+    let mut pic = Picture::new(800, 640).with_title(format!(
+        "terrain: {} samples, {} triangles, {} queries",
+        v.len(),
+        t.triangles().len(),
+        queries.len()
+    ));
+    let (lo, hi) = z
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
+            (a.min(h), b.max(h))
+        });
+    let span = (hi - lo).max(f64::MIN_POSITIVE);
+    let mut bands: Vec<Vec<Polygon>> = vec![Vec::new(); BANDS.len()];
+    for tri in t.triangles() {
+        let mean = tri.iter().map(|&i| z[i as usize]).sum::<f64>() / 3.0;
+        let k = (((mean - lo) / span) * BANDS.len() as f64) as usize;
+        let ring = tri.iter().map(|&i| v[i as usize]).collect();
+        bands[k.min(BANDS.len() - 1)].push(Polygon::new(ring, Vec::new()));
+    }
+    for (k, polys) in bands.iter().enumerate() {
+        if polys.is_empty() {
+            continue;
+        }
+        let a = lo + span * k as f64 / BANDS.len() as f64;
+        let b = lo + span * (k + 1) as f64 / BANDS.len() as f64;
+        pic.add(
+            Layer::new(
+                format!("height {a:.3} to {b:.3} ({} triangles)", polys.len()),
+                Style::area(BANDS[k]).with_stroke_width(0.4),
+            )
+            .polygons(polys),
+        );
+    }
+    pic.add(
+        Layer::new(
+            format!("samples ({})", v.len()),
+            Style::points("#222222").with_radius(1.5),
+        )
+        .points(v),
+    );
+    let (inside, outside): (Vec<(Point2, Option<f64>)>, Vec<_>) = queries
+        .iter()
+        .copied()
+        .zip(heights.iter().copied())
+        .partition(|(_, h)| h.is_some());
+    let inside: Vec<Point2> = inside.into_iter().map(|(p, _)| p).collect();
+    let outside: Vec<Point2> = outside.into_iter().map(|(p, _)| p).collect();
+    pic.add(
+        Layer::new(
+            format!("queries with a height ({})", inside.len()),
+            Style::points("#000000")
+                .with_radius(3.5)
+                .with_fill("#ffffff"),
+        )
+        .points(&inside),
+    );
+    let mut crosses = Layer::new(
+        format!("queries outside the hull ({})", outside.len()),
+        Style::lines("#d62728").with_stroke_width(1.5),
+    );
+    let bb = compgeom::Bbox2::of_points(v.iter().chain(queries));
+    let r = (0.01 * bb.width().max(bb.height())).max(f64::MIN_POSITIVE);
+    for p in outside {
+        crosses = crosses
+            .segment(compgeom::Segment2::new(
+                Point2::new(p.x - r, p.y - r),
+                Point2::new(p.x + r, p.y + r),
+            ))
+            .segment(compgeom::Segment2::new(
+                Point2::new(p.x - r, p.y + r),
+                Point2::new(p.x + r, p.y - r),
+            ));
+    }
+    pic.add(crosses);
+    pic
 }

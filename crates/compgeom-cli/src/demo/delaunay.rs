@@ -1,12 +1,16 @@
 //! The gallery's chapter 9 section: Delaunay triangulations of a random disc (with a few
 //! circumcircles), of a cocircular integer set and of a grid with duplicates; the book's
-//! incremental algorithm; a constrained triangulation of a polygon with holes.
+//! incremental algorithm; a constrained triangulation of a polygon with holes, its Ruppert
+//! refinement, and a constrained triangulation with crossing constraints.
 
 use super::samples::{disc, grid_with_duplicates};
 use super::{format_duration, timed, Demo};
-use crate::commands::delaunay::{delaunay_picture, AlgorithmArg};
+use crate::commands::delaunay::{add_constraints, delaunay_picture, AlgorithmArg};
 use crate::error::CliError;
-use compgeom::delaunay::{delaunay_with, polygon_delaunay, verify_cdt, verify_delaunay};
+use compgeom::delaunay::{
+    constrained_delaunay, delaunay_with, polygon_delaunay, refine, verify_cdt, verify_delaunay,
+    RefineOptions,
+};
 use compgeom::render::{Layer, Section, Style};
 use compgeom::{Point2, Polygon, Segment2};
 
@@ -134,6 +138,71 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
         .with_fact("n", v.len().to_string())
         .with_fact("triangles", cdt.triangulation.triangles().len().to_string())
         .with_fact("algorithm", "constrained")
+        .with_fact("time", format_duration(time))
+        .with_fact("verified", "yes"),
+    );
+
+    // Refinement of the same polygon: every angle at least 25°, area at most 40.
+    let opts = RefineOptions::new(25.0).with_max_area(40.0);
+    let (r, time) = timed(|| refine(&cdt, &opts));
+    let r = r?;
+    verify_cdt(&r.cdt)?;
+    let t = &r.cdt.triangulation;
+    let title = format!(
+        "Ruppert refinement, angles ≥ 25°, area ≤ 40: {} triangles, {} Steiner points",
+        t.triangles().len(),
+        r.steiner
+    );
+    let mut picture = delaunay_picture(t, &title, 0);
+    add_constraints(&mut picture, t, &r.cdt.constraints);
+    section.push(
+        demo.figure(
+            "delaunay-refined.svg",
+            "the polygon refined: Steiner points until every angle is at least 25°",
+            &picture,
+        )?
+        .with_fact("n", t.vertices().len().to_string())
+        .with_fact("steiner", r.steiner.to_string())
+        .with_fact("triangles", t.triangles().len().to_string())
+        .with_fact("exempt", r.exempt.len().to_string())
+        .with_fact("time", format_duration(time))
+        .with_fact("verified", "yes"),
+    );
+
+    // Crossing constraints: a star of chords over random points, split at the crossings.
+    let pts = disc(60, 100.0, 9);
+    let chords: Vec<Segment2> = (0..7)
+        .map(|k| {
+            let a = k as f64 * std::f64::consts::TAU / 7.0;
+            let b = (k + 3) as f64 * std::f64::consts::TAU / 7.0;
+            Segment2::new(
+                Point2::new(95.0 * a.cos(), 95.0 * a.sin()),
+                Point2::new(95.0 * b.cos(), 95.0 * b.sin()),
+            )
+        })
+        .collect();
+    let (cdt, time) = timed(|| constrained_delaunay(&pts, &chords));
+    let cdt = cdt?;
+    verify_cdt(&cdt)?;
+    let t = &cdt.triangulation;
+    let steiner = t.vertices().len()
+        - (t.input_to_vertex()
+            .iter()
+            .max()
+            .map_or(0, |&m| m as usize + 1));
+    let title =
+        format!("constrained Delaunay with 7 crossing chords: {steiner} crossings became vertices");
+    let mut picture = delaunay_picture(t, &title, 0);
+    add_constraints(&mut picture, t, &cdt.constraints);
+    section.push(
+        demo.figure(
+            "delaunay-crossing.svg",
+            "crossing constraints split at their (rounded) crossings",
+            &picture,
+        )?
+        .with_fact("n", pts.len().to_string())
+        .with_fact("constraints", chords.len().to_string())
+        .with_fact("steiner", steiner.to_string())
         .with_fact("time", format_duration(time))
         .with_fact("verified", "yes"),
     );

@@ -8,10 +8,13 @@
 //! orientation or in-circle predicate.
 //!
 //! Degenerate input: a vertex lying exactly on a constraint splits it there (both pieces
-//! are constrained); repeated and zero-length constraints are merged / ignored; constraints
-//! that share endpoints are fine. Two constraints that **cross** at a point that is not an
-//! input vertex are reported as `Error::InvalidInput` naming both (splitting at constructed
-//! crossings is not implemented yet).
+//! are constrained); repeated and zero-length constraints are merged / ignored; collinear
+//! overlapping constraints merge into shared pieces; constraints that share endpoints are
+//! fine. Constraints that **cross** are split at their crossing: the exact crossing is
+//! rounded to the nearest `f64` point, which becomes a Steiner vertex (listed after the
+//! input vertices), and both constraints become pieces through it (see `constrain.rs` for
+//! the exact meaning: the result is the exact CDT of the vertices and the pieces, which
+//! deviate from the input segments by at most half an ulp per coordinate at the crossings).
 //!
 //! [`polygon_delaunay`] constrains every ring edge and keeps the triangles inside the
 //! polygons (odd nesting depth of constraint loops: holes removed).
@@ -19,9 +22,9 @@
 //! Time: O(n log n) for the triangulation plus O(k) flips per constraint crossing k edges
 //! (worst case O(n²) overall).
 
+use super::constrain::{key, Constrained};
 use super::fast;
-use super::mesh::{next, prev, Mesh, GHOST};
-use super::pred::{in_circle, orient};
+use super::pred::orient;
 use super::triangulation::{Triangulation, NO_NEIGHBOR};
 use super::verify::check_locally_delaunay;
 use crate::kernel::ensure_finite;
@@ -32,7 +35,9 @@ use std::collections::{HashSet, VecDeque};
 #[derive(Debug, Clone, PartialEq)]
 pub struct Cdt {
     /// The triangles. `input_to_vertex` covers the points, then the constraint endpoints
-    /// (`a`, `b` of segment 0, then of segment 1, …) or the ring vertices in order.
+    /// (`a`, `b` of segment 0, then of segment 1, …) or the ring vertices in order. Steiner
+    /// vertices (rounded constraint crossings, refinement points) come after every vertex
+    /// that an input maps to.
     pub triangulation: Triangulation,
     /// The constrained edges as vertex pairs `(u, v)`, `u < v`, sorted (split pieces listed
     /// separately).
@@ -55,7 +60,9 @@ pub struct Cdt {
 /// ```
 ///
 /// # Errors
-/// `NonFinite` for a NaN/infinite coordinate; `InvalidInput` for crossing constraints.
+/// `NonFinite` for a NaN/infinite coordinate; `InvalidInput` when more points are given
+/// than [`MAX_POINTS`](super::MAX_POINTS), or when rounded crossings keep creating new
+/// crossings beyond a generous bound (k² + 64k + 1000 splits for k constraints).
 pub fn constrained_delaunay(points: &[Point2], segments: &[Segment2]) -> Result<Cdt> {
     ensure_finite(points, "point")?;
     let mut all = points.to_vec();
@@ -126,259 +133,55 @@ fn build(all: &[Point2], pairs: &[(usize, usize)], interior_only: bool) -> Resul
         )));
     }
     let (mesh, rep) = fast::triangulate(all);
-    let Some(mut mesh) = mesh else {
+    let Some(mesh) = mesh else {
         let t = Triangulation::from_mesh(all, None, &rep);
         return Ok(Cdt {
             triangulation: t,
             constraints: Vec::new(),
         });
     };
-    let mut fixed: HashSet<(u32, u32)> = HashSet::new();
-    let mut star = Star::new(&mesh);
+    let mut c = Constrained::new(mesh, false);
+    // k constraints cross at most k(k-1)/2 times; the rest is slack for rounded crossings
+    // that cross a third constraint.
+    c.crossing_budget = pairs.len().saturating_mul(pairs.len()) + 64 * pairs.len() + 1000;
     for (ci, &(i, j)) in pairs.iter().enumerate() {
         let (a, b) = (rep[i], rep[j]);
         if a != b {
-            insert_constraint(&mut mesh, &mut star, &mut fixed, a, b, ci)?;
+            c.insert_segment(a, b, ci as u32)?;
         }
     }
-    restore(&mut mesh, &fixed);
-    let mut t = Triangulation::from_mesh(all, Some(&mesh), &rep);
-    // Vertex ids in `fixed` are input indices: map them like the triangles.
+    c.restore_all();
+    let (t, constraints) = finish(&c, all.len(), &rep);
+    let mut cdt = Cdt {
+        triangulation: t,
+        constraints,
+    };
+    if interior_only {
+        keep_inside(&mut cdt.triangulation, &cdt.constraints);
+    }
+    Ok(cdt)
+}
+
+/// The result of a constrained mesh: the triangulation (the first `n_input` mesh points
+/// mapped through `rep`, Steiner points after them) and the sorted constrained edges.
+pub(crate) fn finish(
+    c: &Constrained<'_>,
+    n_input: usize,
+    rep: &[u32],
+) -> (Triangulation, Vec<(u32, u32)>) {
+    let pts: &[Point2] = &c.mesh.pts;
+    let mut rep = rep[..n_input].to_vec();
+    rep.extend(n_input as u32..pts.len() as u32);
+    let mut t = Triangulation::from_mesh(pts, Some(&c.mesh), &rep);
     let map = |v: u32| t.input_to_vertex[v as usize];
-    let mut constraints: Vec<(u32, u32)> = fixed
-        .iter()
+    let mut constraints: Vec<(u32, u32)> = c
+        .fixed
+        .keys()
         .map(|&(u, v)| (map(u).min(map(v)), map(u).max(map(v))))
         .collect();
     constraints.sort_unstable();
-    if interior_only {
-        keep_inside(&mut t, &constraints);
-    }
-    Ok(Cdt {
-        triangulation: t,
-        constraints,
-    })
-}
-
-fn key(a: u32, b: u32) -> (u32, u32) {
-    (a.min(b), a.max(b))
-}
-
-/// The half-edges leaving each vertex: one per vertex (`vmap`), rotated through twins.
-struct Star {
-    vmap: Vec<u32>,
-}
-
-impl Star {
-    fn new(mesh: &Mesh<'_>) -> Self {
-        let mut vmap = vec![u32::MAX; mesh.pts.len()];
-        for (h, &v) in mesh.v.iter().enumerate() {
-            if v != GHOST {
-                vmap[v as usize] = h as u32;
-            }
-        }
-        Star { vmap }
-    }
-
-    /// Every half-edge leaving `a` (ghost triangles included), by rotation: O(degree).
-    fn out_edges(&self, mesh: &Mesh<'_>, a: u32) -> Vec<u32> {
-        let start = self.vmap[a as usize];
-        let mut out = vec![start];
-        let mut h = mesh.twin[prev(start) as usize];
-        while h != start && out.len() <= mesh.v.len() {
-            out.push(h);
-            h = mesh.twin[prev(h) as usize];
-        }
-        out
-    }
-
-    fn find(&self, mesh: &Mesh<'_>, u: u32, w: u32) -> Option<u32> {
-        self.out_edges(mesh, u)
-            .into_iter()
-            .find(|&h| mesh.v[next(h) as usize] == w)
-    }
-
-    /// Flips half-edge `e` and keeps the map valid.
-    fn flip(&mut self, mesh: &mut Mesh<'_>, e: u32) {
-        let f = mesh.twin[e as usize];
-        mesh.flip(e);
-        let (t, u) = (e / 3, f / 3);
-        for h in [3 * t, 3 * t + 1, 3 * t + 2, 3 * u, 3 * u + 1, 3 * u + 2] {
-            let v = mesh.v[h as usize];
-            if v != GHOST {
-                self.vmap[v as usize] = h;
-            }
-        }
-    }
-}
-
-/// What the walk from `a` towards `b` found.
-enum Walk {
-    /// `a–b` is already an edge.
-    Edge,
-    /// Vertex `c` lies on the open segment `a–b`.
-    Split(u32),
-    /// The edges crossed, as vertex pairs, in order from `a`.
-    Crossed(Vec<(u32, u32)>),
-}
-
-/// Walks from `a` to `b` through the triangles the segment crosses (exact orientations).
-fn walk(
-    mesh: &Mesh<'_>,
-    star: &Star,
-    fixed: &HashSet<(u32, u32)>,
-    a: u32,
-    b: u32,
-    ci: usize,
-) -> Result<Walk> {
-    let (pa, pb) = (mesh.pt(a), mesh.pt(b));
-    let out = star.out_edges(mesh, a);
-    for &h in &out {
-        let x = mesh.v[next(h) as usize];
-        if x == b {
-            return Ok(Walk::Edge);
-        }
-        if x != GHOST {
-            let px = mesh.pt(x);
-            if orient(pa, px, pb) == 0 && dot_positive(pa, px, pb) {
-                return Ok(Walk::Split(x));
-            }
-        }
-    }
-    for &h in &out {
-        if mesh.is_ghost(h / 3) {
-            continue;
-        }
-        let x = mesh.v[next(h) as usize];
-        let y = mesh.v[prev(h) as usize];
-        if !(orient(pa, mesh.pt(x), pb) > 0 && orient(pa, mesh.pt(y), pb) < 0) {
-            continue;
-        }
-        // b is beyond edge x -> y (x right of a->b, y left).
-        let mut crossed = Vec::new();
-        let mut e = next(h);
-        loop {
-            let (u, w) = (mesh.v[e as usize], mesh.v[next(e) as usize]);
-            if fixed.contains(&key(u, w)) {
-                return Err(Error::InvalidInput(format!(
-                    "constraint {ci} crosses another constraint (at the edge between input points {u} and {w}); crossing constraints are not supported"
-                )));
-            }
-            crossed.push((u, w));
-            let f = mesh.twin[e as usize];
-            let z = mesh.v[prev(f) as usize];
-            if z == b {
-                return Ok(Walk::Crossed(crossed));
-            }
-            if z == GHOST {
-                break;
-            }
-            let oz = orient(pa, pb, mesh.pt(z));
-            if oz == 0 {
-                return Ok(Walk::Split(z));
-            }
-            // f = w -> u in triangle (w, u, z): leave through u–z when z is on w's (left)
-            // side, else through z–w.
-            e = if oz > 0 { next(f) } else { prev(f) };
-        }
-        break;
-    }
-    Err(Error::InvalidInput(format!(
-        "constraint {ci}: no path through the triangulation (internal error)"
-    )))
-}
-
-/// Sloan's insertion of constraint `a–b` (input vertex ids): a queue of the crossed edges;
-/// an edge whose quadrilateral is strictly convex is flipped (its new diagonal re-queued if
-/// it still crosses), otherwise it goes to the back of the queue.
-fn insert_constraint(
-    mesh: &mut Mesh<'_>,
-    star: &mut Star,
-    fixed: &mut HashSet<(u32, u32)>,
-    a: u32,
-    b: u32,
-    ci: usize,
-) -> Result<()> {
-    let (pa, pb) = (mesh.pt(a), mesh.pt(b));
-    let mut queue: VecDeque<(u32, u32)> = match walk(mesh, star, fixed, a, b, ci)? {
-        Walk::Edge => {
-            fixed.insert(key(a, b));
-            return Ok(());
-        }
-        Walk::Split(c) => {
-            insert_constraint(mesh, star, fixed, a, c, ci)?;
-            return insert_constraint(mesh, star, fixed, c, b, ci);
-        }
-        Walk::Crossed(list) => list.into(),
-    };
-    let limit = 16 * queue.len() * queue.len() + 1000;
-    let mut steps = 0;
-    while let Some((u, w)) = queue.pop_front() {
-        steps += 1;
-        if steps > limit {
-            return Err(Error::InvalidInput(format!(
-                "constraint {ci}: flipping did not converge (internal error)"
-            )));
-        }
-        let Some(e) = star.find(mesh, u, w) else {
-            continue;
-        };
-        let f = mesh.twin[e as usize];
-        let p = mesh.v[prev(e) as usize];
-        let d = mesh.v[prev(f) as usize];
-        if p == GHOST || d == GHOST {
-            queue.push_back((u, w));
-            continue;
-        }
-        let (pu, pw, pp, pd) = (mesh.pt(u), mesh.pt(w), mesh.pt(p), mesh.pt(d));
-        if orient(pp, pu, pd) > 0 && orient(pp, pd, pw) > 0 {
-            star.flip(mesh, e);
-            if crosses(pa, pb, pp, pd) {
-                queue.push_back((p, d));
-            }
-        } else {
-            queue.push_back((u, w));
-        }
-    }
-    match walk(mesh, star, fixed, a, b, ci)? {
-        Walk::Edge => {
-            fixed.insert(key(a, b));
-            Ok(())
-        }
-        _ => Err(Error::InvalidInput(format!(
-            "constraint {ci}: not an edge after flipping (internal error)"
-        ))),
-    }
-}
-
-fn dot_positive(a: Point2, x: Point2, b: Point2) -> bool {
-    // x on the ray from a towards b (x != a), for collinear a, x, b: same direction.
-    // (exact: only coordinate comparisons)
-    let sign = |p: f64, q: f64| i8::from(p > q) - i8::from(p < q);
-    sign(x.x, a.x) * sign(b.x, a.x) > 0 || sign(x.y, a.y) * sign(b.y, a.y) > 0
-}
-
-/// Does segment p–d properly cross segment a–b (interiors meet in one point)?
-fn crosses(a: Point2, b: Point2, p: Point2, d: Point2) -> bool {
-    orient(a, b, p) * orient(a, b, d) < 0 && orient(p, d, a) * orient(p, d, b) < 0
-}
-
-/// Lawson flips of every non-constrained, non-Delaunay edge until none is left.
-fn restore(mesh: &mut Mesh<'_>, fixed: &HashSet<(u32, u32)>) {
-    let mut stack: Vec<u32> = (0..mesh.v.len() as u32).collect();
-    while let Some(h) = stack.pop() {
-        let f = mesh.twin[h as usize];
-        let (a, b) = (mesh.v[h as usize], mesh.v[next(h) as usize]);
-        let p = mesh.v[prev(h) as usize];
-        let d = mesh.v[prev(f) as usize];
-        if p == GHOST || d == GHOST || a == GHOST || b == GHOST || fixed.contains(&key(a, b)) {
-            continue;
-        }
-        if in_circle(mesh.pt(b), mesh.pt(a), mesh.pt(d), mesh.pt(p)) > 0 {
-            mesh.flip(h);
-            let (t, u) = (h / 3, f / 3);
-            stack.extend_from_slice(&[3 * t, 3 * t + 1, 3 * u + 1, 3 * u + 2]);
-        }
-    }
+    t.input_to_vertex.truncate(n_input);
+    (t, constraints)
 }
 
 /// Keeps the triangles at odd nesting depth of constraint loops (inside the polygons).

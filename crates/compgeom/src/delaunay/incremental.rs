@@ -22,7 +22,7 @@
 use super::fast::{dedup_sorted, hilbert_order};
 use super::mesh::{next, prev, NONE};
 use super::pred::{in_circle, orient};
-use super::triangulation::Triangulation;
+use super::triangulation::{Triangulation, NO_NEIGHBOR};
 use crate::Point2;
 use std::cmp::Ordering;
 
@@ -122,24 +122,50 @@ impl<'a> Dag<'a> {
     }
 
     /// Descends the history DAG to the leaf containing `p`; returns it with its zero mask.
+    ///
+    /// Every node's children form a fan around the point whose insertion destroyed it,
+    /// stored as the last corner of each child, in counter-clockwise order: `(x₀, x₁, q)`,
+    /// `(x₁, x₂, q)`, … (three children for a face split, two for an edge split or a flip).
+    /// Since `p` lies in the (closed) parent, the child is decided by the side of `p`
+    /// relative to the rays from `q` — one orientation for two children, two for three —
+    /// instead of testing every edge of every child. The full zero mask is computed only at
+    /// the leaf.
     fn locate(&self, p: u32) -> (u32, u32) {
-        let mut t = 0;
-        let mut mask = self.test(0, p).unwrap_or(0);
-        'down: while self.children[t as usize][0] != NONE {
-            for &c in &self.children[t as usize] {
-                if c == NONE {
-                    break;
-                }
-                if let Some(m) = self.test(c, p) {
-                    t = c;
-                    mask = m;
-                    continue 'down;
-                }
+        let mut t = 0u32;
+        loop {
+            let c = self.children[t as usize];
+            if c[0] == NONE {
+                break;
             }
-            // Unreachable for a consistent DAG: the children cover their parent.
-            break;
+            let q = self.v[3 * c[0] as usize + 2];
+            let x1 = self.v[3 * c[0] as usize + 1];
+            if c[2] == NONE {
+                // Two wedges, each under a half-turn: the ray q -> x1 separates them.
+                t = if self.orient_sym(q, x1, p) <= 0 {
+                    c[0]
+                } else {
+                    c[1]
+                };
+                continue;
+            }
+            let s1 = self.orient_sym(q, x1, p);
+            t = if s1 <= 0 {
+                let x0 = self.v[3 * c[0] as usize];
+                if self.orient_sym(q, x0, p) >= 0 {
+                    c[0]
+                } else {
+                    c[2]
+                }
+            } else {
+                let x2 = self.v[3 * c[1] as usize + 1];
+                if self.orient_sym(q, x2, p) <= 0 {
+                    c[1]
+                } else {
+                    c[2]
+                }
+            };
         }
-        (t, mask)
+        (t, self.test(t, p).unwrap_or(0))
     }
 
     fn insert(&mut self, p: u32) {
@@ -233,17 +259,18 @@ impl<'a> Dag<'a> {
         let tw_bp = self.twin[next(h) as usize];
         let tw_ad = self.twin[next(f) as usize];
         let tw_db = self.twin[prev(f) as usize];
-        let t0 = self.add(p, a, d);
-        let t1 = self.add(p, d, b);
+        // The new point last in both children (see `locate`).
+        let t0 = self.add(a, d, p);
+        let t1 = self.add(d, b, p);
         self.children[(h / 3) as usize] = [t0, t1, NONE];
         self.children[(f / 3) as usize] = [t0, t1, NONE];
-        self.link(3 * t0, tw_pa);
-        self.link(3 * t0 + 1, tw_ad);
-        self.link(3 * t0 + 2, 3 * t1);
-        self.link(3 * t1 + 1, tw_db);
-        self.link(3 * t1 + 2, tw_bp);
-        self.stack.push(3 * t0 + 1);
-        self.stack.push(3 * t1 + 1);
+        self.link(3 * t0, tw_ad);
+        self.link(3 * t0 + 1, 3 * t1 + 2);
+        self.link(3 * t0 + 2, tw_pa);
+        self.link(3 * t1, tw_db);
+        self.link(3 * t1 + 1, tw_bp);
+        self.stack.push(3 * t0);
+        self.stack.push(3 * t1);
     }
 }
 
@@ -291,12 +318,34 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
     for &p in &distinct {
         dag.insert(p);
     }
-    let tris: Vec<[u32; 3]> = (0..dag.children.len())
-        .filter(|&t| dag.children[t][0] == NONE)
-        .map(|t| [dag.v[3 * t], dag.v[3 * t + 1], dag.v[3 * t + 2]])
-        .filter(|t| t.iter().all(|&v| v < M2))
-        .collect();
-    Triangulation::from_triangles(pts, &tris, &rep)
+    // The leaves with real corners are the triangles; their twins give the neighbours
+    // directly (no edge matching).
+    let nodes = dag.children.len();
+    let mut id = vec![NO_NEIGHBOR; nodes];
+    let mut tris: Vec<[u32; 3]> = Vec::with_capacity(2 * n);
+    for (t, slot) in id.iter_mut().enumerate() {
+        let c = [dag.v[3 * t], dag.v[3 * t + 1], dag.v[3 * t + 2]];
+        if dag.children[t][0] == NONE && c.iter().all(|&v| v < M2) {
+            *slot = tris.len() as u32;
+            tris.push(c);
+        }
+    }
+    let mut nbs: Vec<[u32; 3]> = Vec::with_capacity(tris.len());
+    for (t, &slot) in id.iter().enumerate() {
+        if slot == NO_NEIGHBOR {
+            continue;
+        }
+        // Neighbour opposite corner i = across half-edge i + 1.
+        nbs.push([1, 2, 0].map(|k| {
+            let g = dag.twin[3 * t + k];
+            if g == NONE {
+                NO_NEIGHBOR
+            } else {
+                id[(g / 3) as usize]
+            }
+        }));
+    }
+    Triangulation::from_triangles_and_neighbours(pts, tris, nbs, &rep)
 }
 
 /// A biased randomized insertion order (Amenta, Choi & Rote 2003): each point joins round

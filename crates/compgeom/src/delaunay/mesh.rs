@@ -10,10 +10,12 @@
 //! test of `u → w` — the exact limit of a circle through `u`, `w` and a point moving to
 //! infinity, with no big coordinates anywhere.
 //!
-//! Vertex ids are indices into the caller's point slice (`u32`).
+//! Vertex ids are indices into the point list (`u32`): the caller's slice, borrowed, or an
+//! owned copy when an operation (constraint crossings, refinement) adds Steiner points.
 
 use super::pred::{in_circle, orient, strictly_between};
 use crate::Point2;
+use std::borrow::Cow;
 
 /// The vertex at infinity of ghost triangles.
 pub(crate) const GHOST: u32 = u32::MAX;
@@ -52,7 +54,7 @@ pub(crate) enum Found {
 
 /// A Delaunay triangulation under construction (see the module docs).
 pub(crate) struct Mesh<'a> {
-    pub(crate) pts: &'a [Point2],
+    pub(crate) pts: Cow<'a, [Point2]>,
     pub(crate) v: Vec<u32>,
     pub(crate) twin: Vec<u32>,
     /// Some real triangle (a start for walks).
@@ -66,7 +68,7 @@ impl<'a> Mesh<'a> {
     /// ghosts.
     pub(crate) fn new(pts: &'a [Point2], a: u32, b: u32, c: u32, capacity: usize) -> Self {
         let mut m = Mesh {
-            pts,
+            pts: Cow::Borrowed(pts),
             v: Vec::with_capacity(capacity * 6),
             twin: Vec::with_capacity(capacity * 6),
             last: 0,
@@ -86,8 +88,27 @@ impl<'a> Mesh<'a> {
         m
     }
 
+    /// An empty mesh over `pts` (the caller adds and links triangles).
+    pub(crate) fn empty(pts: Vec<Point2>) -> Self {
+        Mesh {
+            pts: Cow::Owned(pts),
+            v: Vec::new(),
+            twin: Vec::new(),
+            last: 0,
+            stack: Vec::new(),
+        }
+    }
+
+    /// Appends a point (a Steiner point) and returns its vertex id; the mesh owns its
+    /// points from then on.
+    pub(crate) fn push_point(&mut self, p: Point2) -> u32 {
+        let pts = self.pts.to_mut();
+        pts.push(p);
+        (pts.len() - 1) as u32
+    }
+
     #[inline(always)]
-    fn add(&mut self, a: u32, b: u32, c: u32) -> u32 {
+    pub(crate) fn add(&mut self, a: u32, b: u32, c: u32) -> u32 {
         let t = (self.v.len() / 3) as u32;
         self.v.extend_from_slice(&[a, b, c]);
         self.twin.extend_from_slice(&[NONE, NONE, NONE]);
@@ -127,6 +148,59 @@ impl<'a> Mesh<'a> {
     /// Walks from `self.last` towards `p` (the visibility walk; it terminates in a Delaunay
     /// triangulation). Every test is an exact orientation.
     pub(crate) fn locate(&self, p: Point2) -> Found {
+        // In a Delaunay triangulation the walk always terminates.
+        self.walk(p, u64::MAX).unwrap_or(Found::Face(self.last))
+    }
+
+    /// [`Mesh::locate`] for any triangulation (e.g. constrained, where the visibility walk
+    /// may cycle): the walk for at most a bounded number of steps, then an exhaustive scan.
+    pub(crate) fn locate_any(&self, p: Point2) -> Found {
+        let steps = 64 + 4 * u64::from(self.slots());
+        if let Some(f) = self.walk(p, steps) {
+            return f;
+        }
+        for t in 0..self.slots() {
+            let base = 3 * t;
+            if self.is_ghost(t) {
+                // The open half-plane beyond the ghost's real edge.
+                let h = (0..3)
+                    .map(|k| base + k)
+                    .find(|&h| self.v[h as usize] != GHOST && self.v[next(h) as usize] != GHOST);
+                if let Some(h) = h {
+                    let (a, b) = (self.v[h as usize], self.v[next(h) as usize]);
+                    if orient(self.pt(b), self.pt(a), p) > 0 {
+                        return Found::Face(t);
+                    }
+                }
+                continue;
+            }
+            let mut zero_mask = 0;
+            let mut inside = true;
+            for k in 0..3 {
+                let h = base + k;
+                let s = orient(
+                    self.pt(self.v[h as usize]),
+                    self.pt(self.v[next(h) as usize]),
+                    p,
+                );
+                if s < 0 {
+                    inside = false;
+                    break;
+                }
+                if s == 0 {
+                    zero_mask |= 1 << k;
+                }
+            }
+            if inside {
+                return self.classify(base, zero_mask);
+            }
+        }
+        Found::Face(self.last)
+    }
+
+    /// The visibility walk of [`Mesh::locate`], giving up (`None`) after `max_steps`.
+    fn walk(&self, p: Point2, max_steps: u64) -> Option<Found> {
+        let mut steps = 0u64;
         let mut t = self.last;
         if self.is_ghost(t) {
             t = self.real_neighbour_of_ghost(t);
@@ -160,15 +234,19 @@ impl<'a> Mesh<'a> {
             }
             rot = (rot + 1) % 3;
             if !moved {
-                return self.classify(base, zero_mask);
+                return Some(self.classify(base, zero_mask));
             }
             if self.is_ghost(t) {
-                return Found::Face(t);
+                return Some(Found::Face(t));
+            }
+            steps += 1;
+            if steps > max_steps {
+                return None;
             }
         }
     }
 
-    fn classify(&self, base: u32, zero_mask: u32) -> Found {
+    pub(crate) fn classify(&self, base: u32, zero_mask: u32) -> Found {
         match zero_mask.count_ones() {
             0 => Found::Face(base / 3),
             1 => Found::Edge(base + zero_mask.trailing_zeros()),
@@ -199,12 +277,20 @@ impl<'a> Mesh<'a> {
     /// Inserts vertex `p` (an index into `pts`) found at `at`, then restores the Delaunay
     /// property by flips. `at` must not be `Found::Vertex`.
     pub(crate) fn insert(&mut self, p: u32, at: Found) {
+        self.insert_with(p, at, |_, _| false);
+    }
+
+    /// [`Mesh::insert`] that never flips an edge `fixed(a, b)` calls constrained: in a
+    /// constrained Delaunay triangulation this restores the constrained Delaunay property
+    /// (the flips are those of LEGALIZEEDGE, stopped at constraints).
+    #[inline(always)]
+    pub(crate) fn insert_with<F: Fn(u32, u32) -> bool>(&mut self, p: u32, at: Found, fixed: F) {
         match at {
             Found::Face(t) => self.split_face(t, p),
             Found::Edge(h) => self.split_edge(h, p),
             Found::Vertex(_) => {}
         }
-        self.legalize_all(p);
+        self.legalize_all(p, fixed);
     }
 
     fn split_face(&mut self, t: u32, p: u32) {
@@ -277,14 +363,15 @@ impl<'a> Mesh<'a> {
     }
 
     /// LEGALIZEEDGE for every half-edge on the stack (each has the new point `p` opposite).
-    fn legalize_all(&mut self, p: u32) {
+    #[inline(always)]
+    fn legalize_all<F: Fn(u32, u32) -> bool>(&mut self, p: u32, fixed: F) {
         let pp = self.pt(p);
         while let Some(h) = self.stack.pop() {
             let f = self.twin[h as usize];
             let a = self.v[h as usize];
             let b = self.v[next(h) as usize];
             let d = self.v[prev(f) as usize];
-            if d == GHOST || !self.inside(b, a, d, pp) {
+            if d == GHOST || fixed(a, b) || !self.inside(b, a, d, pp) {
                 continue;
             }
             self.flip(h);

@@ -8,7 +8,8 @@
 //! |---|---|---|
 //! | [`delaunay`] (default) | Hilbert-curve order, walking point location, Lawson flips on a mesh closed by ghost triangles (`fast.rs`) | O(n log n) |
 //! | [`delaunay_with`] + [`DelaunayAlgorithm::Incremental`] | the book's DELAUNAYTRIANGULATION (§9.3): randomized incremental insertion, history DAG, LEGALIZEEDGE, symbolic p₋₁, p₋₂ (§9.4) | O(n log n) expected |
-//! | [`constrained_delaunay`], [`polygon_delaunay`] | constrained Delaunay (segments; polygons with holes, interior kept) by Sloan's flips, then Lawson flips; [`verify_cdt`] checks it | O(n log n + flips) |
+//! | [`constrained_delaunay`], [`polygon_delaunay`] | constrained Delaunay (segments, crossing ones split at their rounded crossing; polygons with holes, interior kept) by Sloan's flips, then Lawson flips; [`verify_cdt`] checks it | O(n log n + flips) |
+//! | [`refine`] | Ruppert's Delaunay refinement with concentric shells: Steiner points until every triangle meets a minimum angle (guaranteed up to 20.7° for input angles ≥ 60°; documented exemption near smaller input angles) and an optional maximum area | O(n log n + m) in practice, m Steiner points |
 //! | [`Terrain`] | piecewise-linear terrain over the triangulation; heights by walking location (§9.1) | O(n log n) build, O(√n) expected per random query, O(1) for nearby queries |
 //! | [`euclidean_mst`] | Kruskal on the Delaunay edges, exact length comparisons | O(n log n) |
 //! | [`verify_delaunay`] | exact check: structure, every edge locally Delaunay, triangles tile the convex hull | O(n log n) |
@@ -50,11 +51,13 @@
 //! ```
 
 mod cdt;
+mod constrain;
 mod emst;
 mod fast;
 mod incremental;
 mod mesh;
 mod pred;
+mod refine;
 mod terrain;
 mod triangulation;
 mod verify;
@@ -63,6 +66,7 @@ pub use cdt::{
     constrained_delaunay, polygon_delaunay, polygon_delaunay_with_points, verify_cdt, Cdt,
 };
 pub use emst::euclidean_mst;
+pub use refine::{has_angle_below, refine, RefineOptions, Refinement, MAX_MIN_ANGLE};
 pub use terrain::Terrain;
 pub use triangulation::{Triangulation, NO_NEIGHBOR};
 pub use verify::verify_delaunay;

@@ -8,8 +8,12 @@
 //! itself exact and its sign, zero included, is the answer. So every answer is exact; the filter only saves
 //! the kernel's range checks on the common case.
 
+use crate::kernel::arith::Arith;
+use crate::kernel::exact::Dyadic;
+use crate::kernel::filter::Bounded;
 use crate::kernel::{incircle, orient2d, CircleSide, Orientation};
 use crate::Point2;
+use std::cmp::Ordering;
 
 const EPS: f64 = f64::EPSILON / 2.0;
 const CCW_BOUND: f64 = (3.0 + 16.0 * EPS) * EPS;
@@ -90,6 +94,58 @@ pub(crate) fn in_circle(a: Point2, b: Point2, c: Point2, d: Point2) -> i8 {
         CircleSide::Outside => -1,
         CircleSide::OnCircle => 0,
     }
+}
+
+/// The exact sign of a polynomial written once over [`Arith`]: the `f64` enclosure first,
+/// exact dyadic arithmetic when it cannot decide.
+macro_rules! exact_sign {
+    ($f:ident ( $($arg:expr),* )) => {
+        $f::<Bounded>($($arg),*)
+            .sign()
+            .or_else(|| $f::<Dyadic>($($arg),*).sign())
+            .unwrap_or(Ordering::Equal)
+    };
+}
+
+fn dot_det<T: Arith>(p: Point2, a: Point2, b: Point2) -> T {
+    let (ax, ay) = (T::diff(a.x, p.x), T::diff(a.y, p.y));
+    let (bx, by) = (T::diff(b.x, p.x), T::diff(b.y, p.y));
+    ax.times(&bx).plus(&ay.times(&by))
+}
+
+/// The exact sign of the dot product `(a - p) · (b - p)`: `Less` when `p` is strictly
+/// inside the circle with diameter `a b` (the angle `a p b` is obtuse).
+pub(crate) fn dot_sign(p: Point2, a: Point2, b: Point2) -> Ordering {
+    exact_sign!(dot_det(p, a, b))
+}
+
+fn sharp_det<T: Arith>(p: Point2, a: Point2, b: Point2, cos2: f64) -> T {
+    let (ax, ay) = (T::diff(a.x, p.x), T::diff(a.y, p.y));
+    let (bx, by) = (T::diff(b.x, p.x), T::diff(b.y, p.y));
+    let dot = ax.times(&bx).plus(&ay.times(&by));
+    let la = ax.times(&ax).plus(&ay.times(&ay));
+    let lb = bx.times(&bx).plus(&by.times(&by));
+    dot.times(&dot).minus(&T::val(cos2).times(&la).times(&lb))
+}
+
+/// Exact: is the angle `a p b` strictly smaller than the angle whose squared cosine is
+/// `cos2` (`0 < cos2 < 1`, an acute angle)? That is `(a-p)·(b-p) > 0` and
+/// `((a-p)·(b-p))² > cos2 |a-p|² |b-p|²`, decided exactly for the given `f64` `cos2`.
+pub(crate) fn angle_below(p: Point2, a: Point2, b: Point2, cos2: f64) -> bool {
+    dot_sign(p, a, b) == Ordering::Greater
+        && exact_sign!(sharp_det(p, a, b, cos2)) == Ordering::Greater
+}
+
+fn area_det<T: Arith>(a: Point2, b: Point2, c: Point2, twice: f64) -> T {
+    let (bx, by) = (T::diff(b.x, a.x), T::diff(b.y, a.y));
+    let (cx, cy) = (T::diff(c.x, a.x), T::diff(c.y, a.y));
+    bx.times(&cy).minus(&by.times(&cx)).minus(&T::val(twice))
+}
+
+/// Exact: is the area of the counter-clockwise triangle `a b c` strictly larger than
+/// `twice / 2`?
+pub(crate) fn area_above(a: Point2, b: Point2, c: Point2, twice: f64) -> bool {
+    exact_sign!(area_det(a, b, c, twice)) == Ordering::Greater
 }
 
 /// True when every coordinate is an integer.

@@ -215,6 +215,29 @@ impl Triangulation {
     }
 }
 
+impl Triangulation {
+    /// The result from counter-clockwise triangles over input indices with their known
+    /// neighbour arrays, and the representative map.
+    pub(crate) fn from_triangles_and_neighbours(
+        pts: &[Point2],
+        tris: Vec<[u32; 3]>,
+        neighbors: Vec<[u32; 3]>,
+        rep: &[u32],
+    ) -> Self {
+        let (vertices, input_to_vertex, new_id) = number_vertices(pts, rep);
+        let triangles = tris
+            .into_iter()
+            .map(|t| t.map(|v| new_id[v as usize]))
+            .collect();
+        Triangulation {
+            vertices,
+            triangles,
+            neighbors,
+            input_to_vertex,
+        }
+    }
+}
+
 /// Neighbour arrays for counter-clockwise triangles, by matching directed edges.
 pub(crate) fn neighbours_of(triangles: &[[u32; 3]]) -> Vec<[u32; 3]> {
     let mut edge: HashMap<(u32, u32), (u32, usize)> = HashMap::with_capacity(triangles.len() * 3);

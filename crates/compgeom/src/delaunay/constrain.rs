@@ -1,0 +1,420 @@
+//! The constraint engine shared by the constrained Delaunay triangulation and refinement:
+//! a [`Mesh`] with a set of constrained edges, Steiner-point insertion that respects the
+//! constraints, and constraint insertion by Sloan's flips that splits at vertices on the
+//! segment and at crossings with earlier constraints.
+//!
+//! # Crossing constraints
+//!
+//! When the segment `a–b` being inserted properly crosses a constrained edge `u–w`, their
+//! crossing (a constructed point, decided exactly by `kernel::Crossing`) is rounded to the
+//! nearest `f64` point `x` and inserted as a Steiner vertex (or, if `x` equals an existing
+//! vertex, that vertex is used). Then `u–w` is replaced by the pieces `u–x`, `x–w` and
+//! `a–b` by `a–x`, `x–b`, each inserted like any constraint. Rounding moves `x` off the
+//! exact crossing by at most half a unit in the last place per coordinate, so the pieces
+//! bend by that much; if a bent piece then crosses a third constraint, that crossing is
+//! split the same way (the number of such splits is bounded, else `Err`). The result is the
+//! exact constrained Delaunay triangulation of the vertices (inputs and Steiner points) and
+//! the pieces: every piece is an edge and every other edge is locally Delaunay by the exact
+//! in-circle test.
+//!
+//! Collinear overlapping constraints merge: a constraint is split at every vertex lying on
+//! it (found exactly by the walk), so the overlap becomes shared pieces.
+
+use super::mesh::{next, prev, Found, Mesh, GHOST};
+use super::pred::{in_circle, orient};
+use crate::kernel::Crossing;
+use crate::{Error, Point2, Result, Segment2};
+use std::collections::{HashMap, VecDeque};
+
+/// The unordered key of an edge.
+pub(crate) fn key(a: u32, b: u32) -> (u32, u32) {
+    (a.min(b), a.max(b))
+}
+
+/// A mesh with constrained edges (`fixed`: piece → id of the constraint it comes from).
+pub(crate) struct Constrained<'a> {
+    pub(crate) mesh: Mesh<'a>,
+    pub(crate) fixed: HashMap<(u32, u32), u32>,
+    /// One half-edge leaving each vertex (kept valid through every change).
+    vmap: Vec<u32>,
+    /// Edges to a ghost vertex are constrained too (a domain with holes: never grow it).
+    ghost_fixed: bool,
+    /// Crossing splits still allowed (a guard against an endless cascade).
+    pub(crate) crossing_budget: usize,
+}
+
+/// What the walk from `a` towards `b` found.
+enum Walk {
+    /// `a–b` is already an edge.
+    Edge,
+    /// Vertex `c` lies on the open segment `a–b`.
+    Split(u32),
+    /// The segment properly crosses the constrained edge `u–w` (the first one from `a`).
+    Blocked(u32, u32),
+    /// The (unconstrained) edges crossed, as vertex pairs, in order from `a`.
+    Crossed(Vec<(u32, u32)>),
+}
+
+impl<'a> Constrained<'a> {
+    pub(crate) fn new(mesh: Mesh<'a>, ghost_fixed: bool) -> Self {
+        let mut vmap = vec![u32::MAX; mesh.pts.len()];
+        for (h, &v) in mesh.v.iter().enumerate() {
+            if v != GHOST {
+                vmap[v as usize] = h as u32;
+            }
+        }
+        Constrained {
+            mesh,
+            fixed: HashMap::new(),
+            vmap,
+            ghost_fixed,
+            crossing_budget: 0,
+        }
+    }
+
+    /// Is the edge `a–b` constrained (edges to the ghost vertex count when `ghost_fixed`)?
+    pub(crate) fn is_fixed(&self, a: u32, b: u32) -> bool {
+        if a == GHOST || b == GHOST {
+            return self.ghost_fixed;
+        }
+        self.fixed.contains_key(&key(a, b))
+    }
+
+    /// Every half-edge leaving `a` (ghost triangles included), by rotation: O(degree).
+    pub(crate) fn out_edges(&self, a: u32) -> Vec<u32> {
+        let m = &self.mesh;
+        let start = self.vmap[a as usize];
+        let mut out = vec![start];
+        let mut h = m.twin[prev(start) as usize];
+        while h != start && out.len() <= m.v.len() {
+            out.push(h);
+            h = m.twin[prev(h) as usize];
+        }
+        out
+    }
+
+    /// The half-edge `u → w`, if it is an edge.
+    pub(crate) fn find(&self, u: u32, w: u32) -> Option<u32> {
+        self.out_edges(u)
+            .into_iter()
+            .find(|&h| self.mesh.v[next(h) as usize] == w)
+    }
+
+    fn touch(&mut self, t: u32) {
+        for h in [3 * t, 3 * t + 1, 3 * t + 2] {
+            let v = self.mesh.v[h as usize];
+            if v != GHOST {
+                self.vmap[v as usize] = h;
+            }
+        }
+    }
+
+    /// Flips half-edge `e` and keeps the vertex map valid.
+    pub(crate) fn flip(&mut self, e: u32) {
+        let f = self.mesh.twin[e as usize];
+        self.mesh.flip(e);
+        self.touch(e / 3);
+        self.touch(f / 3);
+    }
+
+    /// Inserts the point `p` (or finds the vertex equal to it) keeping every constraint:
+    /// a constrained edge through `p` is split into two constrained pieces. Returns the
+    /// vertex id and whether it is new.
+    pub(crate) fn add_point(&mut self, p: Point2) -> (u32, bool) {
+        let at = self.mesh.locate_any(p);
+        self.add_point_at(p, at)
+    }
+
+    /// [`Constrained::add_point`] for a point already located at `at`.
+    pub(crate) fn add_point_at(&mut self, p: Point2, at: Found) -> (u32, bool) {
+        if let Found::Vertex(v) = at {
+            return (v, false);
+        }
+        let id = self.mesh.push_point(p);
+        self.vmap.push(u32::MAX);
+        let split = match at {
+            Found::Edge(h) => {
+                let (a, b) = (self.mesh.v[h as usize], self.mesh.v[next(h) as usize]);
+                self.fixed.remove(&key(a, b)).map(|c| (a, b, c))
+            }
+            _ => None,
+        };
+        let fixed = &self.fixed;
+        let ghost_fixed = self.ghost_fixed;
+        self.mesh.insert_with(id, at, |a, b| {
+            if a == GHOST || b == GHOST {
+                ghost_fixed
+            } else {
+                fixed.contains_key(&key(a, b))
+            }
+        });
+        if let Some((a, b, c)) = split {
+            self.fixed.insert(key(a, id), c);
+            self.fixed.insert(key(id, b), c);
+        }
+        self.refresh_around(id);
+        (id, true)
+    }
+
+    /// After inserting `p`, every changed triangle has `p` as a corner: re-point the map of
+    /// their vertices.
+    fn refresh_around(&mut self, p: u32) {
+        let last = self.mesh.last;
+        let h0 = (0..3)
+            .map(|k| 3 * last + k)
+            .find(|&h| self.mesh.v[h as usize] == p)
+            .or_else(|| (0..self.mesh.v.len() as u32).find(|&h| self.mesh.v[h as usize] == p));
+        let Some(h0) = h0 else { return };
+        self.vmap[p as usize] = h0;
+        for h in self.out_edges(p) {
+            self.touch(h / 3);
+        }
+        self.vmap[p as usize] = h0;
+    }
+
+    /// Inserts the constraint `a–b` (vertex ids) with id `ci`, splitting it at vertices on
+    /// it and at crossings with constrained edges (see the module docs).
+    pub(crate) fn insert_segment(&mut self, a: u32, b: u32, ci: u32) -> Result<()> {
+        let mut work = vec![(a, b)];
+        while let Some((a, b)) = work.pop() {
+            if a == b {
+                continue;
+            }
+            match self.walk(a, b, ci)? {
+                Walk::Edge => {
+                    self.fixed.insert(key(a, b), ci);
+                }
+                Walk::Split(c) => work.extend_from_slice(&[(c, b), (a, c)]),
+                Walk::Blocked(u, w) => {
+                    if self.crossing_budget == 0 {
+                        return Err(Error::InvalidInput(format!(
+                            "constraint {ci}: too many crossings split (rounded crossing points keep creating new crossings)"
+                        )));
+                    }
+                    self.crossing_budget -= 1;
+                    let m = &self.mesh;
+                    let s = Segment2::new(m.pt(a), m.pt(b));
+                    let t = Segment2::new(m.pt(u), m.pt(w));
+                    let Some(c) = Crossing::new(s, t) else {
+                        return Err(internal(ci, "crossing of parallel segments"));
+                    };
+                    let x = c.approx();
+                    if !x.is_finite() {
+                        return Err(internal(ci, "crossing beyond the f64 range"));
+                    }
+                    let cu = *self.fixed.get(&key(u, w)).unwrap_or(&ci);
+                    let (xv, _) = self.add_point(x);
+                    if xv != u && xv != w && self.fixed.remove(&key(u, w)).is_some() {
+                        self.insert_segment(u, xv, cu)?;
+                        self.insert_segment(xv, w, cu)?;
+                    }
+                    work.extend_from_slice(&[(xv, b), (a, xv)]);
+                }
+                Walk::Crossed(list) => {
+                    self.flip_out(a, b, list.into(), ci)?;
+                    self.fixed.insert(key(a, b), ci);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Walks from `a` to `b` through the triangles the segment crosses (exact orientations).
+    fn walk(&self, a: u32, b: u32, ci: u32) -> Result<Walk> {
+        let m = &self.mesh;
+        let (pa, pb) = (m.pt(a), m.pt(b));
+        let out = self.out_edges(a);
+        for &h in &out {
+            let x = m.v[next(h) as usize];
+            if x == b {
+                return Ok(Walk::Edge);
+            }
+            if x != GHOST {
+                let px = m.pt(x);
+                if orient(pa, px, pb) == 0 && same_direction(pa, px, pb) {
+                    return Ok(Walk::Split(x));
+                }
+            }
+        }
+        for &h in &out {
+            if m.is_ghost(h / 3) {
+                continue;
+            }
+            let x = m.v[next(h) as usize];
+            let y = m.v[prev(h) as usize];
+            if !(orient(pa, m.pt(x), pb) > 0 && orient(pa, m.pt(y), pb) < 0) {
+                continue;
+            }
+            // b is beyond edge x -> y (x right of a->b, y left).
+            let mut crossed = Vec::new();
+            let mut e = next(h);
+            loop {
+                let (u, w) = (m.v[e as usize], m.v[next(e) as usize]);
+                if self.is_fixed(u, w) {
+                    return Ok(Walk::Blocked(u, w));
+                }
+                crossed.push((u, w));
+                let f = m.twin[e as usize];
+                let z = m.v[prev(f) as usize];
+                if z == b {
+                    return Ok(Walk::Crossed(crossed));
+                }
+                if z == GHOST {
+                    break;
+                }
+                let oz = orient(pa, pb, m.pt(z));
+                if oz == 0 {
+                    return Ok(Walk::Split(z));
+                }
+                // f = w -> u in triangle (w, u, z): leave through u–z when z is on w's
+                // (left) side, else through z–w.
+                e = if oz > 0 { next(f) } else { prev(f) };
+            }
+            break;
+        }
+        Err(internal(ci, "no path through the triangulation"))
+    }
+
+    /// Sloan's flips for `a–b`: a crossed edge whose quadrilateral is strictly convex is
+    /// flipped (its new diagonal re-queued if it still crosses), otherwise it waits.
+    fn flip_out(&mut self, a: u32, b: u32, mut queue: VecDeque<(u32, u32)>, ci: u32) -> Result<()> {
+        let (pa, pb) = (self.mesh.pt(a), self.mesh.pt(b));
+        let limit = 16 * queue.len() * queue.len() + 1000;
+        let mut steps = 0;
+        while let Some((u, w)) = queue.pop_front() {
+            steps += 1;
+            if steps > limit {
+                return Err(internal(ci, "flipping did not converge"));
+            }
+            let Some(e) = self.find(u, w) else {
+                continue;
+            };
+            let m = &self.mesh;
+            let f = m.twin[e as usize];
+            let p = m.v[prev(e) as usize];
+            let d = m.v[prev(f) as usize];
+            if p == GHOST || d == GHOST {
+                queue.push_back((u, w));
+                continue;
+            }
+            let (pu, pw, pp, pd) = (m.pt(u), m.pt(w), m.pt(p), m.pt(d));
+            if orient(pp, pu, pd) > 0 && orient(pp, pd, pw) > 0 {
+                self.flip(e);
+                if crosses(pa, pb, pp, pd) {
+                    queue.push_back((p, d));
+                }
+            } else {
+                queue.push_back((u, w));
+            }
+        }
+        match self.walk(a, b, ci)? {
+            Walk::Edge => Ok(()),
+            _ => Err(internal(ci, "not an edge after flipping")),
+        }
+    }
+
+    /// Lawson flips from the half-edges in `stack` (and those they expose) until every
+    /// unconstrained edge is locally Delaunay. Returns the triangles changed by flips.
+    pub(crate) fn restore(&mut self, mut stack: Vec<u32>) -> Vec<u32> {
+        let mut touched = Vec::new();
+        while let Some(h) = stack.pop() {
+            let m = &self.mesh;
+            let f = m.twin[h as usize];
+            let (a, b) = (m.v[h as usize], m.v[next(h) as usize]);
+            let p = m.v[prev(h) as usize];
+            let d = m.v[prev(f) as usize];
+            if p == GHOST || d == GHOST || a == GHOST || b == GHOST || self.is_fixed(a, b) {
+                continue;
+            }
+            if in_circle(m.pt(b), m.pt(a), m.pt(d), m.pt(p)) > 0 {
+                self.flip(h);
+                let (t, u) = (h / 3, f / 3);
+                touched.extend_from_slice(&[t, u]);
+                stack.extend_from_slice(&[3 * t, 3 * t + 1, 3 * u + 1, 3 * u + 2]);
+            }
+        }
+        touched
+    }
+
+    /// [`Constrained::restore`] over every edge.
+    pub(crate) fn restore_all(&mut self) {
+        self.restore((0..self.mesh.v.len() as u32).collect());
+    }
+
+    /// The triangles around vertex `v` (ghosts included).
+    pub(crate) fn star(&self, v: u32) -> Vec<u32> {
+        self.out_edges(v).into_iter().map(|h| h / 3).collect()
+    }
+}
+
+/// Where [`Constrained::walk_to`] ended.
+pub(crate) enum WalkTo {
+    /// The point is here.
+    At(Found),
+    /// The way is barred by the constrained edge `a–b`.
+    Blocked(u32, u32),
+    /// The walk did not settle (it may cycle in a constrained triangulation).
+    Lost,
+}
+
+impl Constrained<'_> {
+    /// The visibility walk from triangle `t` towards `p` that never crosses a constrained
+    /// edge, except `allow` (entering the ghost beyond it means `p` is outside there).
+    pub(crate) fn walk_to(&self, t: u32, p: Point2, allow: Option<(u32, u32)>) -> WalkTo {
+        let m = &self.mesh;
+        let mut cur = t;
+        let mut from = u32::MAX;
+        let limit = 64 + 4 * u64::from(m.slots());
+        let mut steps = 0u64;
+        loop {
+            steps += 1;
+            if steps > limit {
+                return WalkTo::Lost;
+            }
+            if m.is_ghost(cur) {
+                return WalkTo::At(Found::Face(cur));
+            }
+            let base = 3 * cur;
+            let mut zero_mask = 0u32;
+            let mut moved = false;
+            for k in 0..3 {
+                let h = base + k;
+                if h == from {
+                    continue;
+                }
+                let (a, b) = (m.v[h as usize], m.v[next(h) as usize]);
+                let s = orient(m.pt(a), m.pt(b), p);
+                if s < 0 {
+                    if self.is_fixed(a, b) && allow != Some(key(a, b)) {
+                        return WalkTo::Blocked(a, b);
+                    }
+                    from = m.twin[h as usize];
+                    cur = from / 3;
+                    moved = true;
+                    break;
+                } else if s == 0 {
+                    zero_mask |= 1 << k;
+                }
+            }
+            if !moved {
+                return WalkTo::At(m.classify(base, zero_mask));
+            }
+        }
+    }
+}
+
+fn internal(ci: u32, what: &str) -> Error {
+    Error::InvalidInput(format!("constraint {ci}: {what} (internal error)"))
+}
+
+/// For collinear `a`, `x`, `b` (`x != a`): is `x` on the ray from `a` towards `b`? Exact
+/// (coordinate comparisons only).
+fn same_direction(a: Point2, x: Point2, b: Point2) -> bool {
+    let sign = |p: f64, q: f64| i8::from(p > q) - i8::from(p < q);
+    sign(x.x, a.x) * sign(b.x, a.x) > 0 || sign(x.y, a.y) * sign(b.y, a.y) > 0
+}
+
+/// Does segment p–d properly cross segment a–b (interiors meet in one point)?
+fn crosses(a: Point2, b: Point2, p: Point2, d: Point2) -> bool {
+    orient(a, b, p) * orient(a, b, d) < 0 && orient(p, d, a) * orient(p, d, b) < 0
+}
