@@ -364,6 +364,54 @@ pub(crate) fn side(i: &Line, j: &Line, k: &Line) -> Ordering {
     }
 }
 
+/// `Y_ij·D_kl - Y_kl·D_ij` for the meeting points `(·, Y/D)` of lines `i, j` and `k, l`,
+/// with the constant column (`use_m = false`) or the `M` column (`use_m = true`) in `Y`.
+struct MeetYExpr<'a> {
+    i: &'a Line,
+    j: &'a Line,
+    k: &'a Line,
+    l: &'a Line,
+    use_m: bool,
+}
+
+impl SignExpr for MeetYExpr<'_> {
+    #[inline]
+    fn eval<N: Num>(&self) -> N {
+        let (i, j, k, l) = (self.i, self.j, self.k, self.l);
+        let col = |p: &Line, q: &Line| -> N {
+            if self.use_m {
+                det2(p.a, q.m, q.a, p.m)
+            } else {
+                det2(p.a, q.c, q.a, p.c)
+            }
+        };
+        let d_ij: N = det2(i.a, j.b, j.a, i.b);
+        let d_kl: N = det2(k.a, l.b, l.a, k.b);
+        col(i, j).mul(&d_kl).sub(&col(k, l).mul(&d_ij))
+    }
+}
+
+/// Compare the heights (y) of the meeting point of lines `i`, `j` and that of `k`, `l`
+/// (neither pair parallel), exactly; box sides count with their symbolic `M`.
+#[inline]
+pub(crate) fn cmp_meet_y(i: &Line, j: &Line, k: &Line, l: &Line) -> Ordering {
+    let e = |use_m| sign(&MeetYExpr { i, j, k, l, use_m });
+    let s = if i.m == 0.0 && j.m == 0.0 && k.m == 0.0 && l.m == 0.0 {
+        e(false)
+    } else {
+        match e(true) {
+            Ordering::Equal => e(false),
+            s => s,
+        }
+    };
+    // y_ij - y_kl = (Y_ij·D_kl - Y_kl·D_ij) / (D_ij·D_kl).
+    match (cross_sign(i, j), cross_sign(k, l)) {
+        (Ordering::Equal, _) | (_, Ordering::Equal) => Ordering::Equal,
+        (a, b) if a == b => s,
+        _ => s.reverse(),
+    }
+}
+
 /// `a·x + b·y - c` at an input point.
 pub(crate) struct AffineExpr {
     pub(crate) a: f64,

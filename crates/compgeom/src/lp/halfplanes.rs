@@ -91,13 +91,15 @@ impl Region {
 
 /// A corner (the two lines meeting there) and the line of the edge leaving it.
 #[derive(Debug, Clone, Copy)]
-struct Corner {
-    v: (usize, usize),
-    edge: usize,
+pub(super) struct Corner {
+    pub(super) v: (usize, usize),
+    pub(super) edge: usize,
 }
 
-/// Intersect the half-planes (every `a·x + b·y <= c`); `seed` fixes the random order
-/// (the answer does not depend on it).
+/// Intersect the half-planes (every `a·x + b·y <= c`): exact, O(n log n), by divide and
+/// conquer ([`intersect_halfplanes_dc`](super::intersect_halfplanes_dc)). `seed` is kept for
+/// compatibility and does not change anything; the randomized incremental method is
+/// [`intersect_halfplanes_incremental`].
 ///
 /// Errors: a non-finite coefficient ([`Error::NonFinite`](crate::Error::NonFinite)).
 ///
@@ -111,7 +113,7 @@ struct Corner {
 ///     HalfPlane::new(1.0, 1.0, 2.0),
 ///     HalfPlane::new(1.0, 0.0, 5.0),
 /// ];
-/// let r = intersect_halfplanes(&hs, 7)?;
+/// let r = intersect_halfplanes(&hs, 0)?;
 /// assert_eq!(r.kind, RegionKind::Polygon);
 /// assert_eq!(r.vertices, [(0.0, 0.0), (2.0, 0.0), (0.0, 2.0)].map(Point2::from));
 /// assert_eq!(r.constraints, vec![1, 2, 0]);
@@ -121,6 +123,36 @@ struct Corner {
 /// # Ok::<(), compgeom::Error>(())
 /// ```
 pub fn intersect_halfplanes(halfplanes: &[HalfPlane], seed: u64) -> Result<Region> {
+    let _ = seed;
+    super::intersect_halfplanes_dc(halfplanes)
+}
+
+/// Intersect the half-planes by randomized incremental clipping of the symbolic box
+/// (expected O(n·h), O(n²) in the worst case); `seed` fixes the random order (the answer
+/// does not depend on it, except which of identical boundary lines is reported).
+///
+/// Errors: a non-finite coefficient ([`Error::NonFinite`](crate::Error::NonFinite)).
+///
+/// ```
+/// use compgeom::lp::{intersect_halfplanes_incremental, HalfPlane, RegionKind};
+/// use compgeom::Point2;
+/// // The triangle x >= 0, y >= 0, x + y <= 2, plus a redundant x <= 5.
+/// let hs = [
+///     HalfPlane::new(-1.0, 0.0, 0.0),
+///     HalfPlane::new(0.0, -1.0, 0.0),
+///     HalfPlane::new(1.0, 1.0, 2.0),
+///     HalfPlane::new(1.0, 0.0, 5.0),
+/// ];
+/// let r = intersect_halfplanes_incremental(&hs, 7)?;
+/// assert_eq!(r.kind, RegionKind::Polygon);
+/// assert_eq!(r.vertices, [(0.0, 0.0), (2.0, 0.0), (0.0, 2.0)].map(Point2::from));
+/// assert_eq!(r.constraints, vec![1, 2, 0]);
+/// // x <= 0 and x >= 0: the line x = 0.
+/// let r = intersect_halfplanes_incremental(&[HalfPlane::new(1.0, 0.0, 0.0), HalfPlane::new(-1.0, 0.0, 0.0)], 0)?;
+/// assert_eq!(r.kind, RegionKind::Line);
+/// # Ok::<(), compgeom::Error>(())
+/// ```
+pub fn intersect_halfplanes_incremental(halfplanes: &[HalfPlane], seed: u64) -> Result<Region> {
     check_finite(halfplanes)?;
     let mut lines = Line::bbox().to_vec();
     let mut orig = Vec::with_capacity(halfplanes.len());
@@ -152,7 +184,7 @@ pub fn intersect_halfplanes(halfplanes: &[HalfPlane], seed: u64) -> Result<Regio
     Ok(describe(&lines, &orig, &poly))
 }
 
-fn empty() -> Region {
+pub(super) fn empty() -> Region {
     Region {
         kind: RegionKind::Empty,
         vertices: Vec::new(),
@@ -197,6 +229,14 @@ fn clip(lines: &[Line], poly: &mut Vec<Corner>, i: usize, sides: &mut Vec<Orderi
     }
     // A degenerate (two-corner) region crossed by the line yields the same point twice,
     // once on each of its two coincident edges: merge equal neighbours.
+    let merged = merge_equal(lines, out);
+    *poly = merged;
+    !poly.is_empty()
+}
+
+/// Merge neighbouring corners at the same exact point (the edge between them has length
+/// zero): the first keeps its lines and takes the later outgoing edge.
+pub(super) fn merge_equal(lines: &[Line], out: Vec<Corner>) -> Vec<Corner> {
     // (A corner is trivially on its own lines; testing those would only cost exact zeros.)
     let same = |a: &Corner, b: &Corner| {
         [b.v.0, b.v.1].iter().all(|&k| {
@@ -216,12 +256,11 @@ fn clip(lines: &[Line], poly: &mut Vec<Corner>, i: usize, sides: &mut Vec<Orderi
         // The last corner is merged[0] again: the edge between them has length zero.
         merged.pop();
     }
-    *poly = merged;
-    !poly.is_empty()
+    merged
 }
 
 /// Turn the clipped box into the public description.
-fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Region {
+pub(super) fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Region {
     let n = poly.len();
     let finite: Vec<bool> = poly
         .iter()
