@@ -17,11 +17,10 @@
 //! it in boundary order. Redundant, parallel and identical constraints are ordinary input;
 //! of identical boundary lines the one added first is reported.
 
-use super::exact::{meet_exact, side, to_f64, Line};
+use super::exact::{meet_exact, meet_f64, side, to_f64, Line};
 use super::{check_finite, HalfPlane, Shuffler};
 use crate::kernel::{Point2, Vector2};
 use crate::Result;
-use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// What kind of set a half-plane intersection is.
@@ -266,10 +265,20 @@ pub(super) fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Regio
         .iter()
         .map(|c| !lines[c.v.0].is_box() && !lines[c.v.1].is_box())
         .collect();
-    let exact: Vec<_> = poly
-        .iter()
-        .map(|c| meet_exact(&lines[c.v.0], &lines[c.v.1]))
-        .collect();
+    // Each corner as `base + M·dir`: finite corners rounded in integer arithmetic where
+    // the scales allow, else (and for corners on the box) through exact rationals.
+    let exact = |c: &Corner| meet_exact(&lines[c.v.0], &lines[c.v.1]);
+    let outline_of = |c: &Corner| -> (Point2, Vector2) {
+        if let Some((x, y)) = meet_f64(&lines[c.v.0], &lines[c.v.1]) {
+            return (Point2::new(x, y), Vector2::new(0.0, 0.0));
+        }
+        let ((x0, y0), (x1, y1)) = exact(c);
+        (
+            Point2::new(to_f64(&x0), to_f64(&y0)),
+            Vector2::new(to_f64(&x1), to_f64(&y1)),
+        )
+    };
+    let rounded: Vec<(Point2, Vector2)> = poly.iter().map(outline_of).collect();
     let nf = finite.iter().filter(|&&f| f).count();
     let kind = match (n, nf) {
         (0, _) => RegionKind::Empty,
@@ -283,12 +292,38 @@ pub(super) fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Regio
     // Start: a bounded region at its lexicographically smallest corner; an unbounded one
     // where its boundary comes in from infinity (after the last box edge).
     let start = if nf == n {
-        let key = |k: usize| -> &(BigRational, BigRational) { &exact[k].0 };
-        (0..n).min_by(|&a, &b| key(a).cmp(key(b))).unwrap_or(0)
+        // Rounding to nearest is monotone: rounded keys decide unless they are equal.
+        let cmp = |a: usize, b: usize| -> Ordering {
+            let (p, q) = (rounded[a].0, rounded[b].0);
+            match p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y)) {
+                Ordering::Equal => exact(&poly[a]).0.cmp(&exact(&poly[b]).0),
+                o => o,
+            }
+        };
+        (0..n).min_by(|&a, &b| cmp(a, b)).unwrap_or(0)
     } else {
+        // Where the boundary comes in from infinity (after a box edge); a strip has two
+        // such places and a line none (then any end at infinity): of the candidates, the
+        // one with the lexicographically smallest direction and base, whatever order the
+        // corners came in.
+        let key = |k: usize| {
+            let (b, d) = rounded[k];
+            [d.x, d.y, b.x, b.y]
+        };
+        let smallest = |a: &usize, b: &usize| {
+            key(*a)
+                .iter()
+                .zip(key(*b).iter())
+                .map(|(p, q)| p.total_cmp(q))
+                .find(|o| o.is_ne())
+                .unwrap_or(Ordering::Equal)
+        };
         (0..n)
-            .find(|&k| lines[poly[(k + n - 1) % n].edge].is_box() && !lines[poly[k].edge].is_box())
-            .or_else(|| (0..n).find(|&k| !finite[k]))
+            .filter(|&k| {
+                lines[poly[(k + n - 1) % n].edge].is_box() && !lines[poly[k].edge].is_box()
+            })
+            .min_by(smallest)
+            .or_else(|| (0..n).filter(|&k| !finite[k]).min_by(smallest))
             .unwrap_or(0)
     };
     let mut vertices = Vec::new();
@@ -296,12 +331,11 @@ pub(super) fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Regio
     let mut outline = Vec::new();
     for t in 0..n {
         let k = (start + t) % n;
-        let ((x0, y0), (x1, y1)) = &exact[k];
-        let base = Point2::new(to_f64(x0), to_f64(y0));
+        let (base, dir) = rounded[k];
         if finite[k] {
             vertices.push(base);
         }
-        outline.push((base, Vector2::new(to_f64(x1), to_f64(y1))));
+        outline.push((base, dir));
         let e = poly[k].edge;
         if n <= 2 {
             // A point, segment, ray or line: its corners are cut by constraints that carry

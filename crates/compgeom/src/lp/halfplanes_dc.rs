@@ -163,6 +163,9 @@ fn single(lines: &[Line], i: usize) -> Conv {
 /// Of two parallel constraints with the same direction, the tighter one (on ties the
 /// smaller index, which is the earlier input constraint).
 fn tighter(lines: &[Line], i: usize, j: usize) -> usize {
+    if i == j {
+        return i;
+    }
     match parallel_side(&lines[i], &lines[j]) {
         Ordering::Less => i,
         Ordering::Greater => j,
