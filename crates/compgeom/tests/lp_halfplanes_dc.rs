@@ -6,8 +6,8 @@
 mod lp_oracle;
 
 use compgeom::lp::{
-    intersect_halfplanes, intersect_halfplanes_dc, intersect_halfplanes_incremental, verify_region,
-    HalfPlane, RegionKind,
+    intersect_halfplanes, intersect_halfplanes_dc, intersect_halfplanes_dc_leaf,
+    intersect_halfplanes_incremental, verify_region, HalfPlane, RegionKind,
 };
 use lp_oracle::*;
 use num_traits::Zero;
@@ -45,6 +45,18 @@ fn check(hs: &[HalfPlane], seed: u64) -> Result<RegionKind, TestCaseError> {
         have.sort_by(|a, b| a.partial_cmp(b).unwrap());
         prop_assert_eq!(have, want);
     }
+    // The book's recursion down to single half-planes gives the same region; of several
+    // constraints through an end of a point, segment or ray another may be listed.
+    for leaf in [1, 3] {
+        let other = intersect_halfplanes_dc_leaf(hs, leaf).expect("valid input");
+        prop_assert_eq!(other.kind, dc.kind);
+        prop_assert_eq!(&other.vertices, &dc.vertices);
+        prop_assert_eq!(&other.outline, &dc.outline);
+        if matches!(dc.kind, RegionKind::Polygon | RegionKind::Unbounded) {
+            prop_assert_eq!(&other.constraints, &dc.constraints);
+        }
+        verify_region(hs, &other).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    }
     // The default entry point is the divide-and-conquer one.
     prop_assert_eq!(
         intersect_halfplanes(hs, seed).expect("valid input"),
@@ -65,7 +77,7 @@ fn tangents(angles: &[u32], m: u32, offsets: &[i8]) -> Vec<HalfPlane> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(250))]
+    #![proptest_config(ProptestConfig::with_cases(150))]
 
     #[test]
     fn random_fractional(hs in prop::collection::vec((-1.0f64..1.0, -1.0f64..1.0, -0.3f64..1.0)
@@ -124,6 +136,7 @@ fn many_random_tangents_against_incremental() {
     assert_eq!(dc.vertices.len(), hs.len());
     let inc = intersect_halfplanes_incremental(&hs, 3).unwrap();
     assert_eq!(dc, inc);
+    assert_eq!(intersect_halfplanes_dc_leaf(&hs, 1).unwrap(), dc);
 }
 
 #[test]

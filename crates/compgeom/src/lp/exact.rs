@@ -43,8 +43,10 @@ pub(crate) struct Filt {
     e: f64,
 }
 
-const U: f64 = 1.0 / 9_007_199_254_740_992.0;
-const ETA: f64 = 5e-320;
+/// 2^-53, the unit roundoff.
+pub(crate) const U: f64 = 1.0 / 9_007_199_254_740_992.0;
+/// A bound on the absolute error of one underflowing operation.
+pub(crate) const ETA: f64 = 5e-320;
 const SAFETY: f64 = 1.0 + 1.0 / 1_099_511_627_776.0;
 
 impl Num for Filt {
@@ -102,6 +104,16 @@ impl Filt {
     /// A value known only to lie within `err` of `v`.
     pub(crate) fn approx(v: f64, err: f64) -> Filt {
         Filt { v, e: err }
+    }
+
+    /// The `f64` value.
+    pub(crate) fn value(&self) -> f64 {
+        self.v
+    }
+
+    /// The bound on its distance from the exact value.
+    pub(crate) fn error(&self) -> f64 {
+        self.e
     }
 
     /// An upper bound on the exact value (`+inf` if unknown).

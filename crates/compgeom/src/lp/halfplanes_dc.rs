@@ -92,6 +92,13 @@ struct Conv {
 /// # Ok::<(), compgeom::Error>(())
 /// ```
 pub fn intersect_halfplanes_dc(halfplanes: &[HalfPlane]) -> Result<Region> {
+    intersect_halfplanes_dc_leaf(halfplanes, LEAF)
+}
+
+/// As [`intersect_halfplanes_dc`], splitting down to groups of at most `leaf` half-planes
+/// (at least 1): `leaf = 1` is the book's recursion all the way down. For tests.
+#[doc(hidden)]
+pub fn intersect_halfplanes_dc_leaf(halfplanes: &[HalfPlane], leaf: usize) -> Result<Region> {
     check_finite(halfplanes)?;
     let mut lines = Line::bbox().to_vec();
     let mut orig = Vec::with_capacity(halfplanes.len());
@@ -117,7 +124,7 @@ pub fn intersect_halfplanes_dc(halfplanes: &[HalfPlane]) -> Result<Region> {
     let region = if ids.is_empty() {
         Some(whole)
     } else {
-        intersect_rec(&lines, &ids, &whole)
+        intersect_rec(&lines, &ids, &whole, leaf.max(1))
     };
     Ok(match region {
         None => empty(),
@@ -126,37 +133,55 @@ pub fn intersect_halfplanes_dc(halfplanes: &[HalfPlane]) -> Result<Region> {
 }
 
 /// The intersection of the box with the half-planes `ids` (non-empty), or `None` if empty.
-fn intersect_rec(lines: &[Line], ids: &[usize], whole: &Conv) -> Option<Conv> {
-    if ids.len() == 1 {
-        return intersect_regions(lines, whole, &single(lines, ids[0]));
+fn intersect_rec(lines: &[Line], ids: &[usize], whole: &Conv, leaf: usize) -> Option<Conv> {
+    if ids.len() <= leaf {
+        return intersect_regions(lines, whole, &small(lines, ids));
     }
     let (a, b) = ids.split_at(ids.len() / 2);
-    let c1 = intersect_rec(lines, a, whole)?;
-    let c2 = intersect_rec(lines, b, whole)?;
+    let c1 = intersect_rec(lines, a, whole, leaf)?;
+    let c2 = intersect_rec(lines, b, whole, leaf)?;
     intersect_regions(lines, &c1, &c2)
 }
 
-/// One half-plane intersected with the box, as chains (not yet cut: `intersect_regions`
-/// with the whole box does that).
-fn single(lines: &[Line], i: usize) -> Conv {
-    let l = &lines[i];
+/// At most this many half-planes are sorted directly instead of split further (the same
+/// chains, fewer small merges).
+const LEAF: usize = 16;
+
+/// A few half-planes as raw chains: left and right constraints sorted bottom to top (by
+/// slope, exactly), the tightest bottom and top. Not yet reduced: intersecting with the
+/// box by `intersect_regions` drops what does not show.
+fn small(lines: &[Line], ids: &[usize]) -> Conv {
     let mut c = Conv {
-        left: vec![BOX_LEFT],
-        right: vec![BOX_RIGHT],
+        left: Vec::new(),
+        right: Vec::new(),
         bot: BOX_BOTTOM,
         top: BOX_TOP,
         bot_edge: true,
         top_edge: true,
     };
-    if l.a < 0.0 {
-        c.left = vec![i];
-    } else if l.a > 0.0 {
-        c.right = vec![i];
-    } else if l.b < 0.0 {
-        c.bot = i;
-    } else {
-        c.top = i;
+    for &i in ids {
+        let l = &lines[i];
+        if l.a < 0.0 {
+            c.left.push(i);
+        } else if l.a > 0.0 {
+            c.right.push(i);
+        } else if l.b < 0.0 {
+            c.bot = tighter(lines, c.bot, i);
+        } else {
+            c.top = tighter(lines, c.top, i);
+        }
     }
+    // Normals of one side lie in one open half-plane of directions: the cross product
+    // orders them (ties are parallel lines, kept next to each other).
+    let by = |turn: Ordering| {
+        move |&i: &usize, &j: &usize| match cross_sign(&lines[i], &lines[j]) {
+            Ordering::Equal => Ordering::Equal,
+            s if s == turn => Ordering::Less,
+            _ => Ordering::Greater,
+        }
+    };
+    c.left.sort_by(by(Ordering::Less));
+    c.right.sort_by(by(Ordering::Greater));
     c
 }
 

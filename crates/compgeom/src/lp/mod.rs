@@ -45,7 +45,7 @@ mod verify;
 pub use casting::{castability, Castability, TopFacet};
 pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, intersect_halfplanes_incremental, Region, RegionKind};
-pub use halfplanes_dc::intersect_halfplanes_dc;
+pub use halfplanes_dc::{intersect_halfplanes_dc, intersect_halfplanes_dc_leaf};
 pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
 pub use lpd::{lp_d, LpSolution};
 pub use read::{read_constraints, read_halfplanes};
