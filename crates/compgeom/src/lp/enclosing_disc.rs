@@ -215,7 +215,7 @@ fn circumcentre(a: Point2, b: Point2, c: Point2) -> (f64, f64, f64) {
     let nx = nb.mul(&cy).sub(&nc.mul(&by));
     let ny = nc.mul(&bx).sub(&nb.mul(&cx));
     let (dv, de) = (den.value(), den.error());
-    if !(dv.abs() > 2.0 * de) {
+    if dv.is_nan() || de.is_nan() || dv.abs() <= 2.0 * de {
         return (0.0, 0.0, f64::INFINITY);
     }
     // |n/d - n~/d~| <= (|n~|·e_d + |d~|·e_n) / (|d~|·(|d~| - e_d)), plus the rounding
