@@ -38,5 +38,8 @@ fn default_and_incremental_agree() {
     assert_eq!(strip["kind"], "unbounded");
     let point = run(&["--incremental"], "1 1 0\n-1 1 0\n0 -1 0\n");
     assert_eq!(point["kind"], "point");
-    assert_eq!(run(&[], "1 1 0\n-1 1 0\n0 -1 0\n")["vertices"], point["vertices"]);
+    assert_eq!(
+        run(&[], "1 1 0\n-1 1 0\n0 -1 0\n")["vertices"],
+        point["vertices"]
+    );
 }

@@ -6,7 +6,7 @@
 //! | [`intersect_halfplanes`] = [`intersect_halfplanes_dc`] | §4.2 INTERSECTHALFPLANES | divide and conquer, linear merge of left/right boundary chains | O(n log n) |
 //! | [`intersect_halfplanes_incremental`] | §4.2 half-plane intersection | randomized incremental clipping of a symbolic box | expected O(n·h), h the size of the intermediate regions (worst case O(n²)) |
 //! | [`lp_d`] | §4.5 RANDOMIZEDLP | recursive randomized incremental, exact rationals | expected O(d!·n) |
-//! | [`smallest_enclosing_disc`] | §4.7 MINIDISC | randomized incremental, exact `incircle`/`orient2d` | expected O(n) |
+//! | [`smallest_enclosing_disc`] | §4.7 MINIDISC | randomized incremental; `f64` disc filter, exact `incircle`/`orient2d` near the circle | expected O(n) |
 //! | [`castability`] | §4.1 casting | per top facet a feasibility problem (Lemma 4.1), exact rational LP | O(n²) expected |
 //! | [`verify_lp2d`], [`verify_region`], [`verify_enclosing_disc`] | | exact checks of a claimed answer | O(n) / O(n·h) / O(n) |
 //!
