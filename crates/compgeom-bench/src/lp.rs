@@ -8,7 +8,9 @@
 //! - `smallest_enclosing_disc` (exact MINIDISC): geo 0.33 has no minimum bounding circle,
 //!   so the peer is the same MINIDISC in plain f64 (written here): the price of exactness.
 //!
-//! Parts (env `COMPGEOM_LP_PARTS=lp2d,halfplanes,disc`, default all) run in that order.
+//! Parts (env `COMPGEOM_LP_PARTS=lp2d,halfplanes,disc,lpd,cast`, default all) run in that
+//! order. `lpd` (d = 3, planes tangent to the unit sphere) and `cast` (a prism over a
+//! regular k-gon, k + 2 facets) have no peer here: they show growth only.
 //!
 //! Input: constraints tangent to the unit circle at random angles, offset by up to 1e-3
 //! (every constraint can matter), random objective; points uniform in a disc.
@@ -285,6 +287,12 @@ pub fn run(quick: bool) -> Result<(), String> {
     if want("disc") {
         disc_part(sizes)?;
     }
+    if want("lpd") {
+        lpd_part(quick)?;
+    }
+    if want("cast") {
+        cast_part(quick)?;
+    }
     Ok(())
 }
 
@@ -366,6 +374,73 @@ fn disc_part(sizes: &[usize]) -> Result<(), String> {
             ms(t_f64),
             ms(t_f64) / ms(t_ours)
         );
+    }
+    Ok(())
+}
+
+/// d = 3 LP: planes tangent to the unit sphere at random points, random objective.
+fn lpd_part(quick: bool) -> Result<(), String> {
+    let sizes: &[usize] = if quick {
+        &[1_000, 10_000]
+    } else {
+        &[10_000, 100_000]
+    };
+    println!("lp_d, d = 3: ms (best of 3)");
+    let mut prev: Option<f64> = None;
+    for &n in sizes {
+        let mut r = Rng::new(3);
+        let rows: Vec<Vec<f64>> = (0..n)
+            .map(|_| {
+                let (z, t) = (2.0 * r.unit() - 1.0, r.unit() * std::f64::consts::TAU);
+                let s = (1.0 - z * z).sqrt();
+                vec![s * t.cos(), s * t.sin(), z, 1.0]
+            })
+            .collect();
+        let c = [0.2, -0.5, 0.7];
+        compgeom::lp::lp_d(&rows, &c, 0).map_err(|e| e.to_string())?;
+        let t = best_of(3, || compgeom::lp::lp_d(&rows, &c, 0));
+        print!("{:>9} compgeom {:>10.2}", n, ms(t));
+        match prev {
+            Some(p) => println!("  growth x{:.1} for 10x", ms(t) / p),
+            None => println!(),
+        }
+        prev = Some(ms(t));
+    }
+    Ok(())
+}
+
+/// Casting a prism over a regular k-gon (k + 2 facets; castable from both caps).
+fn cast_part(quick: bool) -> Result<(), String> {
+    let sizes: &[usize] = if quick { &[100, 300] } else { &[300, 1_000] };
+    println!("castability of a k-gon prism: ms (best of 1)");
+    let mut prev: Option<f64> = None;
+    for &k in sizes {
+        let mut vertices = Vec::with_capacity(2 * k);
+        for z in [0.0, 1.0] {
+            for i in 0..k {
+                let t = i as f64 * std::f64::consts::TAU / k as f64;
+                vertices.push(compgeom::Point3::new(t.cos(), t.sin(), z));
+            }
+        }
+        let mut faces = vec![(0..k).rev().collect::<Vec<_>>(), (k..2 * k).collect()];
+        for i in 0..k {
+            let j = (i + 1) % k;
+            faces.push(vec![i, j, k + j, k + i]);
+        }
+        let mesh = compgeom::io::Polyhedron { vertices, faces };
+        let c = compgeom::lp::castability(&mesh).map_err(|e| e.to_string())?;
+        let t = best_of(1, || compgeom::lp::castability(&mesh));
+        print!(
+            "{:>6} facets compgeom {:>10.2} ({} castable tops)",
+            k + 2,
+            ms(t),
+            c.top_facets.len()
+        );
+        match prev {
+            Some(p) => println!("  growth x{:.1}", ms(t) / p),
+            None => println!(),
+        }
+        prev = Some(ms(t));
     }
     Ok(())
 }
