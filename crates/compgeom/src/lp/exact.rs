@@ -8,8 +8,10 @@
 //!
 //! Every decision is the sign of a polynomial in the inputs (and in `M`, whose leading
 //! coefficient decides). It is evaluated first in `f64` with a rigorous running error bound
-//! ([`Filt`]); when that cannot tell, exactly with big rationals ([`Ex`]; every `f64`
-//! converts to a rational exactly).
+//! ([`Filt`]); when that cannot tell, in double-double arithmetic with a bound ([`Dd`]);
+//! when that cannot tell either, exactly with big rationals ([`Ex`]; every `f64` converts
+//! to a rational exactly). Corners are rounded to the nearest `f64` in 128-bit integer
+//! arithmetic where the scales allow ([`meet_f64`]), else through rationals.
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
