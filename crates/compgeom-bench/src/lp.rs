@@ -8,15 +8,22 @@
 //! - `smallest_enclosing_disc` (exact MINIDISC): geo 0.33 has no minimum bounding circle,
 //!   so the peer is the same MINIDISC in plain f64 (written here): the price of exactness.
 //!
+//! Parts (env `COMPGEOM_LP_PARTS=lp2d,halfplanes,disc,lpd,cast`, default all) run in that
+//! order. `lpd` (d = 3, planes tangent to the unit sphere) and `cast` (a prism over a
+//! regular k-gon, k + 2 facets) have no peer here: they show growth only.
+//!
 //! Input: constraints tangent to the unit circle at random angles, offset by up to 1e-3
 //! (every constraint can matter), random objective; points uniform in a disc.
 //! Answers are compared once, outside the clock.
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::lp::{
-    intersect_halfplanes, lp2d, smallest_enclosing_disc, HalfPlane, Lp2Options, Lp2Solution,
+    intersect_halfplanes, intersect_halfplanes_incremental, lp2d, smallest_enclosing_disc,
+    HalfPlane, Lp2Options, Lp2Solution,
 };
 use compgeom::{Point2, Vector2};
+use geo::algorithm::convex_hull::quick_hull;
+use geo::Coord;
 use microlp::{ComparisonOp, OptimizationDirection, Problem};
 
 fn constraints(n: usize, seed: u64) -> Vec<HalfPlane> {
@@ -27,6 +34,123 @@ fn constraints(n: usize, seed: u64) -> Vec<HalfPlane> {
             HalfPlane::new(t.cos(), t.sin(), 1.0 + 1e-3 * r.unit())
         })
         .collect()
+}
+
+/// `n` half-planes tangent to the unit circle at random angles: every one bounds the region
+/// (the worst case of incremental clipping).
+fn tangent_lines(n: usize, seed: u64) -> Vec<HalfPlane> {
+    let mut r = Rng::new(seed);
+    (0..n)
+        .map(|_| {
+            let t = r.unit() * std::f64::consts::TAU;
+            HalfPlane::new(t.cos(), t.sin(), 1.0)
+        })
+        .collect()
+}
+
+/// `n` half-planes with random normals in the unit square and right-hand sides in [0.5, 1.5]
+/// (the origin inside; most are redundant).
+fn random_halfplanes(n: usize, seed: u64) -> Vec<HalfPlane> {
+    let mut r = Rng::new(seed);
+    (0..n)
+        .map(|_| HalfPlane::new(2.0 * r.unit() - 1.0, 2.0 * r.unit() - 1.0, 0.5 + r.unit()))
+        .collect()
+}
+
+/// The peer through duality: for half-planes `a·x + b·y <= c` with `c > 0` the region is the
+/// polar of the convex hull of the points `(a/c, b/c)`; geo's quickhull, one corner per hull
+/// vertex (plain f64).
+fn dual_hull_hpi(hs: &[HalfPlane]) -> usize {
+    let mut pts: Vec<Coord<f64>> = hs
+        .iter()
+        .map(|h| Coord {
+            x: h.a / h.c,
+            y: h.b / h.c,
+        })
+        .collect();
+    quick_hull(&mut pts).0.len().saturating_sub(1)
+}
+
+/// Half-plane intersection: divide and conquer (the default) against the angular scan,
+/// the dual hull through geo, and (small n) the incremental clipping.
+fn halfplanes(quick: bool) -> Result<(), String> {
+    let sizes: &[usize] = if quick {
+        &[10_000, 100_000]
+    } else {
+        &[10_000, 100_000, 1_000_000]
+    };
+    println!("half-plane intersection: ms (best of 3, 1 at 1e6), ratio = peer / compgeom (> 1 = compgeom faster)");
+    println!(
+        "{:>9} {:>8} {:>8} {:>10} {:>10} {:>6} {:>10} {:>6} {:>11} {:>7}",
+        "input",
+        "n",
+        "corners",
+        "compgeom",
+        "scan f64",
+        "ratio",
+        "geo dual",
+        "ratio",
+        "incremental",
+        "ratio"
+    );
+    for (name, gen) in [
+        ("tangent", tangent_lines as fn(usize, u64) -> Vec<HalfPlane>),
+        ("random", random_halfplanes),
+    ] {
+        let mut prev: Option<f64> = None;
+        for &n in sizes {
+            let hs = gen(n, 5);
+            let region = intersect_halfplanes(&hs, 0).map_err(|e| e.to_string())?;
+            let scan = scan_hpi(&hs);
+            let dual = dual_hull_hpi(&hs);
+            // The f64 peers can miss or invent corners when neighbouring tangents are close:
+            // report their counts instead of failing.
+            if region.vertices.len() != scan.len() || region.vertices.len() != dual {
+                println!(
+                    "          note: corner counts compgeom {} (exact), scan {}, geo dual {}",
+                    region.vertices.len(),
+                    scan.len(),
+                    dual
+                );
+            }
+            let runs = if n >= 1_000_000 { 1 } else { 3 };
+            let t_ours = best_of(runs, || intersect_halfplanes(&hs, 0));
+            let t_scan = best_of(runs, || scan_hpi(&hs));
+            let t_dual = best_of(runs, || dual_hull_hpi(&hs));
+            // Incremental clipping is quadratic on tangent lines: only at the smallest size.
+            let inc = if n <= 10_000 {
+                let r = intersect_halfplanes_incremental(&hs, 0).map_err(|e| e.to_string())?;
+                if r != region {
+                    return Err(format!("{name} n={n}: incremental differs"));
+                }
+                Some(best_of(1, || intersect_halfplanes_incremental(&hs, 0)))
+            } else {
+                None
+            };
+            println!(
+                "{:>9} {:>8} {:>8} {:>10.2} {:>10.2} {:>6.2} {:>10.2} {:>6.2} {:>11} {:>7}",
+                name,
+                n,
+                region.vertices.len(),
+                ms(t_ours),
+                ms(t_scan),
+                ms(t_scan) / ms(t_ours),
+                ms(t_dual),
+                ms(t_dual) / ms(t_ours),
+                inc.map_or("-".into(), |t| format!("{:.1}", ms(t))),
+                inc.map_or("-".into(), |t| format!("{:.1}", ms(t) / ms(t_ours))),
+            );
+            if let Some(p) = prev {
+                println!(
+                    "          compgeom growth x{:.1} for 10x the constraints (n log n: x{:.1})",
+                    ms(t_ours) / p,
+                    10.0 * (n as f64).ln() / (n as f64 / 10.0).ln()
+                );
+            }
+            prev = Some(ms(t_ours));
+        }
+    }
+    Ok(())
 }
 
 fn microlp_value(hs: &[HalfPlane], c: (f64, f64)) -> Result<f64, String> {
@@ -151,6 +275,28 @@ pub fn run(quick: bool) -> Result<(), String> {
     } else {
         &[100_000, 1_000_000]
     };
+    // COMPGEOM_LP_PARTS=lp2d,halfplanes,disc,lpd,cast runs only those parts.
+    let parts = std::env::var("COMPGEOM_LP_PARTS").unwrap_or_default();
+    let want = |p: &str| parts.is_empty() || parts.split(',').any(|x| x == p);
+    if want("lp2d") {
+        lp2d_part(sizes)?;
+    }
+    if want("halfplanes") {
+        halfplanes(quick)?;
+    }
+    if want("disc") {
+        disc_part(sizes)?;
+    }
+    if want("lpd") {
+        lpd_part(quick)?;
+    }
+    if want("cast") {
+        cast_part(quick)?;
+    }
+    Ok(())
+}
+
+fn lp2d_part(sizes: &[usize]) -> Result<(), String> {
     let c = (0.3, 0.7);
     println!(
         "2D linear programming: ms (best of 3), ratio = peer / compgeom (> 1 = compgeom faster)"
@@ -207,27 +353,10 @@ pub fn run(quick: bool) -> Result<(), String> {
         prev = Some(ms(t_ours));
     }
 
-    let n = if quick { 2_000 } else { 10_000 };
-    let hs = constraints(n, 7);
-    let region = intersect_halfplanes(&hs, 0).map_err(|e| e.to_string())?;
-    let scan = scan_hpi(&hs);
-    if region.vertices.len() != scan.len() {
-        return Err(format!(
-            "corner counts differ: {} vs {}",
-            region.vertices.len(),
-            scan.len()
-        ));
-    }
-    let t_ours = best_of(2, || intersect_halfplanes(&hs, 0));
-    let t_scan = best_of(3, || scan_hpi(&hs));
-    println!(
-        "half-plane intersection, n = {n} ({} corners): compgeom {:.1} ms, scan {:.2} ms, ratio {:.2}",
-        scan.len(),
-        ms(t_ours),
-        ms(t_scan),
-        ms(t_scan) / ms(t_ours)
-    );
+    Ok(())
+}
 
+fn disc_part(sizes: &[usize]) -> Result<(), String> {
     println!("smallest enclosing disc: ms (best of 3); geo 0.33 has no minimum bounding circle; peer = the same MINIDISC in plain f64");
     for &n in sizes {
         let pts = disc_points(n, 11);
@@ -245,6 +374,73 @@ pub fn run(quick: bool) -> Result<(), String> {
             ms(t_f64),
             ms(t_f64) / ms(t_ours)
         );
+    }
+    Ok(())
+}
+
+/// d = 3 LP: planes tangent to the unit sphere at random points, random objective.
+fn lpd_part(quick: bool) -> Result<(), String> {
+    let sizes: &[usize] = if quick {
+        &[1_000, 10_000]
+    } else {
+        &[10_000, 100_000]
+    };
+    println!("lp_d, d = 3: ms (best of 3)");
+    let mut prev: Option<f64> = None;
+    for &n in sizes {
+        let mut r = Rng::new(3);
+        let rows: Vec<Vec<f64>> = (0..n)
+            .map(|_| {
+                let (z, t) = (2.0 * r.unit() - 1.0, r.unit() * std::f64::consts::TAU);
+                let s = (1.0 - z * z).sqrt();
+                vec![s * t.cos(), s * t.sin(), z, 1.0]
+            })
+            .collect();
+        let c = [0.2, -0.5, 0.7];
+        compgeom::lp::lp_d(&rows, &c, 0).map_err(|e| e.to_string())?;
+        let t = best_of(3, || compgeom::lp::lp_d(&rows, &c, 0));
+        print!("{:>9} compgeom {:>10.2}", n, ms(t));
+        match prev {
+            Some(p) => println!("  growth x{:.1} for 10x", ms(t) / p),
+            None => println!(),
+        }
+        prev = Some(ms(t));
+    }
+    Ok(())
+}
+
+/// Casting a prism over a regular k-gon (k + 2 facets; castable from both caps).
+fn cast_part(quick: bool) -> Result<(), String> {
+    let sizes: &[usize] = if quick { &[100, 300] } else { &[300, 1_000] };
+    println!("castability of a k-gon prism: ms (best of 1)");
+    let mut prev: Option<f64> = None;
+    for &k in sizes {
+        let mut vertices = Vec::with_capacity(2 * k);
+        for z in [0.0, 1.0] {
+            for i in 0..k {
+                let t = i as f64 * std::f64::consts::TAU / k as f64;
+                vertices.push(compgeom::Point3::new(t.cos(), t.sin(), z));
+            }
+        }
+        let mut faces = vec![(0..k).rev().collect::<Vec<_>>(), (k..2 * k).collect()];
+        for i in 0..k {
+            let j = (i + 1) % k;
+            faces.push(vec![i, j, k + j, k + i]);
+        }
+        let mesh = compgeom::io::Polyhedron { vertices, faces };
+        let c = compgeom::lp::castability(&mesh).map_err(|e| e.to_string())?;
+        let t = best_of(1, || compgeom::lp::castability(&mesh));
+        print!(
+            "{:>6} facets compgeom {:>10.2} ({} castable tops)",
+            k + 2,
+            ms(t),
+            c.top_facets.len()
+        );
+        match prev {
+            Some(p) => println!("  growth x{:.1}", ms(t) / p),
+            None => println!(),
+        }
+        prev = Some(ms(t));
     }
     Ok(())
 }

@@ -8,7 +8,8 @@ use crate::output;
 use clap::Args;
 use compgeom::io::{write_shape, Shape};
 use compgeom::lp::{
-    intersect_halfplanes, read_halfplanes, verify_region, HalfPlane, Region, RegionKind,
+    intersect_halfplanes, intersect_halfplanes_incremental, read_halfplanes, verify_region,
+    HalfPlane, Region, RegionKind,
 };
 use compgeom::render::{Layer, Picture, Style};
 use compgeom::{Point2, Polygon, Segment2};
@@ -36,7 +37,8 @@ nothing; unbounded regions, rays and lines have no such form (use JSON).
 
 Examples:
   compgeom halfplanes constraints.txt
-  compgeom halfplanes constraints.txt --svg region.svg --seed 7";
+  compgeom halfplanes constraints.txt --svg region.svg
+  compgeom halfplanes constraints.txt --incremental --seed 7";
 
 /// Arguments of `compgeom halfplanes`.
 #[derive(Debug, Clone, Args)]
@@ -49,9 +51,14 @@ pub struct HalfplanesArgs {
     #[command(flatten)]
     pub output: OutputArgs,
 
-    /// Seed of the random insertion order (the result does not depend on it).
+    /// Seed of the random insertion order of --incremental (the result does not depend on it).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+
+    /// Use randomized incremental clipping (expected O(n·h)) instead of the default divide
+    /// and conquer (O(n log n)); both are exact.
+    #[arg(long)]
+    pub incremental: bool,
 }
 
 /// The JSON result object (fields in [`JSON_HELP`]).
@@ -89,7 +96,11 @@ pub fn read_source(path: &Path) -> Result<(String, String), CliError> {
 pub fn run(args: &HalfplanesArgs) -> Result<(), CliError> {
     let (text, name) = read_source(&args.input)?;
     let hs = read_halfplanes(&text, &name)?;
-    let region = intersect_halfplanes(&hs, args.seed)?;
+    let region = if args.incremental {
+        intersect_halfplanes_incremental(&hs, args.seed)?
+    } else {
+        intersect_halfplanes(&hs, args.seed)?
+    };
     if args.output.verify {
         verify_region(&hs, &region)?;
     }

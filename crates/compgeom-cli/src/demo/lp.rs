@@ -13,7 +13,7 @@ use compgeom::lp::{
     castability, intersect_halfplanes, lp2d, smallest_enclosing_disc, verify_enclosing_disc,
     HalfPlane, Lp2Options, Lp2Solution,
 };
-use compgeom::render::Section;
+use compgeom::render::{Layer, Section, Style};
 use compgeom::{Point3, Vector2};
 
 /// Constraints tangent to a circle of radius ~10 at random angles.
@@ -97,6 +97,37 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
         )?
         .with_fact("kind", region.kind.name())
         .with_fact("corners", region.vertices.len().to_string())
+        .with_fact("time", format_duration(time)),
+    );
+
+    // Divide and conquer (§4.2): the two halves' regions C1, C2 and their intersection.
+    let hs = tangents(30, 6);
+    let (lo, hi) = hs.split_at(hs.len() / 2);
+    let c1 = intersect_halfplanes(lo, 0)?;
+    let c2 = intersect_halfplanes(hi, 0)?;
+    let (merged, time) = timed(|| intersect_halfplanes(&hs, 0));
+    let merged = merged?;
+    let mut pic = region_picture(&hs, &merged, &[], "INTERSECTHALFPLANES: C = C1 ∩ C2");
+    for (name, c, colour) in [
+        ("C1 (first 15)", &c1, "#1f77b4"),
+        ("C2 (last 15)", &c2, "#ff7f0e"),
+    ] {
+        pic.add(
+            Layer::new(
+                name,
+                Style::lines(colour).with_stroke_width(2.0).with_dash("6 4"),
+            )
+            .ring(&c.clipped(40.0)),
+        );
+    }
+    section.push(
+        demo.figure(
+            "halfplanes-divide.svg",
+            "divide and conquer: the regions of the two halves (dashed) and their intersection, merged by sweeping their left and right boundary chains",
+            &pic,
+        )?
+        .with_fact("n", hs.len().to_string())
+        .with_fact("corners C1 / C2 / C", format!("{} / {} / {}", c1.vertices.len(), c2.vertices.len(), merged.vertices.len()))
         .with_fact("time", format_duration(time)),
     );
 

@@ -5,7 +5,9 @@
 //! *support*), so "is `p` in the current disc" is an exact predicate on input points:
 //! for three support points the kernel's [`incircle`] together with [`orient2d`], for two
 //! the exact sign of `(p - a)·(p - b)` (inside the disc with diameter `ab` iff `<= 0`),
-//! for one `p == a`. Points on the circle count as inside. The centre and radius are
+//! for one `p == a`. Points on the circle count as inside. Those predicates are paid only
+//! near the circle: the disc being built also carries an `f64` centre with a rigorous bound
+//! on its error, and a point clearly inside or outside is decided by a squared distance. The centre and radius are
 //! computed once, at the end, from the support in exact rationals and rounded to the
 //! nearest `f64` (the radius within one ulp: the square root of the exact squared radius,
 //! correctly rounded before the root).
@@ -14,7 +16,7 @@
 //! minimal disc has several possible supports (cocircular points), which one is reported
 //! depends on the seed; the disc does not.
 
-use super::exact::{rat, sign, to_f64, Num, SignExpr};
+use super::exact::{rat, sign, to_f64, Filt, Num, SignExpr, ETA, U};
 use super::Shuffler;
 use crate::kernel::{ensure_finite, incircle, orient2d, CircleSide, Orientation, Point2};
 use crate::{Error, Result};
@@ -76,16 +78,16 @@ fn contains(support: &[Point2], p: Point2) -> bool {
 /// The disc through `q1`, `q2` and `p`. Three collinear points cannot arise here with exact
 /// decisions (a disc with `q1`, `q2` on its boundary contains `p`); should they, the
 /// diametral disc of the farthest pair is used, which keeps the algorithm total.
-fn through3(q1: Point2, q2: Point2, p: Point2) -> Vec<Point2> {
+fn through3(q1: Point2, q2: Point2, p: Point2) -> Current {
     if orient2d(q1, q2, p) != Orientation::Collinear {
-        return vec![q1, q2, p];
+        return Current::new(&[q1, q2, p]);
     }
     for (a, b, c) in [(q1, q2, p), (q1, p, q2), (q2, p, q1)] {
         if sign(&DiametralExpr(c, a, b)) != Ordering::Greater {
-            return vec![a, b];
+            return Current::new(&[a, b]);
         }
     }
-    vec![q1, q2]
+    Current::new(&[q1, q2])
 }
 
 /// The smallest disc containing every point (seeded random order; the disc does not depend
@@ -114,35 +116,149 @@ pub fn smallest_enclosing_disc(points: &[Point2], seed: u64) -> Result<Disc> {
     let mut p = points.to_vec();
     let mut rng = Shuffler::new(seed);
     rng.shuffle(&mut p);
-    let mut support = vec![p[0]];
+    let mut disc = Current::new(&[p[0]]);
     for i in 1..p.len() {
-        if !contains(&support, p[i]) {
-            support = with_point(&p[..i], p[i]);
+        if !disc.contains(p[i]) {
+            disc = with_point(&p[..i], p[i]);
         }
     }
-    Ok(finish(support))
+    Ok(finish(disc.support[..disc.len].to_vec()))
+}
+
+/// The disc being built: its support (no allocation) and an `f64` picture of it with a
+/// rigorous error bound, so that "is `p` in the disc" costs a few flops unless `p` is
+/// within rounding distance of the circle; then the exact predicate decides.
+#[derive(Debug, Clone, Copy)]
+struct Current {
+    support: [Point2; 3],
+    len: usize,
+    cx: f64,
+    cy: f64,
+    /// Squared distance from the approximate centre below which a point is surely inside.
+    inside2: f64,
+    /// Squared distance from the approximate centre above which a point is surely outside.
+    outside2: f64,
+}
+
+/// Relative margin covering the rounding of the few operations in each bound (each well
+/// under 10 units of 2^-53 ≈ 1.1e-16).
+const MARGIN: f64 = 1e-13;
+
+impl Current {
+    fn new(support: &[Point2]) -> Current {
+        let mut sp = [Point2::new(0.0, 0.0); 3];
+        sp[..support.len()].copy_from_slice(support);
+        // Approximate centre and a bound `delta` on its distance from the exact centre.
+        let (cx, cy, delta) = match *support {
+            [a] => (a.x, a.y, 0.0),
+            [a, b] => {
+                let (cx, cy) = ((a.x + b.x) * 0.5, (a.y + b.y) * 0.5);
+                (cx, cy, 2.0 * U * (cx.abs() + cy.abs()) + ETA)
+            }
+            [a, b, c] => circumcentre(a, b, c),
+            _ => (0.0, 0.0, f64::INFINITY),
+        };
+        // The exact radius is |a - c| for the exact centre c, within `delta` of |a - c̃|.
+        let a = sp[0];
+        let ra = (a.x - cx).hypot(a.y - cy);
+        let lo = ra * (1.0 - MARGIN) - 2.0 * delta;
+        let hi = ra * (1.0 + MARGIN) + 2.0 * delta;
+        let (inside2, outside2) = if delta.is_finite() && hi.is_finite() {
+            (
+                if lo > 0.0 {
+                    lo * lo * (1.0 - MARGIN)
+                } else {
+                    -1.0
+                },
+                hi * hi * (1.0 + MARGIN),
+            )
+        } else {
+            (-1.0, f64::INFINITY)
+        };
+        Current {
+            support: sp,
+            len: support.len(),
+            cx,
+            cy,
+            inside2,
+            outside2,
+        }
+    }
+
+    /// Exact containment (boundary included): the filter, else the exact predicate.
+    #[inline]
+    fn contains(&self, p: Point2) -> bool {
+        let (dx, dy) = (p.x - self.cx, p.y - self.cy);
+        // Computed with relative error under 6 units of 2^-53 (all terms non-negative).
+        let d2 = dx * dx + dy * dy;
+        if d2 * (1.0 + MARGIN) < self.inside2 {
+            return true;
+        }
+        if d2 * (1.0 - MARGIN) > self.outside2 {
+            return false;
+        }
+        contains(&self.support[..self.len], p)
+    }
+}
+
+/// The circumcentre of `a, b, c` in `f64` (computed relative to `a`) and a bound on its
+/// distance from the exact one (`inf` when the filter cannot bound it, e.g. nearly
+/// collinear points).
+fn circumcentre(a: Point2, b: Point2, c: Point2) -> (f64, f64, f64) {
+    let f = Filt::val;
+    let (bx, by) = (f(b.x).sub(&f(a.x)), f(b.y).sub(&f(a.y)));
+    let (cx, cy) = (f(c.x).sub(&f(a.x)), f(c.y).sub(&f(a.y)));
+    let nb = bx.mul(&bx).add(&by.mul(&by));
+    let nc = cx.mul(&cx).add(&cy.mul(&cy));
+    let den = bx.mul(&cy).sub(&by.mul(&cx));
+    let den = den.add(&den);
+    let nx = nb.mul(&cy).sub(&nc.mul(&by));
+    let ny = nc.mul(&bx).sub(&nb.mul(&cx));
+    let (dv, de) = (den.value(), den.error());
+    if dv.is_nan() || de.is_nan() || dv.abs() <= 2.0 * de {
+        return (0.0, 0.0, f64::INFINITY);
+    }
+    // |n/d - n~/d~| <= (|n~|·e_d + |d~|·e_n) / (|d~|·(|d~| - e_d)), plus the rounding
+    // of the quotient and of the final sum.
+    let quot = |n: &Filt| {
+        let q = n.value() / dv;
+        let e = (n.value().abs() * de + dv.abs() * n.error()) / (dv.abs() * (dv.abs() - de));
+        (q, e + U * q.abs())
+    };
+    let ((qx, ex), (qy, ey)) = (quot(&nx), quot(&ny));
+    let (ux, uy) = (a.x + qx, a.y + qy);
+    let delta = (ex + ey + U * (ux.abs() + uy.abs())) * (1.0 + MARGIN) + ETA;
+    (
+        ux,
+        uy,
+        if delta.is_finite() {
+            delta
+        } else {
+            f64::INFINITY
+        },
+    )
 }
 
 /// MINIDISCWITHPOINT: the smallest disc of `p ∪ {q}` with `q` on its boundary.
-fn with_point(p: &[Point2], q: Point2) -> Vec<Point2> {
-    let mut support = vec![q, p[0]];
+fn with_point(p: &[Point2], q: Point2) -> Current {
+    let mut disc = Current::new(&[q, p[0]]);
     for j in 1..p.len() {
-        if !contains(&support, p[j]) {
-            support = with_two_points(&p[..j], p[j], q);
+        if !disc.contains(p[j]) {
+            disc = with_two_points(&p[..j], p[j], q);
         }
     }
-    support
+    disc
 }
 
 /// MINIDISCWITH2POINTS: the smallest disc of `p ∪ {q1, q2}` with both on its boundary.
-fn with_two_points(p: &[Point2], q1: Point2, q2: Point2) -> Vec<Point2> {
-    let mut support = vec![q1, q2];
+fn with_two_points(p: &[Point2], q1: Point2, q2: Point2) -> Current {
+    let mut disc = Current::new(&[q1, q2]);
     for &pk in p {
-        if !contains(&support, pk) {
-            support = through3(q1, q2, pk);
+        if !disc.contains(pk) {
+            disc = through3(q1, q2, pk);
         }
     }
-    support
+    disc
 }
 
 /// Centre and radius from the support, in exact rationals, rounded once.

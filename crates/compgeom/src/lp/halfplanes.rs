@@ -17,11 +17,10 @@
 //! it in boundary order. Redundant, parallel and identical constraints are ordinary input;
 //! of identical boundary lines the one added first is reported.
 
-use super::exact::{meet_exact, side, to_f64, Line};
+use super::exact::{meet_exact, meet_f64, side, to_f64, Line};
 use super::{check_finite, HalfPlane, Shuffler};
 use crate::kernel::{Point2, Vector2};
 use crate::Result;
-use num_rational::BigRational;
 use std::cmp::Ordering;
 
 /// What kind of set a half-plane intersection is.
@@ -91,13 +90,15 @@ impl Region {
 
 /// A corner (the two lines meeting there) and the line of the edge leaving it.
 #[derive(Debug, Clone, Copy)]
-struct Corner {
-    v: (usize, usize),
-    edge: usize,
+pub(super) struct Corner {
+    pub(super) v: (usize, usize),
+    pub(super) edge: usize,
 }
 
-/// Intersect the half-planes (every `a·x + b·y <= c`); `seed` fixes the random order
-/// (the answer does not depend on it).
+/// Intersect the half-planes (every `a·x + b·y <= c`): exact, O(n log n), by divide and
+/// conquer ([`intersect_halfplanes_dc`](super::intersect_halfplanes_dc)). `seed` is kept for
+/// compatibility and does not change anything; the randomized incremental method is
+/// [`intersect_halfplanes_incremental`].
 ///
 /// Errors: a non-finite coefficient ([`Error::NonFinite`](crate::Error::NonFinite)).
 ///
@@ -111,7 +112,7 @@ struct Corner {
 ///     HalfPlane::new(1.0, 1.0, 2.0),
 ///     HalfPlane::new(1.0, 0.0, 5.0),
 /// ];
-/// let r = intersect_halfplanes(&hs, 7)?;
+/// let r = intersect_halfplanes(&hs, 0)?;
 /// assert_eq!(r.kind, RegionKind::Polygon);
 /// assert_eq!(r.vertices, [(0.0, 0.0), (2.0, 0.0), (0.0, 2.0)].map(Point2::from));
 /// assert_eq!(r.constraints, vec![1, 2, 0]);
@@ -121,6 +122,36 @@ struct Corner {
 /// # Ok::<(), compgeom::Error>(())
 /// ```
 pub fn intersect_halfplanes(halfplanes: &[HalfPlane], seed: u64) -> Result<Region> {
+    let _ = seed;
+    super::intersect_halfplanes_dc(halfplanes)
+}
+
+/// Intersect the half-planes by randomized incremental clipping of the symbolic box
+/// (expected O(n·h), O(n²) in the worst case); `seed` fixes the random order (the answer
+/// does not depend on it, except which of identical boundary lines is reported).
+///
+/// Errors: a non-finite coefficient ([`Error::NonFinite`](crate::Error::NonFinite)).
+///
+/// ```
+/// use compgeom::lp::{intersect_halfplanes_incremental, HalfPlane, RegionKind};
+/// use compgeom::Point2;
+/// // The triangle x >= 0, y >= 0, x + y <= 2, plus a redundant x <= 5.
+/// let hs = [
+///     HalfPlane::new(-1.0, 0.0, 0.0),
+///     HalfPlane::new(0.0, -1.0, 0.0),
+///     HalfPlane::new(1.0, 1.0, 2.0),
+///     HalfPlane::new(1.0, 0.0, 5.0),
+/// ];
+/// let r = intersect_halfplanes_incremental(&hs, 7)?;
+/// assert_eq!(r.kind, RegionKind::Polygon);
+/// assert_eq!(r.vertices, [(0.0, 0.0), (2.0, 0.0), (0.0, 2.0)].map(Point2::from));
+/// assert_eq!(r.constraints, vec![1, 2, 0]);
+/// // x <= 0 and x >= 0: the line x = 0.
+/// let r = intersect_halfplanes_incremental(&[HalfPlane::new(1.0, 0.0, 0.0), HalfPlane::new(-1.0, 0.0, 0.0)], 0)?;
+/// assert_eq!(r.kind, RegionKind::Line);
+/// # Ok::<(), compgeom::Error>(())
+/// ```
+pub fn intersect_halfplanes_incremental(halfplanes: &[HalfPlane], seed: u64) -> Result<Region> {
     check_finite(halfplanes)?;
     let mut lines = Line::bbox().to_vec();
     let mut orig = Vec::with_capacity(halfplanes.len());
@@ -152,7 +183,7 @@ pub fn intersect_halfplanes(halfplanes: &[HalfPlane], seed: u64) -> Result<Regio
     Ok(describe(&lines, &orig, &poly))
 }
 
-fn empty() -> Region {
+pub(super) fn empty() -> Region {
     Region {
         kind: RegionKind::Empty,
         vertices: Vec::new(),
@@ -197,6 +228,14 @@ fn clip(lines: &[Line], poly: &mut Vec<Corner>, i: usize, sides: &mut Vec<Orderi
     }
     // A degenerate (two-corner) region crossed by the line yields the same point twice,
     // once on each of its two coincident edges: merge equal neighbours.
+    let merged = merge_equal(lines, out);
+    *poly = merged;
+    !poly.is_empty()
+}
+
+/// Merge neighbouring corners at the same exact point (the edge between them has length
+/// zero): the first keeps its lines and takes the later outgoing edge.
+pub(super) fn merge_equal(lines: &[Line], out: Vec<Corner>) -> Vec<Corner> {
     // (A corner is trivially on its own lines; testing those would only cost exact zeros.)
     let same = |a: &Corner, b: &Corner| {
         [b.v.0, b.v.1].iter().all(|&k| {
@@ -216,21 +255,30 @@ fn clip(lines: &[Line], poly: &mut Vec<Corner>, i: usize, sides: &mut Vec<Orderi
         // The last corner is merged[0] again: the edge between them has length zero.
         merged.pop();
     }
-    *poly = merged;
-    !poly.is_empty()
+    merged
 }
 
 /// Turn the clipped box into the public description.
-fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Region {
+pub(super) fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Region {
     let n = poly.len();
     let finite: Vec<bool> = poly
         .iter()
         .map(|c| !lines[c.v.0].is_box() && !lines[c.v.1].is_box())
         .collect();
-    let exact: Vec<_> = poly
-        .iter()
-        .map(|c| meet_exact(&lines[c.v.0], &lines[c.v.1]))
-        .collect();
+    // Each corner as `base + M·dir`: finite corners rounded in integer arithmetic where
+    // the scales allow, else (and for corners on the box) through exact rationals.
+    let exact = |c: &Corner| meet_exact(&lines[c.v.0], &lines[c.v.1]);
+    let outline_of = |c: &Corner| -> (Point2, Vector2) {
+        if let Some((x, y)) = meet_f64(&lines[c.v.0], &lines[c.v.1]) {
+            return (Point2::new(x, y), Vector2::new(0.0, 0.0));
+        }
+        let ((x0, y0), (x1, y1)) = exact(c);
+        (
+            Point2::new(to_f64(&x0), to_f64(&y0)),
+            Vector2::new(to_f64(&x1), to_f64(&y1)),
+        )
+    };
+    let rounded: Vec<(Point2, Vector2)> = poly.iter().map(outline_of).collect();
     let nf = finite.iter().filter(|&&f| f).count();
     let kind = match (n, nf) {
         (0, _) => RegionKind::Empty,
@@ -244,12 +292,38 @@ fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Region {
     // Start: a bounded region at its lexicographically smallest corner; an unbounded one
     // where its boundary comes in from infinity (after the last box edge).
     let start = if nf == n {
-        let key = |k: usize| -> &(BigRational, BigRational) { &exact[k].0 };
-        (0..n).min_by(|&a, &b| key(a).cmp(key(b))).unwrap_or(0)
+        // Rounding to nearest is monotone: rounded keys decide unless they are equal.
+        let cmp = |a: usize, b: usize| -> Ordering {
+            let (p, q) = (rounded[a].0, rounded[b].0);
+            match p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y)) {
+                Ordering::Equal => exact(&poly[a]).0.cmp(&exact(&poly[b]).0),
+                o => o,
+            }
+        };
+        (0..n).min_by(|&a, &b| cmp(a, b)).unwrap_or(0)
     } else {
+        // Where the boundary comes in from infinity (after a box edge); a strip has two
+        // such places and a line none (then any end at infinity): of the candidates, the
+        // one with the lexicographically smallest direction and base, whatever order the
+        // corners came in.
+        let key = |k: usize| {
+            let (b, d) = rounded[k];
+            [d.x, d.y, b.x, b.y]
+        };
+        let smallest = |a: &usize, b: &usize| {
+            key(*a)
+                .iter()
+                .zip(key(*b).iter())
+                .map(|(p, q)| p.total_cmp(q))
+                .find(|o| o.is_ne())
+                .unwrap_or(Ordering::Equal)
+        };
         (0..n)
-            .find(|&k| lines[poly[(k + n - 1) % n].edge].is_box() && !lines[poly[k].edge].is_box())
-            .or_else(|| (0..n).find(|&k| !finite[k]))
+            .filter(|&k| {
+                lines[poly[(k + n - 1) % n].edge].is_box() && !lines[poly[k].edge].is_box()
+            })
+            .min_by(smallest)
+            .or_else(|| (0..n).filter(|&k| !finite[k]).min_by(smallest))
             .unwrap_or(0)
     };
     let mut vertices = Vec::new();
@@ -257,12 +331,11 @@ fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Region {
     let mut outline = Vec::new();
     for t in 0..n {
         let k = (start + t) % n;
-        let ((x0, y0), (x1, y1)) = &exact[k];
-        let base = Point2::new(to_f64(x0), to_f64(y0));
+        let (base, dir) = rounded[k];
         if finite[k] {
             vertices.push(base);
         }
-        outline.push((base, Vector2::new(to_f64(x1), to_f64(y1))));
+        outline.push((base, dir));
         let e = poly[k].edge;
         if n <= 2 {
             // A point, segment, ray or line: its corners are cut by constraints that carry
