@@ -29,12 +29,12 @@ const REFUSED: &[(&str, &str, &str)] = &[
     ),
     (
         "issue147",
-        "inside an edge",
+        "inside the second edge",
         "two holes overlap along a horizontal edge",
     ),
     (
         "touching2",
-        "inside an edge",
+        "inside the second edge",
         "a hole vertex lies inside an outer edge (not at a vertex)",
     ),
     (
@@ -44,7 +44,7 @@ const REFUSED: &[(&str, &str, &str)] = &[
     ),
     (
         "water3b",
-        "inside an edge",
+        "inside the second edge",
         "a hole vertex lies inside an outer edge (not at a vertex)",
     ),
 ];

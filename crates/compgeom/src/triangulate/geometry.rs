@@ -134,8 +134,13 @@ impl Geometry {
         if let Some(p) = bad {
             let a = p.interior[0];
             let b = p.segments.iter().copied().find(|&s| s != a).unwrap_or(a);
+            let how = if p.interior.contains(&b) {
+                "cross at"
+            } else {
+                "touch (a vertex inside the second edge) at"
+            };
             return Err(Error::InvalidInput(format!(
-                "polygon is not simple: {} and {} meet at ({}, {}) inside an edge",
+                "polygon is not simple: {} and {} {how} ({}, {})",
                 edge_name(&rings, &starts, b),
                 edge_name(&rings, &starts, a),
                 p.point.x,
