@@ -200,11 +200,22 @@ pub fn picture(t: &Triangulated, parts: Option<&[MonotonePartition]>, title: Str
             pic.add(layer);
         }
     }
-    let diagonals: Vec<Segment2> = t
-        .diagonals
-        .iter()
-        .map(|&[a, b]| Segment2::new(t.vertices[a], t.vertices[b]))
-        .collect();
+    // With pieces: the sweep's diagonals; otherwise every diagonal of the triangulation.
+    let diagonals: Vec<Segment2> = match parts {
+        Some(parts) => parts
+            .iter()
+            .flat_map(|m| {
+                m.diagonals
+                    .iter()
+                    .map(|&[a, b]| Segment2::new(m.vertices[a], m.vertices[b]))
+            })
+            .collect(),
+        None => t
+            .diagonals
+            .iter()
+            .map(|&[a, b]| Segment2::new(t.vertices[a], t.vertices[b]))
+            .collect(),
+    };
     pic.add(Layer::new("diagonals", Style::lines("#555555").with_dash("4 3")).segments(&diagonals));
     pic.add(
         Layer::new("polygon", Style::lines("#000000").with_stroke_width(2.0))

@@ -13,6 +13,7 @@ mod lp;
 mod overlay;
 mod range;
 pub mod samples;
+mod triangulate;
 mod voronoi;
 
 use crate::error::CliError;
@@ -38,6 +39,7 @@ const SECTIONS: &[SectionFn] = &[
     hull::section,
     intersect::section,
     overlay::section,
+    triangulate::section,
     lp::section,
     range::section,
     voronoi::section,
