@@ -13,6 +13,7 @@ mod intersect;
 mod kernel;
 mod lp;
 mod range;
+mod triangulate;
 mod util;
 mod voronoi;
 
@@ -24,6 +25,7 @@ const GROUPS: &[&str] = &[
     "hull",
     "intersect",
     "boolean",
+    "triangulate",
     "lp",
     "range",
     "voronoi",
@@ -40,6 +42,7 @@ fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
         "delaunay" => Some(delaunay::run(quick)),
         "voronoi" => Some(voronoi::run(quick)),
         "boolean" => Some(boolean::run(quick)),
+        "triangulate" => Some(triangulate::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))
