@@ -119,9 +119,18 @@ fn check_or_refuse(poly: &Polygon) {
             check(poly);
         }
         _ => {
-            // A figure-eight ring is allowed when the rings alternate at the touching point;
-            // otherwise it must be an error, never a panic or a wrong answer.
+            // A ring touching itself at a vertex is allowed (when the edges alternate there);
+            // otherwise it must be an error, never a panic or a wrong answer. Oracle: the
+            // general intersection sweep finds no point inside an edge.
             if let Ok(t) = triangulate(poly) {
+                let ring = &poly.exterior;
+                let segs: Vec<compgeom::Segment2> = (0..ring.len())
+                    .map(|i| compgeom::Segment2::new(ring[i], ring[(i + 1) % ring.len()]))
+                    .collect();
+                let touch =
+                    compgeom::intersect::any_intersection_where(&segs, |p| !p.interior.is_empty())
+                        .unwrap();
+                assert!(touch.is_none(), "{poly:?} accepted but {touch:?}");
                 verify_triangulation(poly, &t).unwrap_or_else(|e| panic!("{e}: {poly:?}"));
                 assert_eq!(triangles_area2(&t), polygon_area2(poly), "{poly:?}");
             }
@@ -174,6 +183,20 @@ proptest! {
     #[test]
     fn untangled_random_walks(points in prop::collection::vec((0i32..6, 0i32..6), 3..24)) {
         check_or_refuse(&untangled(points));
+    }
+
+    #[test]
+    fn tangled_random_walks_are_refused_or_correct(
+        points in prop::collection::vec((0i32..5, 0i32..5), 3..16)
+    ) {
+        // Mostly self-intersecting: an error naming edges, never a panic or a wrong answer.
+        let ring: Vec<Point2> = points.iter().map(|&(x, y)| p(x as f64, y as f64)).collect();
+        let poly = Polygon::new(ring, vec![]);
+        if let Err(e) = triangulate(&poly) {
+            let m = e.to_string();
+            prop_assert!(m.contains("not simple") || m.contains("fewer than 3") || m.contains("nested"), "{}", m);
+        }
+        check_or_refuse(&poly);
     }
 
     #[test]

@@ -3,9 +3,11 @@
 //! symbolic perturbation that separates the visits of a point where rings touch.
 //!
 //! Preparation (O(n log n)): drop consecutive repeated vertices, orient the outer ring
-//! counter-clockwise and the holes clockwise, check the boundary with the plane sweep of
-//! [`crate::intersect`] (a crossing, or a vertex inside another edge, is an error naming the
-//! two edges), and relink the boundary at every point visited more than once.
+//! counter-clockwise and the holes clockwise, sort the vertices into sweep order, and
+//! relink the boundary at every point visited more than once (equal neighbours in that
+//! order). Crossings are found by the sweeps themselves: MAKEMONOTONE checks every pair of
+//! edges that become neighbours in its status (Shamos–Hoey), and the monotone
+//! triangulation checks each vertex against the other chain; either names the two edges.
 //!
 //! ## Points visited more than once
 //!
@@ -42,6 +44,14 @@ pub(crate) struct Geometry {
     pub prev: Vec<u32>,
     /// Whether some point is visited more than once.
     pub pinched: bool,
+    /// Every vertex in sweep order (top to bottom, equal y left to right, visits of one
+    /// point by the perturbation).
+    pub order: Vec<u32>,
+    /// The input edge number (ring by ring, edge k from vertex k to k + 1) of edge u (from
+    /// u to `next[u]`), for messages.
+    input_edge: Vec<u32>,
+    /// The input rings (after dropping repeated vertices), for messages.
+    rings: Vec<Vec<Point2>>,
 }
 
 /// "ring r edge k (a → b)" for error messages; edges numbered as in the input ring.
@@ -114,50 +124,98 @@ impl Geometry {
                 }
             }
         }
-        // Edge e runs from input vertex e to the next one of its ring (input order).
-        let mut segments = Vec::with_capacity(n);
-        for ring in &rings {
-            for k in 0..ring.len() {
-                segments.push(Segment2::new(ring[k], ring[(k + 1) % ring.len()]));
+        // Edge u (from u to next[u]) is input edge u on a forward ring, else the input
+        // edge arriving at u.
+        let input_edge: Vec<u32> = (0..n as u32)
+            .map(|u| {
+                let w = next[u as usize];
+                let r = starts.partition_point(|&s| s <= u as usize) - 1;
+                let len = starts[r + 1] - starts[r];
+                if w as usize == starts[r] + (u as usize - starts[r] + 1) % len {
+                    u
+                } else {
+                    w
+                }
+            })
+            .collect();
+        // The sweep order by coordinates; runs of equal points are the points visited
+        // more than once.
+        let mut order: Vec<u32> = (0..n as u32).collect();
+        order.sort_unstable_by(|&a, &b| {
+            let (p, q) = (pts[a as usize], pts[b as usize]);
+            q.y.partial_cmp(&p.y)
+                .unwrap_or(Ordering::Equal)
+                .then(p.x.partial_cmp(&q.x).unwrap_or(Ordering::Equal))
+        });
+        let mut runs: Vec<(usize, usize)> = Vec::new();
+        let mut i = 0;
+        while i < n {
+            let mut j = i + 1;
+            while j < n && pts[order[j] as usize] == pts[order[i] as usize] {
+                j += 1;
             }
-        }
-        let mut pinches: Vec<Vec<usize>> = Vec::new();
-        let bad = any_intersection_where(&segments, |p| {
-            if !p.interior.is_empty() {
-                return true;
+            if j - i > 1 {
+                runs.push((i, j));
             }
-            if p.segments.len() > 2 {
-                pinches.push(p.segments.clone());
-            }
-            false
-        })?;
-        if let Some(p) = bad {
-            let a = p.interior[0];
-            let b = p.segments.iter().copied().find(|&s| s != a).unwrap_or(a);
-            let how = if p.interior.contains(&b) {
-                "cross at"
-            } else {
-                "touch (a vertex inside the second edge) at"
-            };
-            return Err(Error::InvalidInput(format!(
-                "polygon is not simple: {} and {} {how} ({}, {})",
-                edge_name(&rings, &starts, b),
-                edge_name(&rings, &starts, a),
-                p.point.x,
-                p.point.y
-            )));
+            i = j;
         }
         let mut g = Geometry {
             pts,
             ring_starts: starts,
             next,
             prev,
-            pinched: !pinches.is_empty(),
+            pinched: !runs.is_empty(),
+            order,
+            input_edge,
+            rings,
         };
-        for edges in pinches {
-            g.relink(&edges)?;
+        for &(i, j) in &runs {
+            let mut visits = g.order[i..j].to_vec();
+            visits.sort_unstable();
+            g.relink(&visits)?;
+        }
+        for &(i, j) in &runs {
+            let mut run = g.order[i..j].to_vec();
+            run.sort_unstable_by(|&a, &b| g.cmp_event(a, b));
+            g.order[i..j].copy_from_slice(&run);
         }
         Ok(g)
+    }
+
+    /// On an error path: the first contact of two edges inside an edge, found by the general
+    /// intersection sweep of [`crate::intersect`], as an error naming both edges; `None`
+    /// when the boundary has none (then the caller's own error stands).
+    pub fn contact_error(&self) -> Option<Error> {
+        let mut segments = Vec::with_capacity(self.len());
+        for ring in &self.rings {
+            for k in 0..ring.len() {
+                segments.push(Segment2::new(ring[k], ring[(k + 1) % ring.len()]));
+            }
+        }
+        let p = any_intersection_where(&segments, |p| !p.interior.is_empty()).ok()??;
+        let a = p.interior[0];
+        let b = p.segments.iter().copied().find(|&s| s != a).unwrap_or(a);
+        let how = if p.interior.contains(&b) {
+            "cross at"
+        } else {
+            "touch (a vertex inside the second edge) at"
+        };
+        Some(Error::InvalidInput(format!(
+            "polygon is not simple: {} and {} {how} ({}, {})",
+            edge_name(&self.rings, &self.ring_starts, b),
+            edge_name(&self.rings, &self.ring_starts, a),
+            p.point.x,
+            p.point.y
+        )))
+    }
+
+    /// "ring r edge k (a -> b)" for edge u (from u to `next[u]`).
+    pub fn edge_name(&self, u: u32) -> String {
+        edge_name(
+            &self.rings,
+            &self.ring_starts,
+            self.input_edge[u as usize] as usize,
+        )
     }
 
     /// Number of vertices.
@@ -171,37 +229,11 @@ impl Geometry {
     }
 
     /// Relink the boundary at a point where the given edges (input numbering) meet.
-    fn relink(&mut self, edges: &[usize]) -> Result<()> {
-        let ring_next = |e: usize| {
-            let r = self.ring_starts.partition_point(|&s| s <= e) - 1;
-            let (s, t) = (self.ring_starts[r], self.ring_starts[r + 1]);
-            if e + 1 == t {
-                s
-            } else {
-                e + 1
-            }
-        };
-        // The point: the endpoint the first two edges share.
-        let (a0, b0) = (edges[0], ring_next(edges[0]));
-        let (a1, b1) = (edges[1], ring_next(edges[1]));
-        let p = if self.pts[a0] == self.pts[a1] || self.pts[a0] == self.pts[b1] {
-            self.pts[a0]
-        } else {
-            self.pts[b0]
-        };
-        let mut visits: Vec<u32> = Vec::new();
-        for &e in edges {
-            for v in [e, ring_next(e)] {
-                if self.pts[v] == p {
-                    visits.push(v as u32);
-                }
-            }
-        }
-        visits.sort_unstable();
-        visits.dedup();
+    fn relink(&mut self, visits: &[u32]) -> Result<()> {
+        let p = self.pts[visits[0] as usize];
         // Rays: (far end, visit, leaving?).
         let mut rays: Vec<(Point2, u32, bool)> = Vec::with_capacity(2 * visits.len());
-        for &v in &visits {
+        for &v in visits {
             rays.push((self.pts[self.next[v as usize] as usize], v, true));
             rays.push((self.pts[self.prev[v as usize] as usize], v, false));
         }

@@ -9,17 +9,11 @@
 //! right, which is exactly the statement that the rings are nested properly (every hole
 //! inside the outer ring, no hole inside another). O(n log n) time, O(n) space.
 use super::classify::{vertex_type, VertexType};
-use super::geometry::Geometry;
+use super::geometry::{Geometry, NONE};
 use super::status::{Side, Status};
+use crate::kernel::{segment_intersection, Point2, Segment2, SegmentIntersection};
 use crate::{Error, Result};
 use std::cmp::Ordering;
-
-/// The vertices in sweep order (top to bottom, equal y left to right).
-pub(crate) fn sweep_order(g: &Geometry) -> Vec<u32> {
-    let mut order: Vec<u32> = (0..g.len() as u32).collect();
-    order.sort_unstable_by(|&a, &b| g.cmp_event(a, b));
-    order
-}
 
 /// Everything MAKEMONOTONE produces: the diagonals and every vertex's type.
 pub(crate) struct Partition {
@@ -29,8 +23,36 @@ pub(crate) struct Partition {
     pub types: Vec<VertexType>,
 }
 
-/// Run the sweep over the vertices in `order` (from [`sweep_order`]).
-pub(crate) fn make_monotone(g: &Geometry, order: &[u32]) -> Result<Partition> {
+/// Whether edges `a` and `b` (each from u to `next[u]`) meet other than at a common
+/// endpoint: a crossing, a vertex inside the other edge, or an overlap (exact).
+fn check_pair(g: &Geometry, a: u32, b: u32) -> Result<()> {
+    if a == NONE || b == NONE {
+        return Ok(());
+    }
+    let seg = |u: u32| Segment2::new(g.pts[u as usize], g.pts[g.next[u as usize] as usize]);
+    let (sa, sb) = (seg(a), seg(b));
+    let is_end = |s: &Segment2, p: Point2| s.a == p || s.b == p;
+    let (how, at) = match segment_intersection(sa, sb) {
+        SegmentIntersection::None => return Ok(()),
+        SegmentIntersection::Endpoint(p) if is_end(&sa, p) && is_end(&sb, p) => return Ok(()),
+        SegmentIntersection::Endpoint(p) => ("touch (a vertex inside an edge) at", p),
+        SegmentIntersection::Crossing(c) => ("cross at", c.approx()),
+        SegmentIntersection::Overlap(p, _) => ("overlap from", p),
+    };
+    Err(Error::InvalidInput(format!(
+        "polygon is not simple: {} and {} {how} ({}, {})",
+        g.edge_name(a),
+        g.edge_name(b),
+        at.x,
+        at.y
+    )))
+}
+
+/// Run the sweep. Every pair of edges that become neighbours in the status is checked
+/// for contact (Shamos–Hoey), so a boundary that is not simple is reported with the two
+/// edges before the status order could go wrong.
+pub(crate) fn make_monotone(g: &Geometry) -> Result<Partition> {
+    let order = &g.order;
     let n = g.len();
     let mut status = Status::new(n);
     let mut helper = vec![0u32; n];
@@ -55,20 +77,39 @@ pub(crate) fn make_monotone(g: &Geometry, order: &[u32]) -> Result<Partition> {
         }
     };
     // Insert edge e whose upper end is the event vertex v.
+    let on_edge = |v: u32, t: u32| {
+        let p = g.pts[v as usize];
+        Error::InvalidInput(format!(
+            "polygon is not simple: vertex ({}, {}) lies on {}",
+            p.x,
+            p.y,
+            g.edge_name(t)
+        ))
+    };
     let insert = |status: &mut Status, e: u32, v: u32| -> Result<()> {
         let (_, w) = ends(e);
-        status.insert(e, |t| {
-            let s = side(t, v);
-            if s == Side::On && ends(t).0 == v {
-                side(t, w)
-            } else {
-                s
-            }
-        })
+        status
+            .insert(e, |t| {
+                let s = side(t, v);
+                if s == Side::On && ends(t).0 == v {
+                    side(t, w)
+                } else {
+                    s
+                }
+            })
+            .map_err(|t| on_edge(v, t))?;
+        let (l, r) = status.neighbours(e);
+        check_pair(g, l, e)?;
+        check_pair(g, e, r)
+    };
+    let remove = |status: &mut Status, e: u32| -> Result<()> {
+        let (l, r) = status.neighbours(e);
+        status.remove(e);
+        check_pair(g, l, r)
     };
     // The edge directly left of v; it must have the interior on its right.
     let left_of = |status: &Status, v: u32| -> Result<u32> {
-        match status.left_of(|t| side(t, v))? {
+        match status.left_of(|t| side(t, v)).map_err(|t| on_edge(v, t))? {
             Some(e) if down(e) => Ok(e),
             _ => {
                 let p = g.pts[v as usize];
@@ -96,8 +137,8 @@ pub(crate) fn make_monotone(g: &Geometry, order: &[u32]) -> Result<Partition> {
                 if types[h as usize] == VertexType::Merge {
                     diagonals.push([v, h]);
                 }
-                status.remove(e_in);
-                status.remove(e_out);
+                remove(&mut status, e_in)?;
+                remove(&mut status, e_out)?;
             }
             VertexType::Split => {
                 let ej = left_of(&status, v)?;
@@ -112,8 +153,8 @@ pub(crate) fn make_monotone(g: &Geometry, order: &[u32]) -> Result<Partition> {
                 if types[h as usize] == VertexType::Merge {
                     diagonals.push([v, h]);
                 }
-                status.remove(e_in);
-                status.remove(e_out);
+                remove(&mut status, e_in)?;
+                remove(&mut status, e_out)?;
                 let ej = left_of(&status, v)?;
                 let h = helper[ej as usize];
                 if types[h as usize] == VertexType::Merge {
@@ -128,11 +169,11 @@ pub(crate) fn make_monotone(g: &Geometry, order: &[u32]) -> Result<Partition> {
                     if types[h as usize] == VertexType::Merge {
                         diagonals.push([v, h]);
                     }
-                    status.remove(e_in);
+                    remove(&mut status, e_in)?;
                     insert(&mut status, e_out, v)?;
                     helper[e_out as usize] = v;
                 } else {
-                    status.remove(e_out);
+                    remove(&mut status, e_out)?;
                     let ej = left_of(&status, v)?;
                     let h = helper[ej as usize];
                     if types[h as usize] == VertexType::Merge {

@@ -184,24 +184,31 @@ pub fn is_y_monotone(polygon: &Polygon) -> Result<bool> {
     Ok(monotone_without_sweep(&g))
 }
 
-/// No holes, no touching rings, no split or merge vertex.
+/// No holes, no touching rings, no split or merge vertex, and one start and one end
+/// vertex (a ring that is not simple can avoid split and merge vertices with several of
+/// each; with one of each, the two chains are monotone and the chain merge of the monotone
+/// triangulation checks that they never meet).
 fn monotone_without_sweep(g: &Geometry) -> bool {
-    g.holes() == 0
-        && !g.pinched
-        && (0..g.len() as u32).all(|v| {
-            !matches!(
-                classify::vertex_type(g, v),
-                VertexType::Split | VertexType::Merge
-            )
-        })
+    if g.holes() > 0 || g.pinched {
+        return false;
+    }
+    let (mut starts, mut ends) = (0, 0);
+    for v in 0..g.len() as u32 {
+        match classify::vertex_type(g, v) {
+            VertexType::Split | VertexType::Merge => return false,
+            VertexType::Start => starts += 1,
+            VertexType::End => ends += 1,
+            VertexType::Regular => {}
+        }
+    }
+    starts == 1 && ends == 1
 }
 
 /// MAKEMONOTONE (§3.2): the diagonals that cut the polygon into y-monotone pieces, and
 /// the pieces. O(n log n).
 pub fn monotone_partition(polygon: &Polygon) -> Result<MonotonePartition> {
     let g = Geometry::new(polygon)?;
-    let order = make_monotone::sweep_order(&g);
-    let part = make_monotone::make_monotone(&g, &order)?;
+    let part = make_monotone::make_monotone(&g).map_err(|e| g.contact_error().unwrap_or(e))?;
     let pieces = subdivision::faces(&g, &part.diagonals);
     Ok(MonotonePartition {
         vertices: g.pts.clone(),
@@ -229,7 +236,8 @@ pub fn triangulate_monotone_polygon(polygon: &Polygon) -> Result<Triangulation> 
     }
     let mut triangles = Vec::with_capacity(g.len() - 2);
     let cycle: Vec<u32> = subdivision::boundary_cycles(&g).swap_remove(0);
-    monotone::triangulate_monotone(&g, &cycle, &mut triangles)?;
+    monotone::triangulate_monotone(&g, &cycle, &mut triangles)
+        .map_err(|e| g.contact_error().unwrap_or(e))?;
     Ok(Triangulation::new(g, triangles))
 }
 
@@ -242,10 +250,10 @@ pub fn triangulate(polygon: &Polygon) -> Result<Triangulation> {
     let mut triangles = Vec::with_capacity(g.len() + 2 * g.holes());
     if monotone_without_sweep(&g) {
         let cycle: Vec<u32> = subdivision::boundary_cycles(&g).swap_remove(0);
-        monotone::triangulate_monotone(&g, &cycle, &mut triangles)?;
+        monotone::triangulate_monotone(&g, &cycle, &mut triangles)
+            .map_err(|e| g.contact_error().unwrap_or(e))?;
     } else {
-        let order = make_monotone::sweep_order(&g);
-        let part = make_monotone::make_monotone(&g, &order)?;
+        let part = make_monotone::make_monotone(&g).map_err(|e| g.contact_error().unwrap_or(e))?;
         for piece in subdivision::faces(&g, &part.diagonals) {
             monotone::triangulate_monotone(&g, &piece, &mut triangles)?;
         }

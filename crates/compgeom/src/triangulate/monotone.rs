@@ -51,6 +51,7 @@ pub(crate) fn triangulate_monotone(
     merged.push((cycle[top], Chain::Left));
     let mut l = (top + 1) % k;
     let mut r = (top + k - 1) % k;
+    let (mut l_last, mut r_last) = (top, top);
     while l != bottom || r != bottom {
         let take_left = if l == bottom {
             false
@@ -61,18 +62,22 @@ pub(crate) fn triangulate_monotone(
         };
         let (v, chain) = if take_left {
             let v = cycle[l];
+            // The chains must not meet: v lies strictly left of the right chain's edge.
+            if g.orient(cycle[r_last], cycle[r], v) != Ordering::Less {
+                return Err(chains_meet(g, cycle[l_last], v, cycle[r]));
+            }
+            l_last = l;
             l = (l + 1) % k;
             (v, Chain::Left)
         } else {
             let v = cycle[r];
+            if g.orient(cycle[l_last], cycle[l], v) != Ordering::Greater {
+                return Err(chains_meet(g, v, cycle[r_last], cycle[l_last]));
+            }
+            r_last = r;
             r = (r + k - 1) % k;
             (v, Chain::Right)
         };
-        if let Some(&(u, _)) = merged.last() {
-            if !g.above(u, v) {
-                return Err(not_monotone(g, cycle));
-            }
-        }
         merged.push((v, chain));
     }
     let b = cycle[bottom];
@@ -123,6 +128,17 @@ fn fan(stack: &[(u32, Chain)], u: u32, c: Chain, out: &mut Vec<[u32; 3]>) {
             Chain::Left => [s0, s1, u],
         });
     }
+}
+
+/// The chains of a monotone polygon meet: edge `a → b` of the boundary and the edge
+/// leaving `c` touch or cross.
+fn chains_meet(g: &Geometry, a: u32, b: u32, c: u32) -> Error {
+    let e = if g.next[a as usize] == b { a } else { b };
+    Error::InvalidInput(format!(
+        "polygon is not simple: {} and {} touch or cross",
+        g.edge_name(e),
+        g.edge_name(c)
+    ))
 }
 
 fn not_monotone(g: &Geometry, cycle: &[u32]) -> Error {

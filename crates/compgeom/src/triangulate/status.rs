@@ -6,7 +6,6 @@
 //! geometric search. Searches compare a query vertex with a node's edge by one exact
 //! orientation test; the comparisons are passed in by the sweep.
 use super::geometry::NONE;
-use crate::{Error, Result};
 
 #[derive(Clone, Copy)]
 struct Node {
@@ -64,7 +63,7 @@ impl Status {
 
     /// The rightmost edge that `side` says lies left of the query (the query is to its
     /// right), if any.
-    pub fn left_of(&self, mut side: impl FnMut(u32) -> Side) -> Result<Option<u32>> {
+    pub fn left_of(&self, mut side: impl FnMut(u32) -> Side) -> Result<Option<u32>, u32> {
         let mut t = self.root;
         let mut best = None;
         while t != NONE {
@@ -74,14 +73,14 @@ impl Status {
                     t = self.nodes[t as usize].right;
                 }
                 Side::Left => t = self.nodes[t as usize].left,
-                Side::On => return Err(on_edge()),
+                Side::On => return Err(t),
             }
         }
         Ok(best)
     }
 
     /// Insert edge `e`; `side(t)` says on which side of edge `t` the new edge lies.
-    pub fn insert(&mut self, e: u32, mut side: impl FnMut(u32) -> Side) -> Result<()> {
+    pub fn insert(&mut self, e: u32, mut side: impl FnMut(u32) -> Side) -> Result<(), u32> {
         let priority = self.random();
         let mut parent = NONE;
         let mut go_right = false;
@@ -97,7 +96,7 @@ impl Status {
                     go_right = false;
                     t = self.nodes[t as usize].left;
                 }
-                Side::On => return Err(on_edge()),
+                Side::On => return Err(t),
             }
         }
         self.nodes[e as usize] = Node {
@@ -122,6 +121,31 @@ impl Status {
             self.rotate_up(e);
         }
         Ok(())
+    }
+
+    /// The edges just left and right of edge `e` (in the tree).
+    pub fn neighbours(&self, e: u32) -> (u32, u32) {
+        (self.step(e, true), self.step(e, false))
+    }
+
+    /// The in-order predecessor (`left`) or successor of `e`, or `NONE`.
+    fn step(&self, e: u32, left: bool) -> u32 {
+        let down = |n: &Node| if left { n.left } else { n.right };
+        let up = |n: &Node| if left { n.right } else { n.left };
+        let mut t = down(&self.nodes[e as usize]);
+        if t != NONE {
+            while up(&self.nodes[t as usize]) != NONE {
+                t = up(&self.nodes[t as usize]);
+            }
+            return t;
+        }
+        let mut c = e;
+        let mut p = self.nodes[e as usize].parent;
+        while p != NONE && down(&self.nodes[p as usize]) == c {
+            c = p;
+            p = self.nodes[p as usize].parent;
+        }
+        p
     }
 
     /// Remove edge `e` (which must be in the tree).
@@ -182,10 +206,6 @@ impl Status {
     }
 }
 
-fn on_edge() -> Error {
-    Error::InvalidInput("polygon is not simple: a vertex lies on another edge".into())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -211,6 +231,15 @@ mod tests {
             if e % 3 == 0 {
                 let r = present.remove((e as usize * 7) % present.len());
                 s.remove(r);
+            }
+            let mut sorted = present.clone();
+            sorted.sort_by_key(|&t| key(t));
+            for (i, &t) in sorted.iter().enumerate() {
+                let want = (
+                    if i > 0 { sorted[i - 1] } else { NONE },
+                    sorted.get(i + 1).copied().unwrap_or(NONE),
+                );
+                assert_eq!(s.neighbours(t), want);
             }
             for q in [0u32, 50, 105, 210] {
                 let got = s
