@@ -14,6 +14,7 @@ mod kernel;
 mod locate;
 mod lp;
 mod range;
+mod triangulate;
 mod util;
 mod voronoi;
 
@@ -25,6 +26,7 @@ const GROUPS: &[&str] = &[
     "hull",
     "intersect",
     "boolean",
+    "triangulate",
     "lp",
     "range",
     "locate",
@@ -43,6 +45,7 @@ fn run_group(name: &str, quick: bool) -> Option<Result<(), String>> {
         "delaunay" => Some(delaunay::run(quick)),
         "voronoi" => Some(voronoi::run(quick)),
         "boolean" => Some(boolean::run(quick)),
+        "triangulate" => Some(triangulate::run(quick)),
         "kernel" => {
             kernel::run();
             Some(Ok(()))

@@ -69,6 +69,12 @@ pub enum Command {
     Validate(ValidateArgs),
     /// Repair polygons into valid ones, reading rings by a fill rule (book 2.4).
     MakeValid(MakeValidArgs),
+    /// Triangulation of polygons with holes by monotone pieces (book chapter 3).
+    #[command(after_long_help = crate::commands::triangulate::JSON_HELP)]
+    Triangulate(crate::commands::triangulate::TriangulateArgs),
+    /// Art gallery: guards at the smallest class of a 3-colouring (book chapter 3.1).
+    #[command(after_long_help = crate::commands::guard::JSON_HELP)]
+    Guard(crate::commands::guard::GuardArgs),
     /// Intersection of half-planes a·x + b·y <= c (book chapter 4).
     #[command(after_long_help = crate::commands::halfplanes::JSON_HELP)]
     Halfplanes(crate::commands::halfplanes::HalfplanesArgs),

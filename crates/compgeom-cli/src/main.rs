@@ -46,6 +46,8 @@ fn run(cli: cli::Cli) -> Result<(), error::CliError> {
         cli::Command::Boolean(args) => commands::boolean::run(&args),
         cli::Command::MakeValid(args) => commands::boolean::run_make_valid(&args),
         cli::Command::Validate(args) => commands::boolean::run_validate(&args),
+        cli::Command::Triangulate(args) => commands::triangulate::run(&args),
+        cli::Command::Guard(args) => commands::guard::run(&args),
         cli::Command::Demo(args) => demo::run(&args),
     }
 }

@@ -14,6 +14,7 @@ mod lp;
 mod overlay;
 mod range;
 pub mod samples;
+mod triangulate;
 mod voronoi;
 
 use crate::error::CliError;
@@ -39,6 +40,7 @@ const SECTIONS: &[SectionFn] = &[
     hull::section,
     intersect::section,
     overlay::section,
+    triangulate::section,
     lp::section,
     range::section,
     locate::section,

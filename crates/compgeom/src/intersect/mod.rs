@@ -87,6 +87,7 @@ mod sweep;
 pub use brute_force::{brute_force_intersections, verify_intersections};
 pub use pairwise::pairwise_intersections;
 pub use red_blue::{red_blue_intersections, RedBlueIntersections, RedBlueOverlap, RedBluePoint};
+pub(crate) use simple::clean_ring;
 pub use simple::{any_intersection, any_intersection_where, is_simple};
 pub use sweep::SweepStats;
 

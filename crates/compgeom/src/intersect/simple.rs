@@ -65,7 +65,7 @@ pub fn any_intersection_where(
 
 /// The ring without consecutive repeated vertices (cyclically, so a closing copy of the
 /// first vertex goes too).
-fn clean_ring(ring: &[Point2]) -> Vec<Point2> {
+pub(crate) fn clean_ring(ring: &[Point2]) -> Vec<Point2> {
     let mut out: Vec<Point2> = Vec::with_capacity(ring.len());
     for &p in ring {
         if out.last() != Some(&p) {

@@ -1,0 +1,124 @@
+//! `compgeom triangulate` and `compgeom guard` end to end.
+
+use assert_cmd::Command;
+use serde_json::Value;
+use std::fs;
+use tempfile::TempDir;
+
+fn compgeom() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_compgeom"))
+}
+
+/// A comb of three teeth with a square hole: 8 + 4 vertices, one hole.
+const GALLERY: &str =
+    "POLYGON((0 0, 10 0, 10 6, 8 3, 6 6, 4 3, 2 6, 0 6, 0 0), (1 1, 1 2, 2 2, 2 1))\n";
+
+fn run_json(args: &[&str], stdin: &str) -> Value {
+    let out = compgeom().args(args).write_stdin(stdin).assert().success();
+    serde_json::from_slice(&out.get_output().stdout).expect("JSON")
+}
+
+/// Twice the signed area of triangle `t` in `v`.
+fn area2(v: &Value, t: &Value) -> f64 {
+    let p = |k: usize| {
+        let i = t[k].as_u64().unwrap() as usize;
+        (v[i][0].as_f64().unwrap(), v[i][1].as_f64().unwrap())
+    };
+    let (a, b, c) = (p(0), p(1), p(2));
+    (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0)
+}
+
+#[test]
+fn triangulate_json_counts_areas_and_pieces() {
+    let v = run_json(
+        &[
+            "triangulate",
+            "-",
+            "--input-format",
+            "wkt",
+            "--verify",
+            "--monotone-pieces",
+        ],
+        GALLERY,
+    );
+    let (verts, tris) = (&v["vertices"], v["triangles"].as_array().unwrap());
+    assert_eq!(verts.as_array().unwrap().len(), 12);
+    // n - 2 + 2h = 12 - 2 + 2.
+    assert_eq!(tris.len(), 12);
+    assert!(tris.iter().all(|t| area2(verts, t) > 0.0));
+    // The outer ring encloses 60 − 2 · 6 = 48, the hole 1.
+    let total: f64 = tris.iter().map(|t| area2(verts, t)).sum::<f64>() / 2.0;
+    assert_eq!(total, 47.0);
+    assert_eq!(v["verified"], Value::Bool(true));
+    // 12 triangles have 36 edge slots: 12 polygon edges + 2 · diagonals.
+    assert_eq!(v["diagonals"].as_array().unwrap().len(), 12);
+    let pieces = v["pieces"].as_array().unwrap();
+    assert!(pieces.len() >= 2);
+    let covered: usize = pieces.iter().map(|p| p.as_array().unwrap().len()).sum();
+    assert!(covered >= 12);
+}
+
+#[test]
+fn triangulate_wkt_and_svg() {
+    let dir = TempDir::new().unwrap();
+    let input = dir.path().join("g.wkt");
+    let svg = dir.path().join("t.svg");
+    fs::write(&input, GALLERY).unwrap();
+    let out = compgeom()
+        .arg("triangulate")
+        .arg(&input)
+        .args(["--format", "wkt", "--monotone-pieces", "--svg"])
+        .arg(&svg)
+        .assert()
+        .success();
+    let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+    assert!(text.starts_with("MULTIPOLYGON"), "{text}");
+    assert_eq!(text.matches("((").count(), 12);
+    let pic = fs::read_to_string(&svg).unwrap();
+    assert!(
+        pic.contains("<svg") && pic.contains("merge vertices") && pic.contains("monotone piece 1")
+    );
+}
+
+#[test]
+fn guard_json_bound_and_colours() {
+    let comb = "POLYGON((0 0, 10 0, 10 6, 8 3, 6 6, 4 3, 2 6, 0 6, 0 0))";
+    let v = run_json(&["guard", "-", "--input-format", "wkt", "--verify"], comb);
+    let guards = v["guards"].as_array().unwrap();
+    assert!(!guards.is_empty() && guards.len() <= 8 / 3, "{v}");
+    let colors: Vec<u64> = v["colors"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_u64().unwrap())
+        .collect();
+    assert_eq!(colors.len(), 8);
+    // Proper on every triangle.
+    for t in v["triangles"].as_array().unwrap() {
+        let c: Vec<u64> = (0..3)
+            .map(|k| colors[t[k].as_u64().unwrap() as usize])
+            .collect();
+        assert!(c[0] != c[1] && c[1] != c[2] && c[0] != c[2]);
+    }
+}
+
+#[test]
+fn self_intersecting_polygon_is_bad_input_naming_edges() {
+    let out = compgeom()
+        .args(["triangulate", "-", "--input-format", "wkt"])
+        .write_stdin("POLYGON((0 0, 4 4, 4 0, 0 4, 0 0))")
+        .assert()
+        .code(2);
+    let err = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+    assert!(
+        err.contains("not simple")
+            && err.contains("ring 0 edge 0")
+            && err.contains("ring 0 edge 2"),
+        "{err}"
+    );
+    compgeom()
+        .args(["guard", "-", "--input-format", "wkt", "--format", "csv"])
+        .write_stdin(GALLERY)
+        .assert()
+        .code(2);
+}
