@@ -10,7 +10,7 @@
 //! | [`PrioritySearchTree`] | §10.2 | points in (−∞:qx] × [qy:qy']: O(log n + k) | O(n log n) | O(n) |
 //! | [`SegmentTree`] | §10.3 | intervals containing q: O(log n + k) | O(n log n) | O(n log n) |
 //! | [`AxisParallelWindow`] | §10.1–10.2 | axis-parallel segments meeting a window: O(log n + k) | O(n log n) | O(n log n) |
-//! | [`SegmentWindow`] | §10.3 | non-crossing segments meeting a window: O(log² n + √n + k) | O(n log² n) | O(n log n) |
+//! | [`SegmentWindow`] | §10.3 | non-crossing segments meeting a window: O(log² n + k) | O(n log² n) | O(n log n) |
 //!
 //! Every answer lists each item once, input indices ascending (the window queries sort
 //! their k answers, adding O(k log k)). Windows and intervals are closed. Segments that

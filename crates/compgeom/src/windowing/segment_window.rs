@@ -1,8 +1,8 @@
 //! Windowing on arbitrary non-crossing segments (§10.3): report the segments that intersect
 //! a closed query rectangle (window).
 //!
-//! A segment meets the window iff an endpoint lies in it (found with a [`KdTree`] on the
-//! endpoints, §5.2) or it meets one of the window's four edges. Edges are queried with
+//! A segment meets the window iff an endpoint lies in it (found with a
+//! [`LayeredRangeTree`] on the endpoints, §5.6) or it meets one of the window's four edges. Edges are queried with
 //! segment trees (§10.3): for the left and right edges, a segment tree on the segments'
 //! x-extents whose every node keeps its segments sorted bottom to top (they all span the
 //! node's slab, and non-crossing segments are totally ordered there); a query walks one
@@ -20,9 +20,10 @@
 //! scans with exact tests. Node lists, buckets and the tree are flat `u32` arrays; lists are
 //! sorted in parallel. This keeps the book's bounds, O(log² n + k) for the edges, with a
 //! fraction of the storage (most of a segment's O(log n) canonical nodes lie near the
-//! leaves, which buckets replace). The endpoint part is a kd-tree, O(√n + k), chosen over a
-//! layered range tree (O(log n + k)) for its memory: 48 instead of about 400 bytes per
-//! segment. Answers are sorted (each reported once, ascending); build O(n log² n).
+//! leaves, which buckets replace). The endpoint part is a layered range tree with
+//! fractional cascading, O(log n + k), so the whole query is O(log² n + k); it is the
+//! largest part of the storage (about 400 bytes per segment; a kd-tree would take 48 but
+//! answer in O(√n + k)). Answers are sorted (each reported once, ascending); build O(n log² n).
 //!
 //! **Exactness.** Lists are sorted by the exact y at the slab's left end, then at its right
 //! end (constructed points compared via the kernel's [`compare_y_at_x`]), and the build
@@ -38,7 +39,7 @@ use super::segment_tree::Skeleton;
 use crate::kernel::{
     compare_y_at_x, orient2d, Bbox2, Crossing, ExactPoint, Orientation, Point2, Segment2,
 };
-use crate::range::{KdTree, PARALLEL};
+use crate::range::{LayeredRangeTree, PARALLEL};
 use crate::{Error, Result};
 use rayon::prelude::*;
 use std::cmp::Ordering;
@@ -355,7 +356,7 @@ fn sort_list(segs: &[Segment2], ids: &[u32], (xl, xr): (f64, f64), list: &mut [u
 #[derive(Debug, Clone)]
 pub struct SegmentWindow {
     /// The endpoints (segment `i` has points `2i` and `2i + 1`).
-    endpoints: KdTree,
+    endpoints: LayeredRangeTree,
     /// The closed box of all segments: windows are clipped to it.
     bounds: Bbox2,
     /// For the left and right edges.
@@ -389,7 +390,7 @@ impl SegmentWindow {
         };
         // The three parts are independent: build them side by side.
         let (tree, (by_x, by_y)) = rayon::join(
-            || KdTree::new(&endpoints),
+            || LayeredRangeTree::new(&endpoints),
             || rayon::join(|| frame(false), || frame(true)),
         );
         Ok(SegmentWindow {
