@@ -1,7 +1,9 @@
 //! Voronoi diagrams: Fortune's sweep against a brute-force exact oracle, the exact
 //! verifier, clipping, nearest-site queries, on random and deliberately degenerate input.
 
-use compgeom::kernel::{incircle, orient2d, CircleSide, Orientation};
+mod common;
+
+use compgeom::kernel::CircleSide;
 use compgeom::voronoi::{
     beach_line_at, clip_cells, fortune_voronoi, verify_cells, verify_voronoi, ClipRegion,
     NearestSite, VoronoiDiagram,
@@ -17,36 +19,7 @@ fn pts(v: &[(f64, f64)]) -> Vec<Point2> {
 /// Brute-force oracle, O(n⁴): the Voronoi vertices are the empty circles through three or
 /// more sites; each is given by the set of sites on it (as indices into `sites`).
 fn oracle_vertices(sites: &[Point2]) -> BTreeSet<Vec<usize>> {
-    let n = sites.len();
-    let mut out = BTreeSet::new();
-    for a in 0..n {
-        for b in a + 1..n {
-            for c in b + 1..n {
-                let (pa, mut pb, mut pc) = (sites[a], sites[b], sites[c]);
-                match orient2d(pa, pb, pc) {
-                    Orientation::Collinear => continue,
-                    Orientation::Clockwise => std::mem::swap(&mut pb, &mut pc),
-                    Orientation::CounterClockwise => {}
-                }
-                let mut on = Vec::new();
-                let mut empty = true;
-                for (s, &p) in sites.iter().enumerate() {
-                    match incircle(pa, pb, pc, p) {
-                        CircleSide::Inside => {
-                            empty = false;
-                            break;
-                        }
-                        CircleSide::OnCircle => on.push(s),
-                        CircleSide::Outside => {}
-                    }
-                }
-                if empty {
-                    out.insert(on);
-                }
-            }
-        }
-    }
-    out
+    common::site_circles(sites, CircleSide::Inside)
 }
 
 fn diagram_vertices(d: &VoronoiDiagram) -> BTreeSet<Vec<usize>> {

@@ -6,7 +6,9 @@
 //! Coordinates are small multiples of 1/8 so that squared distances are exact in `f64`
 //! and the brute-force oracle is exact without special arithmetic.
 
-use compgeom::kernel::{incircle, orient2d, CircleSide, Orientation};
+mod common;
+
+use compgeom::kernel::CircleSide;
 use compgeom::voronoi::{farthest_point_voronoi, verify_farthest, ClipRegion, FarthestVoronoi};
 use compgeom::Point2;
 use proptest::prelude::*;
@@ -18,36 +20,7 @@ fn d2(a: Point2, b: Point2) -> f64 {
 
 /// Circles through three or more sites with every site inside or on them, as site sets.
 fn oracle_vertices(sites: &[Point2]) -> BTreeSet<Vec<usize>> {
-    let n = sites.len();
-    let mut out = BTreeSet::new();
-    for a in 0..n {
-        for b in a + 1..n {
-            for c in b + 1..n {
-                let (pa, mut pb, mut pc) = (sites[a], sites[b], sites[c]);
-                match orient2d(pa, pb, pc) {
-                    Orientation::Collinear => continue,
-                    Orientation::Clockwise => std::mem::swap(&mut pb, &mut pc),
-                    Orientation::CounterClockwise => {}
-                }
-                let mut on = Vec::new();
-                let mut ok = true;
-                for (s, &p) in sites.iter().enumerate() {
-                    match incircle(pa, pb, pc, p) {
-                        CircleSide::Outside => {
-                            ok = false;
-                            break;
-                        }
-                        CircleSide::OnCircle => on.push(s),
-                        CircleSide::Inside => {}
-                    }
-                }
-                if ok {
-                    out.insert(on);
-                }
-            }
-        }
-    }
-    out
+    common::site_circles(sites, CircleSide::Outside)
 }
 
 /// Full check; `queries` are points at which cells are compared with brute force.

@@ -117,3 +117,44 @@ pub fn existing_cases_dir() -> Option<std::path::PathBuf> {
         None
     }
 }
+
+/// Brute force, O(n⁴): the circles through three or more of `sites` with no site on the
+/// `excluded` side, each given by the set of sites on it (indices into `sites`, ascending).
+/// With `excluded = Inside` these are the Voronoi vertices (empty circles); with `Outside`
+/// the farthest-point Voronoi vertices (circles containing every site).
+pub fn site_circles(
+    sites: &[Point2],
+    excluded: compgeom::kernel::CircleSide,
+) -> std::collections::BTreeSet<Vec<usize>> {
+    use compgeom::kernel::{incircle, CircleSide};
+    let n = sites.len();
+    let mut out = std::collections::BTreeSet::new();
+    for a in 0..n {
+        for b in a + 1..n {
+            for c in b + 1..n {
+                let (pa, mut pb, mut pc) = (sites[a], sites[b], sites[c]);
+                match orient2d(pa, pb, pc) {
+                    Orientation::Collinear => continue,
+                    Orientation::Clockwise => std::mem::swap(&mut pb, &mut pc),
+                    Orientation::CounterClockwise => {}
+                }
+                let mut on = Vec::new();
+                let mut ok = true;
+                for (s, &p) in sites.iter().enumerate() {
+                    match incircle(pa, pb, pc, p) {
+                        side if side == excluded => {
+                            ok = false;
+                            break;
+                        }
+                        CircleSide::OnCircle => on.push(s),
+                        _ => {}
+                    }
+                }
+                if ok {
+                    out.insert(on);
+                }
+            }
+        }
+    }
+    out
+}
