@@ -6,6 +6,7 @@
 //! O(n² + K log K) time for K meeting pairs, O(n + K) space.
 
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
+use super::round::round_crossing;
 use super::small_int::{self, Hom};
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
@@ -136,7 +137,8 @@ impl PairResults {
             SegmentIntersection::None => {}
             SegmentIntersection::Endpoint(q) => self.records.push(Record::new(q, i, j, false)),
             SegmentIntersection::Crossing(c) => {
-                self.records.push(Record::new(c.approx(), i, j, true))
+                self.records
+                    .push(Record::new(round_crossing(&c), i, j, true))
             }
             SegmentIntersection::Overlap(a, b) => {
                 self.records.push(Record::new(a, i, j, false));

@@ -79,6 +79,7 @@ mod brute_force;
 mod order;
 mod pairwise;
 mod red_blue;
+mod round;
 mod simple;
 mod small_int;
 mod status;
