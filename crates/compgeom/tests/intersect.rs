@@ -3,9 +3,10 @@
 //! situation, the O(n) queue bound, Shamos–Hoey / is_simple and red/blue.
 
 use compgeom::intersect::{
-    any_intersection, brute_force_intersections, find_intersections, is_simple,
-    pairwise_intersections, red_blue_intersections, sweep_intersections,
-    sweep_intersections_with_stats, sweep_status_at, verify_intersections, Intersections, Overlap,
+    any_intersection, brute_force_intersections, count_intersections, count_intersections_with,
+    find_intersections, is_simple, pairwise_intersections, red_blue_intersections,
+    sweep_intersections, sweep_intersections_with_stats, sweep_status_at, verify_intersections,
+    IntersectAlgorithm, IntersectionCount, Intersections, Overlap,
 };
 use compgeom::kernel::{segment_intersection, SegmentIntersection};
 use compgeom::{Error, Point2, Polygon, Segment2};
@@ -50,6 +51,20 @@ fn checked(segs: &[Segment2]) -> Intersections {
     }
     assert_eq!(found.overlaps, expected.overlaps, "overlaps for {segs:?}");
     verify_intersections(segs, &found).unwrap();
+    let want = IntersectionCount {
+        points: expected.points.len(),
+        overlaps: expected.overlaps.len(),
+        pairs: expected.pair_count(),
+    };
+    assert_eq!(
+        count_intersections(segs).unwrap(),
+        want,
+        "count for {segs:?}"
+    );
+    for how in [IntersectAlgorithm::Pairwise, IntersectAlgorithm::Sweep] {
+        let got = count_intersections_with(segs, how).unwrap();
+        assert_eq!(got, want, "{how:?} count for {segs:?}");
+    }
     found
 }
 
@@ -623,6 +638,15 @@ fn large_inputs_run_in_parallel_with_the_same_answer() {
     let by_sweep = sweep_intersections(&segs).unwrap();
     assert!(by_pairs.points.len() > 10_000 && !by_pairs.overlaps.is_empty());
     assert_eq!(by_pairs, by_sweep);
+    let count = count_intersections(&segs).unwrap();
+    assert_eq!(
+        (count.points, count.overlaps, count.pairs),
+        (
+            by_sweep.points.len(),
+            by_sweep.overlaps.len(),
+            by_sweep.pair_count()
+        )
+    );
 }
 
 #[test]
@@ -640,4 +664,52 @@ fn many_crossings_are_rounded_in_parallel_with_the_same_answer() {
     let by_pairs = pairwise_intersections(&segs).unwrap();
     assert!(by_pairs.points.len() > 200_000);
     assert_eq!(by_pairs, sweep_intersections(&segs).unwrap());
+    let count = count_intersections(&segs).unwrap();
+    assert_eq!(
+        (count.points, count.overlaps, count.pairs),
+        (by_pairs.points.len(), 0, by_pairs.pair_count())
+    );
+}
+
+#[test]
+fn counting_merges_crossings_that_coincide_exactly() {
+    // Ten segments through (1/3, 1/3), not an f64 point: (a, b) to (1 - 2a, 1 - 2b)
+    // passes through it at a third of its length. Their crossings have overlapping
+    // boxes and must merge into one point; sixty random long segments cross them
+    // elsewhere. The count and the full answer agree with the oracle.
+    let mut state = 21u64;
+    let mut unit = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let ends = [
+        (0, 0),
+        (1, 0),
+        (0, 1),
+        (2, 1),
+        (1, 2),
+        (2, -2),
+        (5, 1),
+        (4, 3),
+        (2, 0),
+        (0, 2),
+    ];
+    let mut segs: Vec<Segment2> = ends
+        .iter()
+        .map(|&(a, b)| s(a as f64, b as f64, (1 - 2 * a) as f64, (1 - 2 * b) as f64))
+        .collect();
+    for _ in 0..60 {
+        segs.push(s(-10.0, 20.0 * unit() - 10.0, 10.0, 20.0 * unit() - 10.0));
+    }
+    let found = checked(&segs);
+    let third = 1.0 / 3.0;
+    let star = found
+        .points
+        .iter()
+        .find(|q| q.point == p(third, third))
+        .expect("the common point");
+    assert_eq!(star.segments, (0..10).collect::<Vec<_>>());
+    assert_eq!(star.interior, (0..10).collect::<Vec<_>>());
 }

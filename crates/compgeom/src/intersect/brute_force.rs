@@ -300,7 +300,7 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
 
 /// The maximal pieces covered by the same two or more segments, per family of segments
 /// linked by overlaps (such a family lies on one line).
-fn overlap_pieces(segs: &[Oriented], overlapping: &[(usize, usize)]) -> Vec<Overlap> {
+pub(super) fn overlap_pieces(segs: &[Oriented], overlapping: &[(usize, usize)]) -> Vec<Overlap> {
     let mut parent: Vec<usize> = (0..segs.len()).collect();
     for &(i, j) in overlapping {
         let (a, b) = (find(&mut parent, i), find(&mut parent, j));

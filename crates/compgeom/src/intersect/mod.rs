@@ -76,6 +76,7 @@
 //! assert_eq!(p.interior, vec![0, 1]);
 //! ```
 mod brute_force;
+mod count;
 mod order;
 mod pairwise;
 mod red_blue;
@@ -86,6 +87,7 @@ mod status;
 mod sweep;
 
 pub use brute_force::{brute_force_intersections, verify_intersections};
+pub use count::{count_intersections, count_intersections_with, IntersectionCount};
 pub use pairwise::pairwise_intersections;
 pub use red_blue::{red_blue_intersections, RedBlueIntersections, RedBlueOverlap, RedBluePoint};
 pub(crate) use simple::clean_ring;

@@ -1,0 +1,328 @@
+//! Counting without materialising: the numbers of intersection points, overlaps and
+//! meeting pairs that [`super::find_intersections`] would report, exactly, without
+//! building the points, their segment lists or their rounded coordinates.
+//!
+//! On the pairwise path (the default for most inputs) each meeting pair gives one record
+//! per point (two for an overlapping pair) holding a certified interval around the exact
+//! point's y (plain `f64` arithmetic with a rigorous error bound: the crossing box of the
+//! sweep's event points; a single value for an input point). Records are sorted by the
+//! intervals' lower ends; a run of records whose intervals chain together is a *cluster*, and
+//! only inside a cluster can two records be the same point. Clusters of one record are
+//! one point; larger clusters are sorted exactly (the sweep's exact event order) and
+//! their distinct points counted. For proper crossings at distinct points (the common
+//! case) nothing is rounded and nothing exact runs. On the sweep path the sweep's
+//! output is counted as it comes.
+//!
+//! O(n + m + K log K) time for m candidate pairs and K meeting pairs on the pairwise
+//! path, O(n + K) space (24 bytes per (point, pair)).
+
+use super::order::{EventPoint, Oriented};
+use super::pairwise::{self, Grid};
+use super::sweep::{self, Flow, Sink};
+use super::{brute_force, IntersectAlgorithm, IntersectionPoint, Overlap};
+use crate::kernel::{
+    segment_intersection, Crossing, ExactPoint, Point2, Segment2, SegmentIntersection,
+};
+use crate::Result;
+use rayon::prelude::*;
+
+/// How many intersection points, overlaps and meeting pairs there are: the sizes of what
+/// [`super::find_intersections`] reports.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct IntersectionCount {
+    /// The number of intersection points (`Intersections::points.len()`).
+    pub points: usize,
+    /// The number of maximal overlap pieces (`Intersections::overlaps.len()`).
+    pub overlaps: usize,
+    /// The number of distinct pairs of segments that meet
+    /// ([`super::Intersections::pair_count`]).
+    pub pairs: usize,
+}
+
+/// One (point, pair) record: a y-interval `[lo, hi]` that surely contains the exact
+/// point's y, and what the point is: the crossing of segments `i` and `j`, or an input
+/// point, an endpoint of segment `i`.
+#[derive(Clone, Copy)]
+struct Rec {
+    lo: f64,
+    hi: f64,
+    /// `i << 32 | CROSSING | j` for a crossing, `i << 32 | end` (0: `a`, 1: `b`) for an
+    /// input point.
+    pair: u64,
+}
+
+const CROSSING: u64 = 1 << 31;
+
+impl Rec {
+    fn i(&self) -> usize {
+        (self.pair >> 32) as usize
+    }
+
+    fn j(&self) -> usize {
+        (self.pair & (CROSSING - 1)) as usize
+    }
+
+    /// The exact point of the record, with its certified box.
+    fn event(&self, segments: &[Segment2]) -> EventPoint {
+        let s = segments[self.i()];
+        if self.pair & CROSSING != 0 {
+            let t = segments[self.j()];
+            EventPoint::new(ExactPoint::Crossing(Crossing { s, t }))
+        } else if self.pair & 1 != 0 {
+            EventPoint::input(s.b)
+        } else {
+            EventPoint::input(s.a)
+        }
+    }
+}
+
+/// The records and overlapping pairs one scan produced.
+#[derive(Default)]
+struct Found {
+    recs: Vec<Rec>,
+    overlapping: Vec<(usize, usize)>,
+}
+
+impl Found {
+    /// A record for the input point `p`, named as an endpoint of segment `i` or `j`.
+    fn input(&mut self, segments: &[Segment2], p: Point2, i: usize, j: usize) {
+        // Name the point by an endpoint equal to it (it is one of the four).
+        let (s, t) = (segments[i], segments[j]);
+        let (owner, end) = if p == s.a {
+            (i, 0)
+        } else if p == s.b {
+            (i, 1)
+        } else if p == t.a {
+            (j, 0)
+        } else {
+            (j, 1)
+        };
+        self.recs.push(Rec {
+            lo: p.y,
+            hi: p.y,
+            pair: ((owner as u64) << 32) | end,
+        });
+    }
+
+    fn test(&mut self, segments: &[Segment2], i: usize, j: usize) {
+        match segment_intersection(segments[i], segments[j]) {
+            SegmentIntersection::None => {}
+            SegmentIntersection::Endpoint(q) => self.input(segments, q, i, j),
+            SegmentIntersection::Crossing(c) => {
+                let e = EventPoint::new(ExactPoint::Crossing(c));
+                let (lo, hi) = (e.mid.y - e.rad.y, e.mid.y + e.rad.y);
+                // No usable box: an interval that meets every other.
+                let usable = lo.is_finite() && hi.is_finite();
+                let (lo, hi) = if usable {
+                    (lo, hi)
+                } else {
+                    (f64::NEG_INFINITY, f64::INFINITY)
+                };
+                self.recs.push(Rec {
+                    lo,
+                    hi,
+                    pair: ((i as u64) << 32) | CROSSING | j as u64,
+                });
+            }
+            SegmentIntersection::Overlap(a, b) => {
+                self.input(segments, a, i, j);
+                self.input(segments, b, i, j);
+                self.overlapping.push((i, j));
+            }
+        }
+    }
+
+    fn merge(mut self, mut other: Found) -> Found {
+        if self.recs.len() < other.recs.len() {
+            std::mem::swap(&mut self, &mut other);
+        }
+        self.recs.append(&mut other.recs);
+        self.overlapping.append(&mut other.overlapping);
+        self
+    }
+}
+
+/// Sort records by their lower ends: a counting sort into about one bucket per record
+/// over the range of the (finite) lower ends, a monotone map, then each bucket sorted
+/// (`total_cmp`: an unbounded `-inf` comes first). O(K) for spread-out points.
+fn sort_by_lower_end(recs: &mut Vec<Rec>) {
+    let finite = recs.iter().map(|r| r.lo).filter(|v| v.is_finite());
+    let (min, max) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+        (a.min(v), b.max(v))
+    });
+    let buckets = recs.len().max(1);
+    let scale = if max > min {
+        buckets as f64 / (max - min)
+    } else {
+        0.0
+    };
+    // `as usize` saturates (and maps NaN, from an infinite scale, to 0): monotone.
+    let bucket = |v: f64| (((v - min) * scale) as usize).min(buckets - 1);
+    let mut start = vec![0usize; buckets + 1];
+    for r in recs.iter() {
+        start[bucket(r.lo) + 1] += 1;
+    }
+    for b in 0..buckets {
+        start[b + 1] += start[b];
+    }
+    let mut fill = start.clone();
+    let blank = Rec {
+        lo: 0.0,
+        hi: 0.0,
+        pair: 0,
+    };
+    let mut sorted = vec![blank; recs.len()];
+    for r in recs.iter() {
+        let b = bucket(r.lo);
+        sorted[fill[b]] = *r;
+        fill[b] += 1;
+    }
+    for w in start.windows(2) {
+        if w[1] - w[0] > 1 {
+            sorted[w[0]..w[1]].sort_unstable_by(|a, b| a.lo.total_cmp(&b.lo));
+        }
+    }
+    *recs = sorted;
+}
+
+/// The number of distinct exact points among the records.
+fn distinct_points(segments: &[Segment2], recs: &mut Vec<Rec>) -> usize {
+    // By lower ends, so that any two records whose intervals meet end up in one cluster
+    // (total_cmp orders -0.0 before 0.0: harmless, the running top still chains them).
+    sort_by_lower_end(recs);
+    let mut points = 0;
+    let mut k = 0;
+    while k < recs.len() {
+        // The cluster: every later record whose interval meets the union so far.
+        let mut top = recs[k].hi;
+        let mut end = k + 1;
+        while end < recs.len() && recs[end].lo <= top {
+            top = top.max(recs[end].hi);
+            end += 1;
+        }
+        points += if end - k == 1 {
+            1
+        } else {
+            let mut events: Vec<EventPoint> =
+                recs[k..end].iter().map(|r| r.event(segments)).collect();
+            events.sort_unstable();
+            1 + events.windows(2).filter(|w| w[0] != w[1]).count()
+        };
+        k = end;
+    }
+    points
+}
+
+/// The count from the pairwise scan's records.
+fn count_found(segments: &[Segment2], mut found: Found) -> IntersectionCount {
+    let pairs = found.recs.len() - found.overlapping.len();
+    let points = distinct_points(segments, &mut found.recs);
+    let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
+    let overlaps = brute_force::overlap_pieces(&segs, &found.overlapping).len();
+    IntersectionCount {
+        points,
+        overlaps,
+        pairs,
+    }
+}
+
+/// The pairwise scan over a bucketed input.
+fn count_on(segments: &[Segment2], grid: &Grid) -> IntersectionCount {
+    let scan = |k: usize, found: &mut Found| {
+        grid.scan_from(k, |i, j| found.test(segments, i, j));
+    };
+    let found = if grid.candidates() < pairwise::PARALLEL_SCAN_FROM {
+        let mut found = Found::default();
+        (0..grid.entry_count()).for_each(|k| scan(k, &mut found));
+        found
+    } else {
+        (0..grid.entry_count())
+            .into_par_iter()
+            .with_min_len(16)
+            .fold(Found::default, |mut found, k| {
+                scan(k, &mut found);
+                found
+            })
+            .reduce(Found::default, Found::merge)
+    };
+    count_found(segments, found)
+}
+
+/// Counts what the sweep reports, as it comes.
+#[derive(Default)]
+struct Tally {
+    points: usize,
+    overlaps: usize,
+    pairs: Vec<(u32, u32)>,
+}
+
+impl Sink for Tally {
+    fn point(&mut self, point: IntersectionPoint) -> Flow {
+        self.points += 1;
+        let s = &point.segments;
+        for (k, &i) in s.iter().enumerate() {
+            self.pairs
+                .extend(s[k + 1..].iter().map(|&j| (i as u32, j as u32)));
+        }
+        Flow::Continue
+    }
+    fn overlap(&mut self, _: Overlap) -> Flow {
+        self.overlaps += 1;
+        Flow::Continue
+    }
+}
+
+fn count_by_sweep(segments: &[Segment2]) -> Result<IntersectionCount> {
+    let mut tally = Tally::default();
+    sweep::sweep(segments, &mut tally)?;
+    // A pair meets at one point, or at both ends of an overlap: dedup.
+    tally.pairs.sort_unstable();
+    tally.pairs.dedup();
+    Ok(IntersectionCount {
+        points: tally.points,
+        overlaps: tally.overlaps,
+        pairs: tally.pairs.len(),
+    })
+}
+
+/// The numbers of intersection points, overlaps and meeting pairs
+/// [`super::find_intersections`] would report, exactly, without building them (no
+/// rounded coordinates, no segment lists): what `compgeom intersect --count-only`
+/// prints. Same method choice as [`super::find_intersections`].
+///
+/// Errors: a non-finite coordinate (naming the segment).
+///
+/// ```
+/// use compgeom::intersect::{count_intersections, IntersectionCount};
+/// use compgeom::Segment2;
+/// let s = |a: (f64, f64), b: (f64, f64)| Segment2::new(a.into(), b.into());
+/// // Three segments through (1, 1) and a fourth overlapping the first.
+/// let segs = [
+///     s((0.0, 0.0), (2.0, 2.0)),
+///     s((0.0, 2.0), (2.0, 0.0)),
+///     s((1.0, 0.0), (1.0, 3.0)),
+///     s((1.5, 1.5), (3.0, 3.0)),
+/// ];
+/// let count = count_intersections(&segs).unwrap();
+/// assert_eq!(count, IntersectionCount { points: 3, overlaps: 1, pairs: 4 });
+/// ```
+pub fn count_intersections(segments: &[Segment2]) -> Result<IntersectionCount> {
+    count_intersections_with(segments, IntersectAlgorithm::Default)
+}
+
+/// [`count_intersections`] with a chosen method; every method gives the same count.
+pub fn count_intersections_with(
+    segments: &[Segment2],
+    algorithm: IntersectAlgorithm,
+) -> Result<IntersectionCount> {
+    sweep::check_finite(segments)?;
+    brute_force::check_count(segments)?;
+    match algorithm {
+        IntersectAlgorithm::Sweep => count_by_sweep(segments),
+        IntersectAlgorithm::Pairwise => Ok(count_on(segments, &Grid::new(segments))),
+        IntersectAlgorithm::Default => match pairwise::prefer_pairwise(segments) {
+            Some(grid) => Ok(count_on(segments, &grid)),
+            None => count_by_sweep(segments),
+        },
+    }
+}
