@@ -188,3 +188,28 @@ fn every_algorithm_gives_the_same_output() {
         .assert()
         .code(2);
 }
+
+#[test]
+fn count_only_counts_without_building_the_points_and_agrees_with_the_full_answer() {
+    // Without --verify or --svg, --count-only takes the counting path; with --verify it
+    // counts the full, verified answer. Every method agrees, on the small example and on
+    // a grid with concurrent crossings, shared endpoints and overlaps.
+    let mut grid = String::new();
+    for k in 0..60u32 {
+        let (x, y) = (k * 7 % 11, k * 5 % 9);
+        grid.push_str(&format!(
+            "{x},{y},{},{}\n",
+            (x * 3 + k) % 11,
+            (y + 2 * k) % 9
+        ));
+    }
+    for content in [SEGMENTS, grid.as_str()] {
+        let mut full = json(&["--count-only", "--verify"], content);
+        full.as_object_mut().unwrap().remove("verified");
+        assert!(full["intersections"].as_u64().unwrap() >= 2);
+        for alg in ["default", "sweep", "pairwise"] {
+            let counted = json(&["--count-only", "--algorithm", alg], content);
+            assert_eq!(counted, full, "--algorithm {alg}");
+        }
+    }
+}

@@ -1,5 +1,6 @@
 //! `compgeom intersect`: all intersection points and overlaps of line segments (book §2.1),
-//! via `compgeom::intersect::find_intersections` (the exact Bentley–Ottmann sweep).
+//! via `compgeom::intersect::find_intersections` (the exact Bentley–Ottmann sweep, or
+//! exact pairwise tests), or `count_intersections` for `--count-only`.
 
 use crate::cli::{InputArgs, OutputArgs};
 use crate::error::CliError;
@@ -7,8 +8,8 @@ use crate::output;
 use crate::progress::{Spinner, LARGE_INPUT};
 use clap::{Args, ValueEnum};
 use compgeom::intersect::{
-    find_intersections_with, sweep_intersections_with_stats, sweep_status_at, verify_intersections,
-    IntersectAlgorithm, Intersections, StatusSnapshot,
+    count_intersections_with, find_intersections_with, sweep_intersections_with_stats,
+    sweep_status_at, verify_intersections, IntersectAlgorithm, Intersections, StatusSnapshot,
 };
 use compgeom::io::{self, write_shape, Shape};
 use compgeom::render::{Layer, Picture, Style};
@@ -145,6 +146,23 @@ pub fn run(args: &IntersectArgs) -> Result<(), CliError> {
              segments; the input has {}",
             segments.len()
         )));
+    }
+    // Counting alone needs neither the points nor their coordinates.
+    if args.count_only && !args.output.verify && args.output.svg.is_none() {
+        let count = {
+            let _spin = Spinner::start("counting", segments.len() >= LARGE_INPUT);
+            count_intersections_with(&segments, args.algorithm.algorithm())?
+        };
+        let text = match args.output.format.geometry_format() {
+            None => to_json(&CountJson {
+                intersections: count.points,
+                overlaps: count.overlaps,
+                segments: segments.len(),
+                verified: None,
+            })?,
+            Some(_) => count.points.to_string(),
+        };
+        return output::emit(args.output.output.as_deref(), &output::with_newline(text));
     }
     let found = {
         let _spin = Spinner::start("intersecting", segments.len() >= LARGE_INPUT);
