@@ -50,7 +50,8 @@
 //! points), an orientation filter at a crossing, and `i128` arithmetic when every
 //! coordinate involved is an integer below 2^20 (grid data). Reported coordinates are the
 //! nearest `f64` to the exact point (the kernel's correctly rounded
-//! [`Crossing::approx`](crate::kernel::Crossing::approx)).
+//! [`Crossing::approx`](crate::kernel::Crossing::approx); the pairwise method first tries
+//! a certified straight-line double-double evaluation that gives the same bits faster).
 //!
 //! ## Also here
 //!
@@ -60,6 +61,8 @@
 //! * [`red_blue_intersections`]: two sets whose members do not cross within their own set
 //!   (the map-overlay case); one sweep, only red–blue intersections are reported.
 //! * [`sweep_status_at`]: the status structure after a given event, for pictures.
+//! * [`count_intersections`]: the numbers of points, overlaps and meeting pairs, exactly,
+//!   without building the points (no rounding, no segment lists).
 //! * [`brute_force_intersections`] and [`verify_intersections`]: the exact O(n²) oracle.
 //!
 //! ```
