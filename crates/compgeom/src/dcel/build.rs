@@ -13,13 +13,12 @@
 //!    are the outer boundaries of connected components, i.e. holes of the face of the
 //!    half-edge just left of that vertex, found by one sweep (the book's graph G; see
 //!    `holes.rs`).
+use super::flat::Flat;
 use super::{Dcel, Face, FaceId, HalfEdge, HalfEdgeId, Vertex, VertexId};
-use crate::intersect::find_intersections;
 use crate::kernel::MultiPolygon;
 use crate::kernel::{compare_slopes, compare_xy, ExactPoint, Orientation, Point2, Segment2};
 use crate::{Error, Result};
 use std::cmp::Ordering;
-use std::collections::HashMap;
 
 /// One input segment carrying an edge, and whether it points the same way as the
 /// half-edge that stores it.
@@ -48,79 +47,28 @@ fn key(p: Point2) -> (u64, u64) {
     ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
 }
 
-/// True when `a` comes first in sweep order (higher y, then smaller x).
-fn sweep_first(a: Point2, b: Point2) -> bool {
-    a.y > b.y || (a.y == b.y && a.x < b.x)
-}
-
 impl Arrangement {
     /// The arrangement of `segments`. Zero-length segments are ignored (they add no
     /// edge). Non-finite coordinates are an error naming the segment.
     pub fn of_segments(segments: &[Segment2]) -> Result<Arrangement> {
-        for (i, s) in segments.iter().enumerate() {
-            for p in [s.a, s.b] {
-                if !p.is_finite() {
-                    let value = if p.x.is_finite() { p.y } else { p.x };
-                    return Err(Error::NonFinite {
-                        what: format!("segment {i}"),
-                        value,
-                    });
-                }
-            }
-        }
-        let kept: Vec<usize> = (0..segments.len())
-            .filter(|&i| !segments[i].is_degenerate())
-            .collect();
-        let sub: Vec<Segment2> = kept.iter().map(|&i| segments[i]).collect();
-        let found = find_intersections(&sub)?;
-        let mut vertices: Vec<ExactPoint> = Vec::new();
-        let mut by_point: HashMap<(u64, u64), usize> = HashMap::new();
-        let mut inner: Vec<Vec<usize>> = vec![Vec::new(); sub.len()];
-        for p in &found.points {
-            let id = match p.exact {
-                ExactPoint::Input(q) => *by_point.entry(key(q)).or_insert_with(|| {
-                    vertices.push(ExactPoint::Input(q));
-                    vertices.len() - 1
-                }),
-                e => {
-                    vertices.push(e);
-                    vertices.len() - 1
-                }
-            };
-            for &s in &p.interior {
-                inner[s].push(id);
-            }
-        }
-        let mut vertex_of = |q: Point2, vertices: &mut Vec<ExactPoint>| -> usize {
-            *by_point.entry(key(q)).or_insert_with(|| {
-                vertices.push(ExactPoint::Input(q));
-                vertices.len() - 1
+        let flat = Flat::of_segments(segments)?;
+        let vertices = flat.vertices.clone();
+        let edges = (0..flat.edge_count())
+            .map(|i| {
+                let [u, v] = flat.edges[i];
+                let (u, v) = (u as usize, v as usize);
+                let flip = u > v;
+                let sources = flat
+                    .sources_of(i)
+                    .iter()
+                    .map(|s| Source {
+                        segment: s.segment,
+                        forward: s.forward != flip,
+                    })
+                    .collect();
+                (u.min(v), u.max(v), sources)
             })
-        };
-        let mut edge_of: HashMap<(usize, usize), usize> = HashMap::new();
-        let mut edges: Vec<(usize, usize, Vec<Source>)> = Vec::new();
-        for (k, s) in sub.iter().enumerate() {
-            let a_first = sweep_first(s.a, s.b);
-            let (up, low) = if a_first { (s.a, s.b) } else { (s.b, s.a) };
-            let mut chain = Vec::with_capacity(inner[k].len() + 2);
-            chain.push(vertex_of(up, &mut vertices));
-            chain.extend_from_slice(&inner[k]);
-            chain.push(vertex_of(low, &mut vertices));
-            for w in chain.windows(2) {
-                let (u, v) = (w[0], w[1]);
-                // The piece runs u → v, i.e. like the segment iff a is its upper end.
-                let forward = a_first == (u < v);
-                let pair = (u.min(v), u.max(v));
-                let e = *edge_of.entry(pair).or_insert_with(|| {
-                    edges.push((pair.0, pair.1, Vec::new()));
-                    edges.len() - 1
-                });
-                edges[e].2.push(Source {
-                    segment: kept[k],
-                    forward,
-                });
-            }
-        }
+            .collect();
         Ok(Arrangement {
             vertices,
             edges,
@@ -207,34 +155,58 @@ impl<E> Dcel<(), E, ()> {
     /// in the unbounded face (no ray shooting: for callers that know the containment).
     pub(crate) fn linked(
         arr: &Arrangement,
+        edge_data: impl FnMut(&[Source], Carrier) -> E,
+        resolve_holes: bool,
+    ) -> Dcel<(), E, ()> {
+        let mut flat = Flat {
+            vertices: arr.vertices.clone(),
+            edges: Vec::with_capacity(arr.edges.len()),
+            src_start: Vec::with_capacity(arr.edges.len() + 1),
+            sources: Vec::with_capacity(arr.edges.len()),
+        };
+        flat.src_start.push(0);
+        for (u, v, sources) in &arr.edges {
+            flat.edges.push([*u as u32, *v as u32]);
+            flat.sources.extend_from_slice(sources);
+            flat.src_start.push(flat.sources.len() as u32);
+        }
+        Self::linked_flat(flat, &arr.segments, edge_data, resolve_holes)
+    }
+
+    /// The DCEL of a flat arrangement of `segments` (see [`Dcel::from_arrangement`]).
+    pub(crate) fn linked_flat(
+        flat: Flat,
+        segments: &[Segment2],
         mut edge_data: impl FnMut(&[Source], Carrier) -> E,
         resolve_holes: bool,
     ) -> Dcel<(), E, ()> {
-        let n = arr.vertices.len();
-        let mut half_edges = Vec::with_capacity(2 * arr.edges.len());
-        let mut carriers = Vec::with_capacity(2 * arr.edges.len());
+        let n = flat.vertices.len();
+        let ne = flat.edge_count();
+        let mut half_edges = Vec::with_capacity(2 * ne);
+        let mut carriers = Vec::with_capacity(2 * ne);
         // Outgoing half-edges per vertex, as one array cut into slices (no list per vertex).
         let mut out_start = vec![0usize; n + 1];
-        for (u, v, _) in &arr.edges {
-            out_start[*u + 1] += 1;
-            out_start[*v + 1] += 1;
+        for [u, v] in &flat.edges {
+            out_start[*u as usize + 1] += 1;
+            out_start[*v as usize + 1] += 1;
         }
         for i in 0..n {
             out_start[i + 1] += out_start[i];
         }
         let mut fill = out_start.clone();
-        let mut out = vec![0usize; 2 * arr.edges.len()];
-        for (i, (u, v, sources)) in arr.edges.iter().enumerate() {
+        let mut out = vec![0usize; 2 * ne];
+        let mut back: Vec<Source> = Vec::new();
+        for i in 0..ne {
+            let [u, v] = flat.edges[i];
+            let sources = flat.sources_of(i);
             let s0 = sources[0];
-            let seg = arr.segments[s0.segment];
-            let back: Vec<Source> = sources
-                .iter()
-                .map(|s| Source {
-                    segment: s.segment,
-                    forward: !s.forward,
-                })
-                .collect();
-            for (h, (o, src)) in [(*u, sources.as_slice()), (*v, back.as_slice())]
+            let seg = segments[s0.segment];
+            back.clear();
+            back.extend(sources.iter().map(|s| Source {
+                segment: s.segment,
+                forward: !s.forward,
+            }));
+            for (h, (o, src)) in [(u as usize, sources), (v as usize, back.as_slice())]
                 .into_iter()
                 .enumerate()
             {
@@ -257,7 +229,7 @@ impl<E> Dcel<(), E, ()> {
             }
         }
         link(
-            arr.vertices.clone(),
+            flat.vertices,
             half_edges,
             carriers,
             &out_start,
@@ -329,14 +301,20 @@ pub fn polygon_segments(polygons: &MultiPolygon) -> Result<(Vec<Segment2>, Vec<u
             if r.len() > 1 && r[0] == r[r.len() - 1] {
                 r = &r[..r.len() - 1];
             }
-            let mut distinct: Vec<(u64, u64)> = r.iter().map(|&p| key(p)).collect();
-            distinct.sort_unstable();
-            distinct.dedup();
-            if distinct.len() < 3 {
+            // Three distinct points, found in one pass: the first point, the first one
+            // different from it, the first one different from both.
+            let first = r.first().map(|&p| key(p));
+            let second = first.and_then(|f| r.iter().map(|&p| key(p)).find(|&k| k != f));
+            let third = second.and_then(|s| {
+                r.iter()
+                    .map(|&p| key(p))
+                    .find(|&k| Some(k) != first && k != s)
+            });
+            if third.is_none() {
+                let distinct = usize::from(first.is_some()) + usize::from(second.is_some());
                 return Err(Error::InvalidInput(format!(
-                    "{}: a ring needs at least 3 distinct points, found {}",
+                    "{}: a ring needs at least 3 distinct points, found {distinct}",
                     what(),
-                    distinct.len()
                 )));
             }
             for i in 0..r.len() {
@@ -558,8 +536,7 @@ impl<V, E, F> Dcel<V, E, F> {
         labels[0] = Some(outside);
         let mut queue = std::collections::VecDeque::from([FaceId(0)]);
         while let Some(f) = queue.pop_front() {
-            let cycles: Vec<HalfEdgeId> = self.face_cycles(f).collect();
-            for start in cycles {
+            for start in self.face_cycles(f) {
                 for h in self.cycle(start) {
                     let t = self.twin(h);
                     let g = self.half_edges[t.0].face;

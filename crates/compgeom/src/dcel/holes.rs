@@ -40,8 +40,30 @@ pub(super) fn faces_left_of<E>(
     let cmp_x =
         |a: usize, b: usize| compare_x_filtered(&points[a], &approx[a], &points[b], &approx[b]);
     // Sweep order: higher y first, then smaller x.
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| cmp_y(b, a).then_with(|| cmp_x(a, b)));
+    // First by the rounded points as integer keys (rounding is monotone, so where they
+    // differ in y that is the exact order); then each run of equal rounded y holding a
+    // point with an inexact coordinate is re-sorted exactly.
+    let okey = super::flat::okey;
+    let mut keyed: Vec<(u64, u64, u32)> = (0..n)
+        .map(|v| (!okey(approx[v].p.y), okey(approx[v].p.x), v as u32))
+        .collect();
+    keyed.sort_unstable();
+    let mut order: Vec<usize> = keyed.iter().map(|k| k.2 as usize).collect();
+    let mut i = 0;
+    while i < n {
+        let mut j = i + 1;
+        while j < n && keyed[j].0 == keyed[i].0 {
+            j += 1;
+        }
+        if j - i > 1
+            && order[i..j]
+                .iter()
+                .any(|&v| !(approx[v].x_exact && approx[v].y_exact))
+        {
+            order[i..j].sort_by(|&a, &b| cmp_y(b, a).then_with(|| cmp_x(a, b)));
+        }
+        i = j;
+    }
     let mut rank = vec![0usize; n];
     for (r, &v) in order.iter().enumerate() {
         rank[v] = r;

@@ -36,11 +36,13 @@
 //! ```
 mod build;
 mod export;
+mod flat;
 mod holes;
 mod validate;
 
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
 pub use export::exact_coords;
+pub(crate) use flat::Flat;
 pub(crate) use holes::{compare_xy_filtered, Rounded};
 
 use crate::kernel::{ExactPoint, Point2};

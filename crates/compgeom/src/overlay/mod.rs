@@ -58,7 +58,7 @@ pub use boolean::{
 pub use result::faces_to_polygons;
 pub use validate::{validity_problems, Problem};
 
-use crate::dcel::Arrangement;
+use crate::dcel::Flat;
 use crate::dcel::{Carrier, Dcel, FaceId, HalfEdgeId, PolygonLabel};
 use crate::kernel::{compare_xy, ExactPoint, MultiPolygon, Segment2};
 use crate::{Error, Result};
@@ -196,8 +196,13 @@ pub fn overlay<V1, E1, F1, V2, E2, F2>(
     let n1 = segs.len();
     let (segs2, fed2) = layer_segments(s2);
     segs.extend(segs2);
-    let arr = Arrangement::of_segments(&segs)?;
-    let d = Dcel::from_arrangement(&arr, |sources, carrier| (sources.to_vec(), carrier))?;
+    let flat = Flat::of_segments(&segs)?;
+    let d = Dcel::linked_flat(
+        flat,
+        &segs,
+        |sources, carrier| (sources.to_vec(), carrier),
+        true,
+    );
     let mut data = Vec::with_capacity(2 * d.edge_count());
     for g in d.half_edge_ids() {
         let (from, to) = (d.origin_point(g), d.origin_point(d.twin(g)));
