@@ -338,6 +338,11 @@ fn link<E>(
     out: &mut [usize],
     resolve_holes: bool,
 ) -> Dcel<(), E, ()> {
+    // Compact copies of the links (4 bytes per half-edge) for the walks below: a boundary
+    // walk is a chain of dependent loads, cheap when they hit a small array.
+    let m = half_edges.len();
+    let origin: Vec<u32> = half_edges.iter().map(|h| h.origin.0 as u32).collect();
+    let mut next = vec![0u32; m];
     // Angular order and next/prev.
     for v in 0..points.len() {
         let list = &mut out[out_start[v]..out_start[v + 1]];
@@ -351,10 +356,12 @@ fn link<E>(
         let k = list.len();
         for j in 0..k {
             let incoming = list[j] ^ 1;
-            let nxt = list[(j + k - 1) % k];
-            half_edges[incoming].next = HalfEdgeId(nxt);
-            half_edges[nxt].prev = HalfEdgeId(incoming);
+            next[incoming] = list[(j + k - 1) % k] as u32;
         }
+    }
+    for (h, &n) in next.iter().enumerate() {
+        half_edges[h].next = HalfEdgeId(n as usize);
+        half_edges[n as usize].prev = HalfEdgeId(h);
     }
     let vertices: Vec<Vertex<()>> = points
         .iter()
@@ -371,44 +378,39 @@ fn link<E>(
         .zip(&vertices)
         .map(|(p, v)| super::holes::Rounded::of(p, v.approx))
         .collect();
-    // Cycles.
-    let m = half_edges.len();
+    // Cycles, each with a half-edge leaving its lexicographically smallest vertex.
     let mut cycle_of = vec![usize::MAX; m];
     let mut cycles: Vec<usize> = Vec::new(); // a start half-edge per cycle
+    let mut lowest: Vec<usize> = Vec::new();
     for h in 0..m {
         if cycle_of[h] != usize::MAX {
             continue;
         }
         let c = cycles.len();
         cycles.push(h);
+        let mut low = h;
         let mut e = h;
         loop {
             cycle_of[e] = c;
-            e = half_edges[e].next.0;
+            let (a, b) = (origin[e] as usize, origin[low] as usize);
+            if a != b
+                && super::holes::compare_xy_filtered(&points[a], &approx[a], &points[b], &approx[b])
+                    == Ordering::Less
+            {
+                low = e;
+            }
+            e = next[e] as usize;
             if e == h {
                 break;
             }
         }
+        lowest.push(low);
     }
-    // Classify each cycle at its lexicographically smallest vertex.
-    let mut lowest: Vec<usize> = vec![usize::MAX; cycles.len()]; // a half-edge leaving it
+    // Classify each cycle at its smallest vertex: outer iff it turns left at each visit.
     let mut is_outer = vec![true; cycles.len()];
     for h in 0..m {
         let c = cycle_of[h];
-        let cur = lowest[c];
-        let better = cur == usize::MAX || {
-            let (a, b) = (half_edges[h].origin.0, half_edges[cur].origin.0);
-            a != b
-                && super::holes::compare_xy_filtered(&points[a], &approx[a], &points[b], &approx[b])
-                    == Ordering::Less
-        };
-        if better {
-            lowest[c] = h;
-        }
-    }
-    for h in 0..m {
-        let c = cycle_of[h];
-        if half_edges[h].origin != half_edges[lowest[c]].origin {
+        if origin[h] != origin[lowest[c]] {
             continue;
         }
         let p = half_edges[h].prev.0;
@@ -440,24 +442,18 @@ fn link<E>(
         let mut query = vec![false; points.len()];
         for c in 0..cycles.len() {
             if !is_outer[c] {
-                query[half_edges[lowest[c]].origin.0] = true;
+                query[origin[lowest[c]] as usize] = true;
             }
         }
         let left = super::holes::faces_left_of(
-            &points,
-            &approx,
-            &half_edges,
-            &carriers,
-            out_start,
-            out,
-            &query,
+            &points, &approx, &origin, &carriers, out_start, out, &query,
         );
         (0..cycles.len())
             .map(|c| {
                 if is_outer[c] {
                     None
                 } else {
-                    left[half_edges[lowest[c]].origin.0].map(|h| cycle_of[h])
+                    left[origin[lowest[c]] as usize].map(|h| cycle_of[h])
                 }
             })
             .collect()
