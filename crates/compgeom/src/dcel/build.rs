@@ -80,6 +80,24 @@ impl Arrangement {
 /// The sign of `d1 × d2` for the directions of two half-edges, each given by its carrier
 /// segment and whether it runs the segment's way. Exact (input points only).
 fn cross_dirs(s1: Segment2, f1: bool, s2: Segment2, f2: bool) -> Ordering {
+    // Both axis-parallel: one coordinate of each direction is zero, so at most one of
+    // the two products is non-zero and the signs of the (exact in sign) differences
+    // decide.
+    let dir = |s: Segment2, f: bool| {
+        let (dx, dy) = (s.b.x - s.a.x, s.b.y - s.a.y);
+        let sign = |v: f64| i32::from(v > 0.0) - i32::from(v < 0.0);
+        let k = if f { 1 } else { -1 };
+        (k * sign(dx), k * sign(dy))
+    };
+    if (s1.a.x == s1.b.x || s1.a.y == s1.b.y) && (s2.a.x == s2.b.x || s2.a.y == s2.b.y) {
+        let ((x1, y1), (x2, y2)) = (dir(s1, f1), dir(s2, f2));
+        return (x1 * y2 - y1 * x2).cmp(&0);
+    }
+    cross_dirs_slopes(s1, f1, s2, f2)
+}
+
+/// [`cross_dirs`] by the kernel's exact slope comparison (any directions).
+fn cross_dirs_slopes(s1: Segment2, f1: bool, s2: Segment2, f2: bool) -> Ordering {
     // compare_slopes(s, t) = sign(sorted(t) × sorted(s)); sorted flips a segment whose
     // first endpoint is lexicographically greater.
     let flip = |s: Segment2| compare_xy(s.a, s.b) == Ordering::Greater;
@@ -564,6 +582,35 @@ impl<V, E, F> Dcel<V, E, F> {
             half_edges,
             faces,
             carriers,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn axis_parallel_turns_agree_with_the_slope_comparison() {
+        let p = |x: f64, y: f64| Point2::new(x, y);
+        // Every pair of the four axis directions (with tiny and huge lengths), both ways.
+        let segs = [
+            Segment2::new(p(0.0, 0.0), p(1e-300, 0.0)),
+            Segment2::new(p(3.0, 5.0), p(-1e300, 5.0)),
+            Segment2::new(p(-2.0, 0.5), p(-2.0, 7.0)),
+            Segment2::new(p(1.0, 1.0), p(1.0, -0.25)),
+            Segment2::new(p(0.0, 0.0), p(2.0, 3.0)),
+        ];
+        for s in segs {
+            for t in segs {
+                for (f1, f2) in [(true, true), (true, false), (false, true), (false, false)] {
+                    assert_eq!(
+                        cross_dirs(s, f1, t, f2),
+                        cross_dirs_slopes(s, f1, t, f2),
+                        "{s:?} {f1} {t:?} {f2}"
+                    );
+                }
+            }
         }
     }
 }
