@@ -3,7 +3,8 @@
 //! 1. [`Arrangement::of_segments`]: the exact intersection sweep gives every point where
 //!    segments meet; each segment is cut at the points in its interior (they come in
 //!    sweep order, so along the segment) and pieces with the same two end vertices
-//!    (overlapping collinear segments) become one edge remembering all its sources.
+//!    (overlapping collinear segments) become one edge remembering all its sources
+//!    (built in flat arrays, with an exact axis-parallel path: see `flat.rs`).
 //! 2. [`Dcel::from_arrangement`]: half-edges are sorted counter-clockwise around each
 //!    vertex — exactly, from the directions of the input segments carrying them (a piece
 //!    starting at a crossing points the way its input segment points, so no constructed
@@ -12,7 +13,8 @@
 //!    left (strictly) at each visit of its lexicographically smallest vertex; the others
 //!    are the outer boundaries of connected components, i.e. holes of the face of the
 //!    half-edge just left of that vertex, found by one sweep (the book's graph G; see
-//!    `holes.rs`).
+//!    `holes.rs`). The cycle walks run over compact copies of `next` and `origin`
+//!    (4 bytes per half-edge): a walk is a chain of dependent loads.
 use super::flat::Flat;
 use super::{Dcel, Face, FaceId, HalfEdge, HalfEdgeId, Vertex, VertexId};
 use crate::kernel::MultiPolygon;

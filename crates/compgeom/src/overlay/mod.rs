@@ -15,7 +15,11 @@
 //!    intersection sweep ([`crate::intersect::find_intersections`]); each edge is cut at
 //!    the points in its interior and collinear overlapping pieces become one edge that
 //!    remembers the half-edge of S1 and of S2 it came from. Constructed crossings become
-//!    vertices holding their exact point ([`crate::kernel::ExactPoint`]).
+//!    vertices holding their exact point ([`crate::kernel::ExactPoint`]). When every
+//!    edge is horizontal or vertical, a crossing has exact `f64` coordinates and a
+//!    dedicated sweep over the contacts of horizontal and vertical edges gives the same
+//!    arrangement without constructed points. Either way the arrangement is kept in
+//!    flat arrays (vertices from the reported points, no point look-ups).
 //! 2. *Relink*: the half-edges around each vertex are sorted counter-clockwise and
 //!    `next(e)` is the one just clockwise of `twin(e)` (records are rebuilt rather than
 //!    patched; the order is decided exactly from input-segment directions).
