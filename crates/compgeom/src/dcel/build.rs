@@ -550,16 +550,27 @@ impl<V, E, F> Dcel<V, E, F> {
         let nf = self.faces.len();
         let mut labels: Vec<Option<G>> = vec![None; nf];
         labels[0] = Some(outside);
+        // The walks use compact copies of `next` and `face` (8 bytes per half-edge).
+        let links: Vec<(u32, u32)> = self
+            .half_edges
+            .iter()
+            .map(|h| (h.next.0 as u32, h.face.0 as u32))
+            .collect();
         let mut queue = std::collections::VecDeque::from([FaceId(0)]);
         while let Some(f) = queue.pop_front() {
             for start in self.face_cycles(f) {
-                for h in self.cycle(start) {
-                    let t = self.twin(h);
-                    let g = self.half_edges[t.0].face;
-                    if labels[g.0].is_none() {
+                let mut h = start.0;
+                loop {
+                    let t = h ^ 1; // half-edges 2i and 2i + 1 are twins
+                    let g = links[t].1 as usize;
+                    if labels[g].is_none() {
                         let from = labels[f.0].as_ref().expect("labelled");
-                        labels[g.0] = Some(cross(from, &self.half_edges[t.0].data));
-                        queue.push_back(g);
+                        labels[g] = Some(cross(from, &self.half_edges[t].data));
+                        queue.push_back(FaceId(g));
+                    }
+                    h = links[h].0 as usize;
+                    if h == start.0 {
+                        break;
                     }
                 }
             }
