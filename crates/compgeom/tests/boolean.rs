@@ -321,6 +321,15 @@ fn rect_set() -> impl Strategy<Value = MultiPolygon> {
     })
 }
 
+fn rect_union_input(v: &[(i32, i32, i32, i32)]) -> MultiPolygon {
+    mp(v.iter()
+        .map(|&(x, y, w, h)| {
+            let (x, y, w, h) = (x as f64, y as f64, w as f64, h as f64);
+            vec![pt(x, y), pt(x + w, y), pt(x + w, y + h), pt(x, y + h)]
+        })
+        .collect())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(150))]
     #[test]
@@ -331,6 +340,32 @@ proptest! {
     #[test]
     fn random_rectangles_share_edges_and_vertices(a in rect_set(), b in rect_set()) {
         check(&a, &b, &grid_samples(-0.5, 8.0, 0.5));
+    }
+
+    #[test]
+    fn union_of_many_rectangles_covers_exactly_their_unit_cells(
+        v in prop::collection::vec((0..8i32, 0..8i32, 1..4i32, 1..4i32), 1..12)
+    ) {
+        // Axis-parallel input (the exact f64 fast path): the union's area is the number
+        // of unit cells some rectangle covers, and every cell centre is inside iff covered.
+        let m = rect_union_input(&v);
+        let out = union_all(&m).unwrap();
+        assert_valid(&out);
+        let covered = |cx: i32, cy: i32| {
+            v.iter().any(|&(x, y, w, h)| cx >= x && cx < x + w && cy >= y && cy < y + h)
+        };
+        let mut cells = 0;
+        for cx in -1..12 {
+            for cy in -1..12 {
+                let inside = covered(cx, cy);
+                cells += i32::from(inside);
+                let p = pt(cx as f64 + 0.5, cy as f64 + 0.5);
+                prop_assert_eq!(containing(&out, p) == 1, inside);
+            }
+        }
+        prop_assert_eq!(area(&out), cells as f64);
+        let d = boolean_dcel(&m, &MultiPolygon::default(), FillRule::Positive).unwrap();
+        d.validate().unwrap();
     }
 
     #[test]

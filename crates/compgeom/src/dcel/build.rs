@@ -3,7 +3,8 @@
 //! 1. [`Arrangement::of_segments`]: the exact intersection sweep gives every point where
 //!    segments meet; each segment is cut at the points in its interior (they come in
 //!    sweep order, so along the segment) and pieces with the same two end vertices
-//!    (overlapping collinear segments) become one edge remembering all its sources.
+//!    (overlapping collinear segments) become one edge remembering all its sources
+//!    (built in flat arrays, with an exact axis-parallel path: see `flat.rs`).
 //! 2. [`Dcel::from_arrangement`]: half-edges are sorted counter-clockwise around each
 //!    vertex — exactly, from the directions of the input segments carrying them (a piece
 //!    starting at a crossing points the way its input segment points, so no constructed
@@ -12,14 +13,14 @@
 //!    left (strictly) at each visit of its lexicographically smallest vertex; the others
 //!    are the outer boundaries of connected components, i.e. holes of the face of the
 //!    half-edge just left of that vertex, found by one sweep (the book's graph G; see
-//!    `holes.rs`).
+//!    `holes.rs`). The cycle walks run over compact copies of `next` and `origin`
+//!    (4 bytes per half-edge): a walk is a chain of dependent loads.
+use super::flat::Flat;
 use super::{Dcel, Face, FaceId, HalfEdge, HalfEdgeId, Vertex, VertexId};
-use crate::intersect::find_intersections;
 use crate::kernel::MultiPolygon;
 use crate::kernel::{compare_slopes, compare_xy, ExactPoint, Orientation, Point2, Segment2};
 use crate::{Error, Result};
 use std::cmp::Ordering;
-use std::collections::HashMap;
 
 /// One input segment carrying an edge, and whether it points the same way as the
 /// half-edge that stores it.
@@ -48,79 +49,28 @@ fn key(p: Point2) -> (u64, u64) {
     ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
 }
 
-/// True when `a` comes first in sweep order (higher y, then smaller x).
-fn sweep_first(a: Point2, b: Point2) -> bool {
-    a.y > b.y || (a.y == b.y && a.x < b.x)
-}
-
 impl Arrangement {
     /// The arrangement of `segments`. Zero-length segments are ignored (they add no
     /// edge). Non-finite coordinates are an error naming the segment.
     pub fn of_segments(segments: &[Segment2]) -> Result<Arrangement> {
-        for (i, s) in segments.iter().enumerate() {
-            for p in [s.a, s.b] {
-                if !p.is_finite() {
-                    let value = if p.x.is_finite() { p.y } else { p.x };
-                    return Err(Error::NonFinite {
-                        what: format!("segment {i}"),
-                        value,
-                    });
-                }
-            }
-        }
-        let kept: Vec<usize> = (0..segments.len())
-            .filter(|&i| !segments[i].is_degenerate())
-            .collect();
-        let sub: Vec<Segment2> = kept.iter().map(|&i| segments[i]).collect();
-        let found = find_intersections(&sub)?;
-        let mut vertices: Vec<ExactPoint> = Vec::new();
-        let mut by_point: HashMap<(u64, u64), usize> = HashMap::new();
-        let mut inner: Vec<Vec<usize>> = vec![Vec::new(); sub.len()];
-        for p in &found.points {
-            let id = match p.exact {
-                ExactPoint::Input(q) => *by_point.entry(key(q)).or_insert_with(|| {
-                    vertices.push(ExactPoint::Input(q));
-                    vertices.len() - 1
-                }),
-                e => {
-                    vertices.push(e);
-                    vertices.len() - 1
-                }
-            };
-            for &s in &p.interior {
-                inner[s].push(id);
-            }
-        }
-        let mut vertex_of = |q: Point2, vertices: &mut Vec<ExactPoint>| -> usize {
-            *by_point.entry(key(q)).or_insert_with(|| {
-                vertices.push(ExactPoint::Input(q));
-                vertices.len() - 1
+        let flat = Flat::of_segments(segments)?;
+        let vertices = flat.vertices.clone();
+        let edges = (0..flat.edge_count())
+            .map(|i| {
+                let [u, v] = flat.edges[i];
+                let (u, v) = (u as usize, v as usize);
+                let flip = u > v;
+                let sources = flat
+                    .sources_of(i)
+                    .iter()
+                    .map(|s| Source {
+                        segment: s.segment,
+                        forward: s.forward != flip,
+                    })
+                    .collect();
+                (u.min(v), u.max(v), sources)
             })
-        };
-        let mut edge_of: HashMap<(usize, usize), usize> = HashMap::new();
-        let mut edges: Vec<(usize, usize, Vec<Source>)> = Vec::new();
-        for (k, s) in sub.iter().enumerate() {
-            let a_first = sweep_first(s.a, s.b);
-            let (up, low) = if a_first { (s.a, s.b) } else { (s.b, s.a) };
-            let mut chain = Vec::with_capacity(inner[k].len() + 2);
-            chain.push(vertex_of(up, &mut vertices));
-            chain.extend_from_slice(&inner[k]);
-            chain.push(vertex_of(low, &mut vertices));
-            for w in chain.windows(2) {
-                let (u, v) = (w[0], w[1]);
-                // The piece runs u → v, i.e. like the segment iff a is its upper end.
-                let forward = a_first == (u < v);
-                let pair = (u.min(v), u.max(v));
-                let e = *edge_of.entry(pair).or_insert_with(|| {
-                    edges.push((pair.0, pair.1, Vec::new()));
-                    edges.len() - 1
-                });
-                edges[e].2.push(Source {
-                    segment: kept[k],
-                    forward,
-                });
-            }
-        }
+            .collect();
         Ok(Arrangement {
             vertices,
             edges,
@@ -132,6 +82,24 @@ impl Arrangement {
 /// The sign of `d1 × d2` for the directions of two half-edges, each given by its carrier
 /// segment and whether it runs the segment's way. Exact (input points only).
 fn cross_dirs(s1: Segment2, f1: bool, s2: Segment2, f2: bool) -> Ordering {
+    // Both axis-parallel: one coordinate of each direction is zero, so at most one of
+    // the two products is non-zero and the signs of the (exact in sign) differences
+    // decide.
+    let dir = |s: Segment2, f: bool| {
+        let (dx, dy) = (s.b.x - s.a.x, s.b.y - s.a.y);
+        let sign = |v: f64| i32::from(v > 0.0) - i32::from(v < 0.0);
+        let k = if f { 1 } else { -1 };
+        (k * sign(dx), k * sign(dy))
+    };
+    if (s1.a.x == s1.b.x || s1.a.y == s1.b.y) && (s2.a.x == s2.b.x || s2.a.y == s2.b.y) {
+        let ((x1, y1), (x2, y2)) = (dir(s1, f1), dir(s2, f2));
+        return (x1 * y2 - y1 * x2).cmp(&0);
+    }
+    cross_dirs_slopes(s1, f1, s2, f2)
+}
+
+/// [`cross_dirs`] by the kernel's exact slope comparison (any directions).
+fn cross_dirs_slopes(s1: Segment2, f1: bool, s2: Segment2, f2: bool) -> Ordering {
     // compare_slopes(s, t) = sign(sorted(t) × sorted(s)); sorted flips a segment whose
     // first endpoint is lexicographically greater.
     let flip = |s: Segment2| compare_xy(s.a, s.b) == Ordering::Greater;
@@ -207,34 +175,58 @@ impl<E> Dcel<(), E, ()> {
     /// in the unbounded face (no ray shooting: for callers that know the containment).
     pub(crate) fn linked(
         arr: &Arrangement,
+        edge_data: impl FnMut(&[Source], Carrier) -> E,
+        resolve_holes: bool,
+    ) -> Dcel<(), E, ()> {
+        let mut flat = Flat {
+            vertices: arr.vertices.clone(),
+            edges: Vec::with_capacity(arr.edges.len()),
+            src_start: Vec::with_capacity(arr.edges.len() + 1),
+            sources: Vec::with_capacity(arr.edges.len()),
+        };
+        flat.src_start.push(0);
+        for (u, v, sources) in &arr.edges {
+            flat.edges.push([*u as u32, *v as u32]);
+            flat.sources.extend_from_slice(sources);
+            flat.src_start.push(flat.sources.len() as u32);
+        }
+        Self::linked_flat(flat, &arr.segments, edge_data, resolve_holes)
+    }
+
+    /// The DCEL of a flat arrangement of `segments` (see [`Dcel::from_arrangement`]).
+    pub(crate) fn linked_flat(
+        flat: Flat,
+        segments: &[Segment2],
         mut edge_data: impl FnMut(&[Source], Carrier) -> E,
         resolve_holes: bool,
     ) -> Dcel<(), E, ()> {
-        let n = arr.vertices.len();
-        let mut half_edges = Vec::with_capacity(2 * arr.edges.len());
-        let mut carriers = Vec::with_capacity(2 * arr.edges.len());
+        let n = flat.vertices.len();
+        let ne = flat.edge_count();
+        let mut half_edges = Vec::with_capacity(2 * ne);
+        let mut carriers = Vec::with_capacity(2 * ne);
         // Outgoing half-edges per vertex, as one array cut into slices (no list per vertex).
         let mut out_start = vec![0usize; n + 1];
-        for (u, v, _) in &arr.edges {
-            out_start[*u + 1] += 1;
-            out_start[*v + 1] += 1;
+        for [u, v] in &flat.edges {
+            out_start[*u as usize + 1] += 1;
+            out_start[*v as usize + 1] += 1;
         }
         for i in 0..n {
             out_start[i + 1] += out_start[i];
         }
         let mut fill = out_start.clone();
-        let mut out = vec![0usize; 2 * arr.edges.len()];
-        for (i, (u, v, sources)) in arr.edges.iter().enumerate() {
+        let mut out = vec![0usize; 2 * ne];
+        let mut back: Vec<Source> = Vec::new();
+        for i in 0..ne {
+            let [u, v] = flat.edges[i];
+            let sources = flat.sources_of(i);
             let s0 = sources[0];
-            let seg = arr.segments[s0.segment];
-            let back: Vec<Source> = sources
-                .iter()
-                .map(|s| Source {
-                    segment: s.segment,
-                    forward: !s.forward,
-                })
-                .collect();
-            for (h, (o, src)) in [(*u, sources.as_slice()), (*v, back.as_slice())]
+            let seg = segments[s0.segment];
+            back.clear();
+            back.extend(sources.iter().map(|s| Source {
+                segment: s.segment,
+                forward: !s.forward,
+            }));
+            for (h, (o, src)) in [(u as usize, sources), (v as usize, back.as_slice())]
                 .into_iter()
                 .enumerate()
             {
@@ -257,7 +249,7 @@ impl<E> Dcel<(), E, ()> {
             }
         }
         link(
-            arr.vertices.clone(),
+            flat.vertices,
             half_edges,
             carriers,
             &out_start,
@@ -329,14 +321,20 @@ pub fn polygon_segments(polygons: &MultiPolygon) -> Result<(Vec<Segment2>, Vec<u
             if r.len() > 1 && r[0] == r[r.len() - 1] {
                 r = &r[..r.len() - 1];
             }
-            let mut distinct: Vec<(u64, u64)> = r.iter().map(|&p| key(p)).collect();
-            distinct.sort_unstable();
-            distinct.dedup();
-            if distinct.len() < 3 {
+            // Three distinct points, found in one pass: the first point, the first one
+            // different from it, the first one different from both.
+            let first = r.first().map(|&p| key(p));
+            let second = first.and_then(|f| r.iter().map(|&p| key(p)).find(|&k| k != f));
+            let third = second.and_then(|s| {
+                r.iter()
+                    .map(|&p| key(p))
+                    .find(|&k| Some(k) != first && k != s)
+            });
+            if third.is_none() {
+                let distinct = usize::from(first.is_some()) + usize::from(second.is_some());
                 return Err(Error::InvalidInput(format!(
-                    "{}: a ring needs at least 3 distinct points, found {}",
+                    "{}: a ring needs at least 3 distinct points, found {distinct}",
                     what(),
-                    distinct.len()
                 )));
             }
             for i in 0..r.len() {
@@ -360,6 +358,11 @@ fn link<E>(
     out: &mut [usize],
     resolve_holes: bool,
 ) -> Dcel<(), E, ()> {
+    // Compact copies of the links (4 bytes per half-edge) for the walks below: a boundary
+    // walk is a chain of dependent loads, cheap when they hit a small array.
+    let m = half_edges.len();
+    let origin: Vec<u32> = half_edges.iter().map(|h| h.origin.0 as u32).collect();
+    let mut next = vec![0u32; m];
     // Angular order and next/prev.
     for v in 0..points.len() {
         let list = &mut out[out_start[v]..out_start[v + 1]];
@@ -373,10 +376,12 @@ fn link<E>(
         let k = list.len();
         for j in 0..k {
             let incoming = list[j] ^ 1;
-            let nxt = list[(j + k - 1) % k];
-            half_edges[incoming].next = HalfEdgeId(nxt);
-            half_edges[nxt].prev = HalfEdgeId(incoming);
+            next[incoming] = list[(j + k - 1) % k] as u32;
         }
+    }
+    for (h, &n) in next.iter().enumerate() {
+        half_edges[h].next = HalfEdgeId(n as usize);
+        half_edges[n as usize].prev = HalfEdgeId(h);
     }
     let vertices: Vec<Vertex<()>> = points
         .iter()
@@ -393,44 +398,39 @@ fn link<E>(
         .zip(&vertices)
         .map(|(p, v)| super::holes::Rounded::of(p, v.approx))
         .collect();
-    // Cycles.
-    let m = half_edges.len();
+    // Cycles, each with a half-edge leaving its lexicographically smallest vertex.
     let mut cycle_of = vec![usize::MAX; m];
     let mut cycles: Vec<usize> = Vec::new(); // a start half-edge per cycle
+    let mut lowest: Vec<usize> = Vec::new();
     for h in 0..m {
         if cycle_of[h] != usize::MAX {
             continue;
         }
         let c = cycles.len();
         cycles.push(h);
+        let mut low = h;
         let mut e = h;
         loop {
             cycle_of[e] = c;
-            e = half_edges[e].next.0;
+            let (a, b) = (origin[e] as usize, origin[low] as usize);
+            if a != b
+                && super::holes::compare_xy_filtered(&points[a], &approx[a], &points[b], &approx[b])
+                    == Ordering::Less
+            {
+                low = e;
+            }
+            e = next[e] as usize;
             if e == h {
                 break;
             }
         }
+        lowest.push(low);
     }
-    // Classify each cycle at its lexicographically smallest vertex.
-    let mut lowest: Vec<usize> = vec![usize::MAX; cycles.len()]; // a half-edge leaving it
+    // Classify each cycle at its smallest vertex: outer iff it turns left at each visit.
     let mut is_outer = vec![true; cycles.len()];
     for h in 0..m {
         let c = cycle_of[h];
-        let cur = lowest[c];
-        let better = cur == usize::MAX || {
-            let (a, b) = (half_edges[h].origin.0, half_edges[cur].origin.0);
-            a != b
-                && super::holes::compare_xy_filtered(&points[a], &approx[a], &points[b], &approx[b])
-                    == Ordering::Less
-        };
-        if better {
-            lowest[c] = h;
-        }
-    }
-    for h in 0..m {
-        let c = cycle_of[h];
-        if half_edges[h].origin != half_edges[lowest[c]].origin {
+        if origin[h] != origin[lowest[c]] {
             continue;
         }
         let p = half_edges[h].prev.0;
@@ -462,24 +462,18 @@ fn link<E>(
         let mut query = vec![false; points.len()];
         for c in 0..cycles.len() {
             if !is_outer[c] {
-                query[half_edges[lowest[c]].origin.0] = true;
+                query[origin[lowest[c]] as usize] = true;
             }
         }
         let left = super::holes::faces_left_of(
-            &points,
-            &approx,
-            &half_edges,
-            &carriers,
-            out_start,
-            out,
-            &query,
+            &points, &approx, &origin, &carriers, out_start, out, &query,
         );
         (0..cycles.len())
             .map(|c| {
                 if is_outer[c] {
                     None
                 } else {
-                    left[half_edges[lowest[c]].origin.0].map(|h| cycle_of[h])
+                    left[origin[lowest[c]] as usize].map(|h| cycle_of[h])
                 }
             })
             .collect()
@@ -556,17 +550,27 @@ impl<V, E, F> Dcel<V, E, F> {
         let nf = self.faces.len();
         let mut labels: Vec<Option<G>> = vec![None; nf];
         labels[0] = Some(outside);
+        // The walks use compact copies of `next` and `face` (8 bytes per half-edge).
+        let links: Vec<(u32, u32)> = self
+            .half_edges
+            .iter()
+            .map(|h| (h.next.0 as u32, h.face.0 as u32))
+            .collect();
         let mut queue = std::collections::VecDeque::from([FaceId(0)]);
         while let Some(f) = queue.pop_front() {
-            let cycles: Vec<HalfEdgeId> = self.face_cycles(f).collect();
-            for start in cycles {
-                for h in self.cycle(start) {
-                    let t = self.twin(h);
-                    let g = self.half_edges[t.0].face;
-                    if labels[g.0].is_none() {
+            for start in self.face_cycles(f) {
+                let mut h = start.0;
+                loop {
+                    let t = h ^ 1; // half-edges 2i and 2i + 1 are twins
+                    let g = links[t].1 as usize;
+                    if labels[g].is_none() {
                         let from = labels[f.0].as_ref().expect("labelled");
-                        labels[g.0] = Some(cross(from, &self.half_edges[t.0].data));
-                        queue.push_back(g);
+                        labels[g] = Some(cross(from, &self.half_edges[t].data));
+                        queue.push_back(FaceId(g));
+                    }
+                    h = links[h].0 as usize;
+                    if h == start.0 {
+                        break;
                     }
                 }
             }
@@ -591,6 +595,35 @@ impl<V, E, F> Dcel<V, E, F> {
             half_edges,
             faces,
             carriers,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn axis_parallel_turns_agree_with_the_slope_comparison() {
+        let p = |x: f64, y: f64| Point2::new(x, y);
+        // Every pair of the four axis directions (with tiny and huge lengths), both ways.
+        let segs = [
+            Segment2::new(p(0.0, 0.0), p(1e-300, 0.0)),
+            Segment2::new(p(3.0, 5.0), p(-1e300, 5.0)),
+            Segment2::new(p(-2.0, 0.5), p(-2.0, 7.0)),
+            Segment2::new(p(1.0, 1.0), p(1.0, -0.25)),
+            Segment2::new(p(0.0, 0.0), p(2.0, 3.0)),
+        ];
+        for s in segs {
+            for t in segs {
+                for (f1, f2) in [(true, true), (true, false), (false, true), (false, false)] {
+                    assert_eq!(
+                        cross_dirs(s, f1, t, f2),
+                        cross_dirs_slopes(s, f1, t, f2),
+                        "{s:?} {f1} {t:?} {f2}"
+                    );
+                }
+            }
         }
     }
 }

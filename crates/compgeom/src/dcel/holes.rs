@@ -18,17 +18,18 @@
 //! Cost: O(V log V) for the vertex order plus O(s) per status update for a status of
 //! at most s edges (a vector: s is small for polygon data — the number of edges a
 //! horizontal line meets).
-use super::{Carrier, HalfEdge};
+use super::Carrier;
 use crate::kernel::{orient_exact, ExactPoint, Orientation, Point2};
 use std::cmp::Ordering;
 
 /// For every vertex `v` with `query[v]`, the half-edge whose face contains the points
 /// just left of `v`, or `None` (unbounded face). `out[out_start[v]..out_start[v + 1]]`
-/// are `v`'s outgoing half-edges in counter-clockwise order from direction +x.
-pub(super) fn faces_left_of<E>(
+/// are `v`'s outgoing half-edges in counter-clockwise order from direction +x; `origin[h]`
+/// is the vertex half-edge `h` leaves.
+pub(super) fn faces_left_of(
     points: &[ExactPoint],
     approx: &[Rounded],
-    half_edges: &[HalfEdge<E>],
+    origin: &[u32],
     carriers: &[Carrier],
     out_start: &[usize],
     out: &[usize],
@@ -40,8 +41,30 @@ pub(super) fn faces_left_of<E>(
     let cmp_x =
         |a: usize, b: usize| compare_x_filtered(&points[a], &approx[a], &points[b], &approx[b]);
     // Sweep order: higher y first, then smaller x.
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| cmp_y(b, a).then_with(|| cmp_x(a, b)));
+    // First by the rounded points as integer keys (rounding is monotone, so where they
+    // differ in y that is the exact order); then each run of equal rounded y holding a
+    // point with an inexact coordinate is re-sorted exactly.
+    let okey = super::flat::okey;
+    let mut keyed: Vec<(u64, u64, u32)> = (0..n)
+        .map(|v| (!okey(approx[v].p.y), okey(approx[v].p.x), v as u32))
+        .collect();
+    keyed.sort_unstable();
+    let mut order: Vec<usize> = keyed.iter().map(|k| k.2 as usize).collect();
+    let mut i = 0;
+    while i < n {
+        let mut j = i + 1;
+        while j < n && keyed[j].0 == keyed[i].0 {
+            j += 1;
+        }
+        if j - i > 1
+            && order[i..j]
+                .iter()
+                .any(|&v| !(approx[v].x_exact && approx[v].y_exact))
+        {
+            order[i..j].sort_by(|&a, &b| cmp_y(b, a).then_with(|| cmp_x(a, b)));
+        }
+        i = j;
+    }
     let mut rank = vec![0usize; n];
     for (r, &v) in order.iter().enumerate() {
         rank[v] = r;
@@ -83,26 +106,41 @@ pub(super) fn faces_left_of<E>(
             };
         }
         let list = &out[out_start[v]..out_start[v + 1]];
-        // Edges ending here leave the status.
-        for &h in list {
-            let other = half_edges[h ^ 1].origin.0;
-            if rank[other] < rank[v] && cmp_y(other, v) != Ordering::Equal {
-                if let Some(i) = status.iter().position(|e| e.0 == h ^ 1) {
-                    status.remove(i);
+        let ends_here = |h: usize| {
+            let other = origin[h ^ 1] as usize;
+            rank[other] < rank[v] && cmp_y(other, v) != Ordering::Equal
+        };
+        let starts_here = |h: usize| {
+            let other = origin[h ^ 1] as usize;
+            rank[other] > rank[v] && cmp_y(other, v) != Ordering::Equal
+        };
+        // Edges starting here enter the status left to right (counter-clockwise order of
+        // the downward directions) at the place of v, where the edges ending here leave
+        // it: they are the run of status edges through v (edges of a subdivision do not
+        // pass through vertices), checked before the run is replaced in one splice.
+        let at = status.partition_point(|e| east(v, e));
+        let ending = list.iter().filter(|&&h| ends_here(h)).count();
+        let run_ok = at + ending <= status.len()
+            && status[at..at + ending]
+                .iter()
+                .all(|e| list.contains(&(e.0 ^ 1)) && ends_here(e.0 ^ 1));
+        let entering = list.iter().filter(|&&h| starts_here(h)).map(|&h| {
+            let (up, low) = down(h);
+            (h, up, low)
+        });
+        if run_ok {
+            status.splice(at..at + ending, entering);
+        } else {
+            for &h in list {
+                if ends_here(h) {
+                    if let Some(i) = status.iter().position(|e| e.0 == h ^ 1) {
+                        status.remove(i);
+                    }
                 }
             }
-        }
-        // Edges starting here enter it, left to right (counter-clockwise order of the
-        // downward directions), at the place of v.
-        let at = status.partition_point(|e| east(v, e));
-        let mut k = at;
-        for &h in list {
-            let other = half_edges[h ^ 1].origin.0;
-            if rank[other] > rank[v] && cmp_y(other, v) != Ordering::Equal {
-                let (up, low) = down(h);
-                status.insert(k, (h, up, low));
-                k += 1;
-            }
+            let at = status.partition_point(|e| east(v, e));
+            let entering: Vec<_> = entering.collect();
+            status.splice(at..at, entering);
         }
         prev = Some(v);
     }

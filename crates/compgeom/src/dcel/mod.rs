@@ -14,7 +14,9 @@
 //! hole lies in) is exact; the rounded coordinates are never consulted (DESIGN §2).
 //!
 //! Builders: [`Dcel::from_segments`] (the arrangement of arbitrary segments, split at
-//! crossings and with overlaps merged, via [`crate::intersect::find_intersections`]) and
+//! crossings and with overlaps merged, via [`crate::intersect::find_intersections`], or,
+//! for horizontal and vertical segments only, by an exact sweep whose crossings are
+//! `f64` points) and
 //! [`Dcel::from_polygons`] (faces labelled with the polygons containing them). Cost:
 //! O((n + k) log n) for the sweep and the angular sorts; the components that do not touch
 //! any other are linked to the faces containing them by one more sweep (the half-edge
@@ -36,11 +38,13 @@
 //! ```
 mod build;
 mod export;
+mod flat;
 mod holes;
 mod validate;
 
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
 pub use export::exact_coords;
+pub(crate) use flat::Flat;
 pub(crate) use holes::{compare_xy_filtered, Rounded};
 
 use crate::kernel::{ExactPoint, Point2};

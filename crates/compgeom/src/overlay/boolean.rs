@@ -28,7 +28,7 @@
 //! Cost: O((n + k) log n) for n input edges and k intersection points, plus the
 //! hole-linking sweep (see [`crate::dcel`]).
 use super::result::faces_to_polygons;
-use crate::dcel::{polygon_segments, Arrangement, Carrier, Dcel};
+use crate::dcel::{polygon_segments, Carrier, Dcel, Flat};
 use crate::io::ring_orientation;
 use crate::kernel::{MultiPolygon, Orientation, Polygon, Segment2};
 use crate::Result;
@@ -145,20 +145,25 @@ pub fn boolean_dcel(
     let mut segs = oriented_segments(a, rule)?;
     let na = segs.len();
     segs.extend(oriented_segments(b, rule)?);
-    let arr = Arrangement::of_segments(&segs)?;
-    let d = Dcel::from_arrangement(&arr, |sources, carrier| {
-        let (mut da, mut db) = (0, 0);
-        for s in sources {
-            // Crossing a ring edge a → b from its right to its left adds one.
-            let w = if s.forward { 1 } else { -1 };
-            if s.segment < na {
-                da += w;
-            } else {
-                db += w;
+    let flat = Flat::of_segments(&segs)?;
+    let d = Dcel::linked_flat(
+        flat,
+        &segs,
+        |sources, carrier| {
+            let (mut da, mut db) = (0, 0);
+            for s in sources {
+                // Crossing a ring edge a → b from its right to its left adds one.
+                let w = if s.forward { 1 } else { -1 };
+                if s.segment < na {
+                    da += w;
+                } else {
+                    db += w;
+                }
             }
-        }
-        BooleanEdge { da, db, carrier }
-    })?;
+            BooleanEdge { da, db, carrier }
+        },
+        true,
+    );
     Ok(d.label_faces((0, 0), |&(wa, wb), e| (wa + e.da, wb + e.db)))
 }
 

@@ -15,7 +15,11 @@
 //!    intersection sweep ([`crate::intersect::find_intersections`]); each edge is cut at
 //!    the points in its interior and collinear overlapping pieces become one edge that
 //!    remembers the half-edge of S1 and of S2 it came from. Constructed crossings become
-//!    vertices holding their exact point ([`crate::kernel::ExactPoint`]).
+//!    vertices holding their exact point ([`crate::kernel::ExactPoint`]). When every
+//!    edge is horizontal or vertical, a crossing has exact `f64` coordinates and a
+//!    dedicated sweep over the contacts of horizontal and vertical edges gives the same
+//!    arrangement without constructed points. Either way the arrangement is kept in
+//!    flat arrays (vertices from the reported points, no point look-ups).
 //! 2. *Relink*: the half-edges around each vertex are sorted counter-clockwise and
 //!    `next(e)` is the one just clockwise of `twin(e)` (records are rebuilt rather than
 //!    patched; the order is decided exactly from input-segment directions).
@@ -58,7 +62,7 @@ pub use boolean::{
 pub use result::faces_to_polygons;
 pub use validate::{validity_problems, Problem};
 
-use crate::dcel::Arrangement;
+use crate::dcel::Flat;
 use crate::dcel::{Carrier, Dcel, FaceId, HalfEdgeId, PolygonLabel};
 use crate::kernel::{compare_xy, ExactPoint, MultiPolygon, Segment2};
 use crate::{Error, Result};
@@ -196,8 +200,13 @@ pub fn overlay<V1, E1, F1, V2, E2, F2>(
     let n1 = segs.len();
     let (segs2, fed2) = layer_segments(s2);
     segs.extend(segs2);
-    let arr = Arrangement::of_segments(&segs)?;
-    let d = Dcel::from_arrangement(&arr, |sources, carrier| (sources.to_vec(), carrier))?;
+    let flat = Flat::of_segments(&segs)?;
+    let d = Dcel::linked_flat(
+        flat,
+        &segs,
+        |sources, carrier| (sources.to_vec(), carrier),
+        true,
+    );
     let mut data = Vec::with_capacity(2 * d.edge_count());
     for g in d.half_edge_ids() {
         let (from, to) = (d.origin_point(g), d.origin_point(d.twin(g)));

@@ -1,0 +1,659 @@
+//! The arrangement of a set of segments in flat arrays (no hash maps, no list per edge):
+//! what the DCEL builders link.
+//!
+//! Two ways to the same arrangement, both exact:
+//!
+//! * [`Flat::general`]: the exact intersection sweep ([`find_intersections`]) reports
+//!   every point lying on two or more segments, with U(p), L(p) and C(p). Each reported
+//!   point becomes one vertex (they are distinct exact points), so no point look-up is
+//!   needed: an endpoint not reported lies on its segment only and gets a vertex of its
+//!   own. Each segment is cut at its interior points (reported in sweep order, i.e. along
+//!   it). Pieces of different segments can only share both ends when the segments
+//!   overlap collinearly, so only segments in a reported overlap go through a merge.
+//! * [`Flat::axis_parallel`]: when every segment is horizontal or vertical, a crossing is
+//!   the point (x of the vertical, y of the horizontal): exact `f64` coordinates, no
+//!   constructed point. One sweep in x over the horizontal segments (ordered by y)
+//!   reports every horizontal–vertical contact; each line (the segments sharing one
+//!   horizontal or vertical line) is then cut at its segments' endpoints and contacts,
+//!   and every piece between consecutive cuts gets the segments covering it (collinear
+//!   overlaps merged on the way). O((n + k) log n) for k contacts. Every vertex is an
+//!   input-precision point, so everything after (angular order, hole linking, output)
+//!   runs on plain `f64` comparisons.
+//!
+//! Both give the same vertices (as exact points), the same edges and the same sources
+//! per edge; they differ only in numbering (tested against each other).
+use super::build::Source;
+use crate::intersect::find_intersections;
+use crate::kernel::{ExactPoint, Point2, Segment2};
+use crate::{Error, Result};
+use std::collections::{BTreeSet, HashMap};
+
+/// The arrangement of `segments`: edge `i` runs `edges[i][0] → edges[i][1]` and is carried
+/// by `sources[src_start[i]..src_start[i + 1]]` (ascending segment index; `forward` is
+/// relative to the edge's direction). Segment indices refer to the caller's list
+/// (zero-length segments are skipped and carry nothing).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Flat {
+    pub vertices: Vec<ExactPoint>,
+    pub edges: Vec<[u32; 2]>,
+    pub src_start: Vec<u32>,
+    pub sources: Vec<Source>,
+}
+
+/// True when `a` comes first in sweep order (higher y, then smaller x).
+fn sweep_first(a: Point2, b: Point2) -> bool {
+    a.y > b.y || (a.y == b.y && a.x < b.x)
+}
+
+/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
+pub(super) fn okey(v: f64) -> u64 {
+    let b = (v + 0.0).to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | (1 << 63)
+    }
+}
+
+/// Edges with their sources, collected piece by piece.
+struct Pieces {
+    edges: Vec<[u32; 2]>,
+    /// `(edge, source)` in any order.
+    pairs: Vec<(u32, Source)>,
+}
+
+impl Pieces {
+    /// Renumber the edges in the order of `key` (one per edge).
+    fn reorder_edges(&mut self, key: &[(u32, u64)]) {
+        let mut order: Vec<u32> = (0..self.edges.len() as u32).collect();
+        order.sort_unstable_by_key(|&e| key[e as usize]);
+        let mut new_id = vec![0u32; order.len()];
+        for (i, &e) in order.iter().enumerate() {
+            new_id[e as usize] = i as u32;
+        }
+        self.edges = order.iter().map(|&e| self.edges[e as usize]).collect();
+        for (e, _) in &mut self.pairs {
+            *e = new_id[*e as usize];
+        }
+    }
+
+    /// The flat arrangement; vertices are renumbered in order of first use by the edges
+    /// (edges follow the input segments, so boundary walks then touch nearby records).
+    fn finish(self, vertices: Vec<ExactPoint>) -> Flat {
+        let Pieces { mut edges, pairs } = self;
+        let mut new_v = vec![u32::MAX; vertices.len()];
+        let mut renumbered: Vec<ExactPoint> = Vec::with_capacity(vertices.len());
+        for e in &mut edges {
+            for v in e.iter_mut() {
+                let slot = &mut new_v[*v as usize];
+                if *slot == u32::MAX {
+                    *slot = renumbered.len() as u32;
+                    renumbered.push(vertices[*v as usize]);
+                }
+                *v = *slot;
+            }
+        }
+        // Vertices on no edge (none are made, but keep the invariant): appended.
+        for (v, p) in vertices.iter().enumerate() {
+            if new_v[v] == u32::MAX {
+                renumbered.push(*p);
+            }
+        }
+        let vertices = renumbered;
+        // Counting sort by edge, sources ascending by segment within an edge.
+        let mut src_start = vec![0u32; edges.len() + 1];
+        for (e, _) in &pairs {
+            src_start[*e as usize + 1] += 1;
+        }
+        for i in 0..edges.len() {
+            src_start[i + 1] += src_start[i];
+        }
+        let blank = Source {
+            segment: 0,
+            forward: false,
+        };
+        let mut sources = vec![blank; pairs.len()];
+        let mut fill: Vec<u32> = src_start[..edges.len()].to_vec();
+        for (e, src) in pairs {
+            sources[fill[e as usize] as usize] = src;
+            fill[e as usize] += 1;
+        }
+        for i in 0..edges.len() {
+            let (a, b) = (src_start[i] as usize, src_start[i + 1] as usize);
+            if b - a > 1 {
+                sources[a..b].sort_unstable_by_key(|s| s.segment);
+            }
+        }
+        Flat {
+            vertices,
+            edges,
+            src_start,
+            sources,
+        }
+    }
+}
+
+impl Flat {
+    /// The arrangement by the fastest exact path for the input.
+    /// Non-finite coordinates are an error naming the segment.
+    pub(crate) fn of_segments(segments: &[Segment2]) -> Result<Flat> {
+        for (i, s) in segments.iter().enumerate() {
+            for p in [s.a, s.b] {
+                if !p.is_finite() {
+                    let value = if p.x.is_finite() { p.y } else { p.x };
+                    return Err(Error::NonFinite {
+                        what: format!("segment {i}"),
+                        value,
+                    });
+                }
+            }
+        }
+        match Flat::axis_parallel(segments) {
+            Some(f) => Ok(f),
+            None => Flat::general(segments),
+        }
+    }
+
+    /// The number of edges.
+    pub(crate) fn edge_count(&self) -> usize {
+        self.edges.len()
+    }
+
+    /// The sources of edge `i`.
+    pub(crate) fn sources_of(&self, i: usize) -> &[Source] {
+        &self.sources[self.src_start[i] as usize..self.src_start[i + 1] as usize]
+    }
+
+    /// The arrangement from the exact intersection sweep (any segments). Segments must be
+    /// finite (checked by the caller).
+    pub(crate) fn general(segments: &[Segment2]) -> Result<Flat> {
+        let kept: Vec<usize> = (0..segments.len())
+            .filter(|&i| !segments[i].is_degenerate())
+            .collect();
+        let sub: Vec<Segment2> = kept.iter().map(|&i| segments[i]).collect();
+        let found = find_intersections(&sub)?;
+        let m = sub.len();
+        const NONE: u32 = u32::MAX;
+        let mut vertices: Vec<ExactPoint> = Vec::with_capacity(found.points.len() + 16);
+        let (mut up_v, mut low_v) = (vec![NONE; m], vec![NONE; m]);
+        // Interior points per segment, flat (counted first).
+        let mut in_start = vec![0u32; m + 1];
+        for p in &found.points {
+            for &s in &p.interior {
+                in_start[s + 1] += 1;
+            }
+        }
+        for i in 0..m {
+            in_start[i + 1] += in_start[i];
+        }
+        let mut fill: Vec<u32> = in_start[..m].to_vec();
+        let mut inner = vec![0u32; in_start[m] as usize];
+        for (id, p) in found.points.iter().enumerate() {
+            vertices.push(p.exact);
+            let id = id as u32;
+            for &s in &p.upper {
+                up_v[s] = id;
+            }
+            for &s in &p.lower {
+                low_v[s] = id;
+            }
+            for &s in &p.interior {
+                inner[fill[s] as usize] = id;
+                fill[s] += 1;
+            }
+        }
+        // Segments in an overlap: only their pieces can coincide with other pieces.
+        let mut shared = vec![false; m];
+        for o in &found.overlaps {
+            for &s in &o.segments {
+                shared[s] = true;
+            }
+        }
+        let mut merged: HashMap<(u32, u32), u32> = HashMap::new();
+        let mut pieces = Pieces {
+            edges: Vec::with_capacity(m + inner.len()),
+            pairs: Vec::with_capacity(m + inner.len()),
+        };
+        let mut chain: Vec<u32> = Vec::new();
+        for (k, s) in sub.iter().enumerate() {
+            let a_first = sweep_first(s.a, s.b);
+            let (up, low) = if a_first { (s.a, s.b) } else { (s.b, s.a) };
+            // An endpoint not reported lies on this segment only: a vertex of its own.
+            for (slot, q) in [(&mut up_v[k], up), (&mut low_v[k], low)] {
+                if *slot == NONE {
+                    *slot = vertices.len() as u32;
+                    vertices.push(ExactPoint::Input(q));
+                }
+            }
+            chain.clear();
+            chain.push(up_v[k]);
+            chain.extend_from_slice(&inner[in_start[k] as usize..in_start[k + 1] as usize]);
+            chain.push(low_v[k]);
+            for w in chain.windows(2) {
+                // Pieces run down the segment: like it iff a is its upper end.
+                let (u, v) = (w[0], w[1]);
+                let src = Source {
+                    segment: kept[k],
+                    forward: a_first,
+                };
+                if !shared[k] {
+                    pieces.pairs.push((pieces.edges.len() as u32, src));
+                    pieces.edges.push([u, v]);
+                    continue;
+                }
+                let pair = (u.min(v), u.max(v));
+                let e = *merged.entry(pair).or_insert_with(|| {
+                    pieces.edges.push([u, v]);
+                    pieces.edges.len() as u32 - 1
+                });
+                let forward = if pieces.edges[e as usize][0] == u {
+                    a_first
+                } else {
+                    !a_first
+                };
+                pieces.pairs.push((
+                    e,
+                    Source {
+                        segment: kept[k],
+                        forward,
+                    },
+                ));
+            }
+        }
+        Ok(pieces.finish(vertices))
+    }
+
+    /// The arrangement of horizontal and vertical segments (zero-length ones skipped),
+    /// or `None` when some segment is neither. Segments must be finite.
+    pub(crate) fn axis_parallel(segments: &[Segment2]) -> Option<Flat> {
+        // Per segment: axis (0 = horizontal: runs along x; 1 = vertical), the fixed
+        // coordinate, and the range along the axis.
+        struct Seg {
+            axis: u8,
+            across: f64,
+            lo: f64,
+            hi: f64,
+            index: u32,
+            /// True when the segment runs from `lo` to `hi`.
+            increasing: bool,
+        }
+        let mut segs: Vec<Seg> = Vec::with_capacity(segments.len());
+        for (i, s) in segments.iter().enumerate() {
+            if s.is_degenerate() {
+                continue;
+            }
+            let (axis, across, a, b) = if s.a.y == s.b.y {
+                (0, s.a.y, s.a.x, s.b.x)
+            } else if s.a.x == s.b.x {
+                (1, s.a.x, s.a.y, s.b.y)
+            } else {
+                return None;
+            };
+            segs.push(Seg {
+                axis,
+                across: across + 0.0,
+                lo: a.min(b) + 0.0,
+                hi: a.max(b) + 0.0,
+                index: i as u32,
+                increasing: a < b,
+            });
+        }
+        // The point at `along` on a line of `axis` through `across`.
+        let point = |axis: u8, across: f64, along: f64| {
+            if axis == 0 {
+                Point2::new(along, across)
+            } else {
+                Point2::new(across, along)
+            }
+        };
+        // Lines: segments grouped by (axis, across), ordered by `lo` within a line.
+        let mut order: Vec<u32> = (0..segs.len() as u32).collect();
+        order.sort_unstable_by_key(|&k| {
+            let s = &segs[k as usize];
+            (s.axis, okey(s.across), okey(s.lo), s.index)
+        });
+        let mut line_of = vec![0u32; segs.len()];
+        let mut lines: Vec<(usize, usize)> = Vec::new(); // ranges of `order`
+        for (r, &k) in order.iter().enumerate() {
+            let s = &segs[k as usize];
+            let same = r > 0 && {
+                let t = &segs[order[r - 1] as usize];
+                t.axis == s.axis && t.across == s.across
+            };
+            if !same {
+                lines.push((r, r));
+            }
+            let last = lines.last_mut().expect("pushed");
+            last.1 = r + 1;
+            line_of[k as usize] = lines.len() as u32 - 1;
+        }
+        // Cuts: (line, key of the position along it). Endpoints first.
+        let mut cuts: Vec<(u32, u64)> = Vec::with_capacity(4 * segs.len());
+        for (k, s) in segs.iter().enumerate() {
+            cuts.push((line_of[k], okey(s.lo)));
+            cuts.push((line_of[k], okey(s.hi)));
+        }
+        // Contacts of horizontal and vertical segments (closed): sweep in x; at equal x,
+        // horizontals enter, then verticals query [lo, hi] in y, then horizontals leave.
+        let mut events: Vec<(u64, u8, u32)> = Vec::new();
+        for (k, s) in segs.iter().enumerate() {
+            if s.axis == 0 {
+                events.push((okey(s.lo), 0, k as u32));
+                events.push((okey(s.hi), 2, k as u32));
+            } else {
+                events.push((okey(s.across), 1, k as u32));
+            }
+        }
+        events.sort_unstable();
+        let mut active: BTreeSet<(u64, u32)> = BTreeSet::new();
+        for &(_, kind, k) in &events {
+            let s = &segs[k as usize];
+            match kind {
+                0 => {
+                    active.insert((okey(s.across), k));
+                }
+                2 => {
+                    active.remove(&(okey(s.across), k));
+                }
+                _ => {
+                    for &(y, h) in active.range((okey(s.lo), 0)..=(okey(s.hi), u32::MAX)) {
+                        cuts.push((line_of[h as usize], okey(s.across)));
+                        cuts.push((line_of[k as usize], y));
+                    }
+                }
+            }
+        }
+        cuts.sort_unstable();
+        cuts.dedup();
+        // Vertices: every cut as a point, each point once (sorted by x, then y).
+        let cut_point = |&(line, along): &(u32, u64)| {
+            let s = &segs[order[lines[line as usize].0] as usize];
+            (s.axis, s.across, along)
+        };
+        let unkey = |k: u64| {
+            if k >> 63 == 1 {
+                f64::from_bits(k & !(1 << 63))
+            } else {
+                f64::from_bits(!k)
+            }
+        };
+        let mut keys: Vec<(u64, u64)> = cuts
+            .iter()
+            .map(|c| {
+                let (axis, across, along) = cut_point(c);
+                let p = point(axis, across, unkey(along));
+                (okey(p.x), okey(p.y))
+            })
+            .collect();
+        let cut_keys = keys.clone();
+        keys.sort_unstable();
+        keys.dedup();
+        let vertices: Vec<ExactPoint> = keys
+            .iter()
+            .map(|&(x, y)| ExactPoint::Input(Point2::new(unkey(x), unkey(y))))
+            .collect();
+        let cut_vertex: Vec<u32> = cut_keys
+            .iter()
+            .map(|k| keys.binary_search(k).expect("every cut is a vertex") as u32)
+            .collect();
+        // Pieces, line by line: between consecutive cuts, the segments covering them.
+        let mut pieces = Pieces {
+            edges: Vec::with_capacity(cuts.len()),
+            pairs: Vec::with_capacity(cuts.len()),
+        };
+        let mut c0 = 0;
+        let mut first_edge: Vec<u32> = Vec::new(); // per cut gap of the line: edge or NONE
+                                                   // Per edge: its lowest source segment and its position along that segment.
+        let mut place: Vec<(u32, u64)> = Vec::with_capacity(cuts.len());
+        for (line, &(r0, r1)) in lines.iter().enumerate() {
+            let mut c1 = c0;
+            while c1 < cuts.len() && cuts[c1].0 == line as u32 {
+                c1 += 1;
+            }
+            let along = &cuts[c0..c1];
+            first_edge.clear();
+            first_edge.resize(along.len().saturating_sub(1), u32::MAX);
+            for &k in &order[r0..r1] {
+                let s = &segs[k as usize];
+                let find = |v: f64| {
+                    along
+                        .binary_search_by(|c| c.1.cmp(&okey(v)))
+                        .expect("endpoints are cuts")
+                };
+                let (i0, i1) = (find(s.lo), find(s.hi));
+                for g in i0..i1 {
+                    let pos = if s.increasing {
+                        along[g].1
+                    } else {
+                        !along[g].1
+                    };
+                    if first_edge[g] == u32::MAX {
+                        first_edge[g] = pieces.edges.len() as u32;
+                        pieces
+                            .edges
+                            .push([cut_vertex[c0 + g], cut_vertex[c0 + g + 1]]);
+                        place.push((s.index, pos));
+                    } else {
+                        let p = &mut place[first_edge[g] as usize];
+                        *p = (*p).min((s.index, pos));
+                    }
+                    pieces.pairs.push((
+                        first_edge[g],
+                        Source {
+                            segment: s.index as usize,
+                            forward: s.increasing,
+                        },
+                    ));
+                }
+            }
+            c0 = c1;
+        }
+        // Edges along the input segments (ring order for polygon data), for locality.
+        pieces.reorder_edges(&place);
+        Some(pieces.finish(vertices))
+    }
+}
+
+/// The edges of `f` as `(lower point, higher point, sources relative to lower → higher)`
+/// with points compared exactly, sorted: the arrangement independent of numbering.
+#[cfg(test)]
+pub(crate) fn canonical(f: &Flat) -> Vec<CanonicalEdge> {
+    let mut out = Vec::new();
+    for i in 0..f.edge_count() {
+        let [u, v] = f.edges[i];
+        let (pu, pv) = (&f.vertices[u as usize], &f.vertices[v as usize]);
+        let flip = pu.compare_xy(pv) == std::cmp::Ordering::Greater;
+        let (a, b) = if flip { (pv, pu) } else { (pu, pv) };
+        let mut src: Vec<(usize, bool)> = f
+            .sources_of(i)
+            .iter()
+            .map(|s| (s.segment, s.forward != flip))
+            .collect();
+        src.sort_unstable();
+        out.push((ExactPointKey::of(a), ExactPointKey::of(b), src));
+    }
+    out.sort_by(|x, y| {
+        x.0.cmp(&y.0)
+            .then_with(|| x.1.cmp(&y.1))
+            .then_with(|| x.2.cmp(&y.2))
+    });
+    out
+}
+
+/// An edge as `(lower end, higher end, (segment, runs lower → higher))`, for tests.
+#[cfg(test)]
+pub(crate) type CanonicalEdge = (ExactPointKey, ExactPointKey, Vec<(usize, bool)>);
+
+/// A point key for tests: exact points compared exactly, via their nearest `f64` point
+/// (correct rounding keeps distinct points of these tests apart).
+#[cfg(test)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) struct ExactPointKey(u64, u64);
+
+#[cfg(test)]
+impl ExactPointKey {
+    fn of(p: &ExactPoint) -> Self {
+        let a = p.approx();
+        ExactPointKey(okey(a.x), okey(a.y))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::{on_segment, segment_intersection, SegmentIntersection};
+    use proptest::prelude::*;
+
+    /// The arrangement by definition, O(n²) per vertex: vertices are the endpoints and
+    /// the proper crossings; each segment is cut at the vertices on it (exact tests),
+    /// pieces with the same two ends merged.
+    fn oracle(segs: &[Segment2]) -> Vec<CanonicalEdge> {
+        let mut verts: Vec<ExactPoint> = Vec::new();
+        let add = |p: ExactPoint, verts: &mut Vec<ExactPoint>| {
+            if !verts
+                .iter()
+                .any(|q| q.compare_xy(&p) == std::cmp::Ordering::Equal)
+            {
+                verts.push(p);
+            }
+        };
+        for (i, s) in segs.iter().enumerate() {
+            if s.is_degenerate() {
+                continue;
+            }
+            add(ExactPoint::Input(s.a), &mut verts);
+            add(ExactPoint::Input(s.b), &mut verts);
+            for t in &segs[i + 1..] {
+                if let SegmentIntersection::Crossing(c) = segment_intersection(*s, *t) {
+                    add(ExactPoint::Crossing(c), &mut verts);
+                }
+            }
+        }
+        type Piece = (ExactPoint, ExactPoint, Vec<(usize, bool)>);
+        let mut pieces: Vec<Piece> = Vec::new();
+        for (i, s) in segs.iter().enumerate() {
+            if s.is_degenerate() {
+                continue;
+            }
+            let mut on: Vec<ExactPoint> = verts
+                .iter()
+                .filter(|v| on_segment(v, *s))
+                .copied()
+                .collect();
+            on.sort_by(|p, q| p.compare_xy(q));
+            // Along the sorted points the segment runs forward iff a is the smaller end.
+            let forward = crate::kernel::compare_xy(s.a, s.b) == std::cmp::Ordering::Less;
+            for w in on.windows(2) {
+                let same = pieces.iter_mut().find(|p| {
+                    p.0.compare_xy(&w[0]) == std::cmp::Ordering::Equal
+                        && p.1.compare_xy(&w[1]) == std::cmp::Ordering::Equal
+                });
+                match same {
+                    Some(p) => p.2.push((i, forward)),
+                    None => pieces.push((w[0], w[1], vec![(i, forward)])),
+                }
+            }
+        }
+        let mut out: Vec<_> = pieces
+            .into_iter()
+            .map(|(a, b, mut s)| {
+                s.sort_unstable();
+                (ExactPointKey::of(&a), ExactPointKey::of(&b), s)
+            })
+            .collect();
+        out.sort();
+        out
+    }
+
+    fn seg(c: (i32, i32, i32, i32)) -> Segment2 {
+        Segment2::new(
+            Point2::new(c.0 as f64, c.1 as f64),
+            Point2::new(c.2 as f64, c.3 as f64),
+        )
+    }
+
+    /// Horizontal and vertical segments on a small integer grid (collinear overlaps,
+    /// duplicates, shared endpoints, T-junctions, zero-length segments).
+    fn grid_segments() -> impl Strategy<Value = Vec<Segment2>> {
+        prop::collection::vec((0..8i32, 0..8i32, 0..6i32, any::<bool>()), 0..24).prop_map(|v| {
+            v.into_iter()
+                .map(|(x, y, len, vertical)| {
+                    if vertical {
+                        seg((x, y, x, y + len))
+                    } else {
+                        seg((x + len, y, x, y))
+                    }
+                })
+                .collect()
+        })
+    }
+
+    fn check(segs: &[Segment2], f: &Flat) -> Result<(), TestCaseError> {
+        // Sources ascending, every vertex used, edges non-degenerate.
+        for i in 0..f.edge_count() {
+            let s = f.sources_of(i);
+            prop_assert!(!s.is_empty());
+            prop_assert!(s.windows(2).all(|w| w[0].segment < w[1].segment));
+            prop_assert!(f.edges[i][0] != f.edges[i][1]);
+        }
+        prop_assert_eq!(canonical(f), oracle(segs));
+        Ok(())
+    }
+
+    #[test]
+    fn a_square_grid_is_cut_at_every_contact() {
+        // Two overlapping squares: 8 crossing-free vertices + 2 contacts.
+        let sq = |x: i32, y: i32| {
+            vec![
+                seg((x, y, x + 2, y)),
+                seg((x + 2, y, x + 2, y + 2)),
+                seg((x + 2, y + 2, x, y + 2)),
+                seg((x, y + 2, x, y)),
+            ]
+        };
+        let mut segs = sq(0, 0);
+        segs.extend(sq(1, 1));
+        let f = Flat::axis_parallel(&segs).unwrap();
+        assert_eq!((f.vertices.len(), f.edge_count()), (10, 12));
+        assert_eq!(canonical(&f), oracle(&segs));
+        assert!(Flat::axis_parallel(&[seg((0, 0, 1, 1))]).is_none());
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(200))]
+
+        #[test]
+        fn axis_parallel_path_is_the_general_arrangement(segs in grid_segments()) {
+            let fast = Flat::axis_parallel(&segs).expect("all axis-parallel");
+            check(&segs, &fast)?;
+            prop_assert_eq!(canonical(&fast), canonical(&Flat::general(&segs).unwrap()));
+        }
+
+        #[test]
+        fn general_path_is_the_arrangement_on_grids(
+            v in prop::collection::vec((0..6i32, 0..6i32, 0..6i32, 0..6i32), 0..16)
+        ) {
+            // Small integer coordinates: collinear overlaps, duplicates, shared and
+            // repeated vertices, crossings at endpoints.
+            let segs: Vec<Segment2> = v.into_iter().map(seg).collect();
+            check(&segs, &Flat::general(&segs).unwrap())?;
+        }
+
+        #[test]
+        fn general_path_is_the_arrangement_on_random_input(
+            v in prop::collection::vec(
+                (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64), 0..14)
+        ) {
+            let mut segs: Vec<Segment2> = v
+                .into_iter()
+                .map(|c| Segment2::new(Point2::new(c.0, c.1), Point2::new(c.2, c.3)))
+                .collect();
+            // A duplicate and a reversed copy: overlaps to merge.
+            if let Some(&s) = segs.first() {
+                segs.push(s);
+                segs.push(Segment2::new(s.b, s.a));
+            }
+            check(&segs, &Flat::general(&segs).unwrap())?;
+        }
+    }
+}
