@@ -167,6 +167,20 @@ pub(crate) fn cut(poly: &[Point2], s: Point2, t: Point2) -> Vec<Point2> {
     out
 }
 
+/// Is a point strictly inside the region? Decided in `f64` on the rounded point: a
+/// vertex within rounding of the boundary is treated as outside, and its cell is cut,
+/// which gives the same polygon up to rounding.
+pub(crate) fn inside_test(region: &ClipRegion) -> impl Fn(Point2) -> bool + '_ {
+    let ring = &region.ring;
+    let k = ring.len();
+    move |p: Point2| {
+        (0..k).all(|i| {
+            let (a, b) = (ring[i], ring[(i + 1) % k]);
+            (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) > 0.0
+        })
+    }
+}
+
 /// The cell of every site (in [`VoronoiDiagram::sites`] order, i.e. the order of first
 /// occurrence in the input), clipped to `region`: a counter-clockwise ring without a
 /// repeated closing point, empty where the cell misses the region.
@@ -180,15 +194,9 @@ pub(crate) fn cut(poly: &[Point2], s: Point2, t: Point2) -> Vec<Point2> {
 /// ```
 pub fn clip_cells(d: &VoronoiDiagram, region: &ClipRegion) -> Vec<Vec<Point2>> {
     let ring = &region.ring;
-    let k = ring.len();
-    // Strictly inside the region (f64; a vertex within rounding of the boundary takes the
-    // general path below, which gives the same polygon up to rounding).
-    let inside = |p: Point2| {
-        (0..k).all(|i| {
-            let (a, b) = (ring[i], ring[(i + 1) % k]);
-            (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) > 0.0
-        })
-    };
+    let inside = inside_test(region);
+    let flags: Vec<bool> = d.vertices.iter().map(|v| inside(v.point)).collect();
+    let inside = |v: usize| flags[v];
     (0..d.sites.len())
         .map(|s| {
             // A bounded cell whose vertices are all inside: its own vertices, in order.
@@ -198,7 +206,7 @@ pub fn clip_cells(d: &VoronoiDiagram, region: &ClipRegion) -> Vec<Vec<Point2>> {
                 loop {
                     let e = &d.half_edges[h];
                     match (e.origin, e.next) {
-                        (Some(v), Some(n)) if inside(d.vertices[v].point) => {
+                        (Some(v), Some(n)) if inside(v) => {
                             poly.push(d.vertices[v].point);
                             h = n;
                         }
