@@ -87,6 +87,9 @@ pub struct VoronoiCells {
     vertices: Vec<Point2>,
     offsets: Vec<u32>,
     edges: Vec<CellEdge>,
+    /// The sites with a cell, in the order their cells were built (spatially coherent):
+    /// [`VoronoiCells::to_diagram`] visits them in this order for locality.
+    order: Vec<u32>,
 }
 
 /// The Voronoi cells of `points`, as the dual of their Delaunay triangulation
@@ -106,7 +109,7 @@ impl VoronoiCells {
     pub fn from_triangulation(t: &Triangulation) -> VoronoiCells {
         let sites = t.vertices().to_vec();
         let input_to_site = t.input_to_vertex().to_vec();
-        let (vertices, offsets, edges) = if t.triangles().is_empty() {
+        let (vertices, offsets, edges, order) = if t.triangles().is_empty() {
             collinear(&sites)
         } else {
             build(t)
@@ -117,6 +120,7 @@ impl VoronoiCells {
             vertices,
             offsets,
             edges,
+            order,
         }
     }
 
@@ -193,7 +197,8 @@ impl VoronoiCells {
         // one edge, except strips, whose two edges have different neighbours).
         let mut he = vec![NONE; m];
         let mut pairs = 0u32;
-        for v in 0..n {
+        for &v in &self.order {
+            let v = v as usize;
             for e in self.offsets[v] as usize..self.offsets[v + 1] as usize {
                 if he[e] != NONE {
                     continue;
@@ -227,7 +232,8 @@ impl VoronoiCells {
             })
             .collect();
         let mut site_half_edge = vec![None; n];
-        for (v, first) in site_half_edge.iter_mut().enumerate() {
+        for &v in &self.order {
+            let v = v as usize;
             let (lo, hi) = (self.offsets[v] as usize, self.offsets[v + 1] as usize);
             let k = hi - lo;
             for e in lo..hi {
@@ -248,8 +254,11 @@ impl VoronoiCells {
                     prev: (edge.origin != NONE).then(|| he[prev] as usize),
                     site: v,
                 };
-                first.get_or_insert(h);
+                site_half_edge[v].get_or_insert(h);
             }
+        }
+        for v in &mut vertices {
+            v.sites.sort_unstable();
         }
         let input_to_site: Vec<usize> = self.input_to_site.iter().map(|&v| v as usize).collect();
         let mut site_input_index = vec![usize::MAX; n];
@@ -269,7 +278,7 @@ impl VoronoiCells {
     }
 }
 
-type Parts = (Vec<Point2>, Vec<u32>, Vec<CellEdge>);
+type Parts = (Vec<Point2>, Vec<u32>, Vec<CellEdge>, Vec<u32>);
 
 /// Collinear (or fewer than two) sites: each separated from its neighbours along the line
 /// by a bisector line.
@@ -297,7 +306,12 @@ fn collinear(sites: &[Point2]) -> Parts {
         }
     }
     offsets.push(edges.len() as u32);
-    (Vec::new(), offsets, edges)
+    (
+        Vec::new(),
+        offsets,
+        edges,
+        order.iter().map(|&s| s as u32).collect(),
+    )
 }
 
 /// Union-find root with path halving.
@@ -359,6 +373,11 @@ fn group(t: &Triangulation, centres: Vec<Point2>) -> (Option<Vec<u32>>, Vec<Poin
 }
 
 /// The cells of a triangulation with at least one triangle.
+///
+/// Cells are stored in site order but filled in the order the sites first appear in the
+/// triangle array, which follows the triangulation's spatial insertion order: the
+/// triangles around consecutive sites are then near each other in memory, where site
+/// order (the input order) would jump at random.
 fn build(t: &Triangulation) -> Parts {
     let (tris, nbr, pts) = (t.triangles(), t.neighbors(), t.vertices());
     let (n, nt) = (pts.len(), tris.len());
@@ -369,65 +388,110 @@ fn build(t: &Triangulation) -> Parts {
         .collect();
     let (ids, vertices) = group(t, centres);
     let gid = |tri: usize| ids.as_ref().map_or(tri as u32, |g| g[tri]);
-    // Each site's first triangle counter-clockwise: the one after its hull edge, if any.
-    // Triangle (v, a, b) (v at corner k) follows its clockwise neighbour across edge
-    // (v, a), which is opposite corner k + 2.
-    let mut first = vec![NONE; n];
+    // 1. Each site's first triangle counter-clockwise (the one after its hull edge, if
+    //    any) and its number of edges: one per triangle around it, one more from infinity
+    //    on the hull, one fewer per side shared with a triangle of the same group.
+    //    Triangle (v, a, b) (v at corner k) follows its clockwise neighbour across edge
+    //    (v, a), which is opposite corner k + 2.
+    //    Both are kept side by side (one cache line per site, sites being in input
+    //    order, i.e. at random in memory).
+    let mut site = vec![[NONE, 0u32]; n + 1];
     for (ti, tr) in tris.iter().enumerate() {
         for k in 0..3 {
             let v = tr[k] as usize;
-            if nbr[ti][(k + 2) % 3] == NO_NEIGHBOR {
-                first[v] = ti as u32 | HULL;
-            } else if first[v] == NONE {
-                first[v] = ti as u32;
+            let across = nbr[ti][(k + 2) % 3];
+            let [first, count] = &mut site[v];
+            *count = count.wrapping_add(1);
+            if across == NO_NEIGHBOR {
+                *first = ti as u32 | HULL;
+                *count = count.wrapping_add(1);
+            } else if *first == NONE {
+                *first = ti as u32;
+            }
+            if ids.is_some()
+                && across != NO_NEIGHBOR
+                && (across as usize) > ti
+                && gid(across as usize) == gid(ti)
+            {
+                // Wrapping arithmetic: the other end's count may not have been raised
+                // yet; the final counts are non-negative.
+                *count = count.wrapping_sub(1);
+                let c = &mut site[tr[(k + 1) % 3] as usize][1];
+                *c = c.wrapping_sub(1);
             }
         }
     }
-    let mut offsets = Vec::with_capacity(n + 1);
-    let mut edges = Vec::with_capacity(6 * n);
-    for (v, &f) in first.iter().enumerate() {
-        offsets.push(edges.len() as u32);
-        if f == NONE {
-            continue;
-        }
-        let t0 = (f & !HULL) as usize;
-        let corner = |tri: usize| (0..3).find(|&k| tris[tri][k] as usize == v).unwrap_or(0);
-        if f & HULL != 0 {
-            let k = corner(t0);
-            edges.push(CellEdge {
-                origin: NONE,
-                neighbour: tris[t0][(k + 1) % 3],
-            });
-        }
-        // Around v: from triangle (v, a, b) across edge (v, b) (opposite a, corner k + 1)
-        // to the next triangle; the Voronoi edge between their centres has b across it.
-        let mut tri = t0;
-        for _ in 0..nt {
-            let k = corner(tri);
-            let b = tris[tri][(k + 2) % 3];
-            let next = nbr[tri][(k + 1) % 3];
-            let g = gid(tri);
-            if next == NO_NEIGHBOR {
-                edges.push(CellEdge {
-                    origin: g,
-                    neighbour: b,
-                });
-                break;
+    // 2. Offsets: prefix sums of the counts.
+    let mut total = 0u32;
+    for s in site.iter_mut() {
+        let k = s[1];
+        s[1] = total;
+        total += k;
+    }
+    let mut edges = vec![
+        CellEdge {
+            origin: NONE,
+            neighbour: NONE,
+        };
+        total as usize
+    ];
+    // 3. Walk around each site, in order of first appearance in the triangle array; a
+    //    visited site's first triangle is set to NONE. The order is kept for
+    //    `to_diagram`.
+    let mut order = Vec::with_capacity(n);
+    for tr in tris {
+        for &v in tr {
+            let v = v as usize;
+            let f = site[v][0];
+            if f == NONE {
+                continue;
             }
-            if gid(next as usize) != g {
-                edges.push(CellEdge {
-                    origin: g,
-                    neighbour: b,
+            site[v][0] = NONE;
+            order.push(v as u32);
+            let t0 = (f & !HULL) as usize;
+            let corner = |tri: usize| (0..3).find(|&k| tris[tri][k] as usize == v).unwrap_or(0);
+            let (mut at, end) = (site[v][1] as usize, site[v + 1][1] as usize);
+            let mut put = |e: CellEdge| {
+                // Bounded by the count (a triangulation that is not one could disagree).
+                if at < end {
+                    edges[at] = e;
+                    at += 1;
+                }
+            };
+            if f & HULL != 0 {
+                let k = corner(t0);
+                put(CellEdge {
+                    origin: NONE,
+                    neighbour: tris[t0][(k + 1) % 3],
                 });
             }
-            tri = next as usize;
-            if tri == t0 {
-                break;
+            // Around v: from triangle (v, a, b) across edge (v, b) (opposite a, corner
+            // k + 1) to the next triangle; the Voronoi edge between their centres has b
+            // across it.
+            let mut tri = t0;
+            for _ in 0..nt {
+                let k = corner(tri);
+                let b = tris[tri][(k + 2) % 3];
+                let next = nbr[tri][(k + 1) % 3];
+                let g = gid(tri);
+                if next == NO_NEIGHBOR || gid(next as usize) != g {
+                    put(CellEdge {
+                        origin: g,
+                        neighbour: b,
+                    });
+                }
+                if next == NO_NEIGHBOR {
+                    break;
+                }
+                tri = next as usize;
+                if tri == t0 {
+                    break;
+                }
             }
         }
     }
-    offsets.push(edges.len() as u32);
-    (vertices, offsets, edges)
+    let offsets = site.iter().map(|s| s[1]).collect();
+    (vertices, offsets, edges, order)
 }
 
 /// Are `a, b, c, d` exactly on one circle? A floating-point filter settles the common
