@@ -8,9 +8,11 @@
 //! grid, shuffled (10⁶ points, every grid square cocircular: the degenerate workload).
 //! `--quick` uses 1e4, 1e5 and a 300 × 300 grid.
 //!
-//! Timed: compgeom `voronoi_diagram` (default and Fortune; the diagram) and the same +
-//! `clip_cells` (cells in input order, clipped to the bounding box: the same output as
-//! voronoice's); voronoice `VoronoiBuilder::build` with `ClipBehavior::Clip` (sites copied
+//! Timed: compgeom `voronoi_cells` + `VoronoiCells::clip` (the default dual in its compact
+//! form, cells in input order clipped to the bounding box: what voronoice builds — its
+//! `Voronoi` holds the triangulation, the circumcentres plus clip corners and one index list
+//! per cell — so this is the like-for-like row); `voronoi_diagram` (default and Fortune; the
+//! full half-edge diagram) and the same + `clip_cells`; voronoice `VoronoiBuilder::build` with `ClipBehavior::Clip` (sites copied
 //! outside the clock; its builder takes them by value); delaunator `triangulate`; spade
 //! `bulk_load` (its points copied outside the clock).
 //! Checked once outside the clock: both compgeom diagrams with the exact verifier (1e5 and
@@ -19,8 +21,8 @@
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::voronoi::{
-    clip_cells, fortune_voronoi, verify_cells, verify_voronoi, voronoi_diagram, ClipRegion,
-    VoronoiAlgorithm,
+    clip_cells, fortune_voronoi, verify_cells, verify_voronoi, voronoi_cells, voronoi_diagram,
+    ClipRegion, VoronoiAlgorithm,
 };
 use compgeom::Point2;
 use spade::Triangulation as _;
@@ -70,7 +72,7 @@ pub fn run(quick: bool) -> Result<(), String> {
     ];
     let runs = if quick { 1 } else { 3 };
     println!("voronoi: ratio = time / voronoice time (lower is better); best of {runs}");
-    let mut times: Vec<(Duration, Duration, Duration)> = Vec::new();
+    let mut times: Vec<[Duration; 4]> = Vec::new();
     for (name, pts) in &inputs {
         let b = compgeom::Bbox2::of_points(pts);
         let region = ClipRegion::from_bbox(b).map_err(|e| e.to_string())?;
@@ -89,6 +91,11 @@ pub fn run(quick: bool) -> Result<(), String> {
         }
         let cells = clip_cells(&dual, &region);
         verify_cells(&dual, &region, &cells).map_err(|e| format!("{name}: {e}"))?;
+        let compact = voronoi_cells(pts).map_err(|e| e.to_string())?;
+        if compact.clip(&region) != cells || compact.edge_count() != dual.edge_count() {
+            return Err(format!("{name}: voronoi_cells differs from the diagram"));
+        }
+        drop(compact);
         drop((d, dual, cells));
 
         let vp: Vec<voronoice::Point> = pts
@@ -136,6 +143,8 @@ pub fn run(quick: bool) -> Result<(), String> {
             e
         });
         let t_tri = best_of(runs, || compgeom::delaunay::delaunay(pts));
+        let t_compact = best_of(runs, || voronoi_cells(pts));
+        let t_compact_cells = best_of(runs, || voronoi_cells(pts).map(|c| c.clip(&region)));
         let t_dual = best_of(runs, || voronoi_diagram(pts, VoronoiAlgorithm::Default));
         let t_dual_cells = best_of(runs, || {
             voronoi_diagram(pts, VoronoiAlgorithm::Default).map(|d| clip_cells(&d, &region))
@@ -157,6 +166,12 @@ pub fn run(quick: bool) -> Result<(), String> {
             ("  delaunator", "triangulation only", t_delaunator),
             ("  spade", "bulk_load triangulation only", t_spade),
             ("  compgeom delaunay", "triangulation only (exact)", t_tri),
+            ("  compgeom cells", "voronoi_cells (dual, exact)", t_compact),
+            (
+                "  compgeom cells+clip",
+                "voronoi_cells + clip (like-for-like)",
+                t_compact_cells,
+            ),
             ("  compgeom default", "diagram (dual, exact)", t_dual),
             (
                 "  compgeom default+clip",
@@ -177,18 +192,17 @@ pub fn run(quick: bool) -> Result<(), String> {
             "  fortune / default (diagram): {:.2}",
             ms(t_fortune) / ms(t_dual)
         );
-        times.push((t_dual_cells, t_cells, t_voronoice));
+        times.push([t_compact_cells, t_dual_cells, t_cells, t_voronoice]);
     }
     if times.len() >= 2 {
-        let g = |f: fn(&(Duration, Duration, Duration)) -> Duration| {
-            ms(f(&times[1])) / ms(f(&times[0]))
-        };
+        let g = |i: usize| ms(times[1][i]) / ms(times[0][i]);
         println!(
-            "growth {small} -> {large} (x{} points): default+clip x{:.1}, fortune+clip x{:.1}, voronoice x{:.1}",
+            "growth {small} -> {large} (x{} points): cells+clip x{:.1}, default+clip x{:.1}, fortune+clip x{:.1}, voronoice x{:.1}",
             large / small,
-            g(|t| t.0),
-            g(|t| t.1),
-            g(|t| t.2)
+            g(0),
+            g(1),
+            g(2),
+            g(3)
         );
     }
     Ok(())

@@ -167,6 +167,20 @@ pub(crate) fn cut(poly: &[Point2], s: Point2, t: Point2) -> Vec<Point2> {
     out
 }
 
+/// Is a point strictly inside the region? Decided in `f64` on the rounded point: a
+/// vertex within rounding of the boundary is treated as outside, and its cell is cut,
+/// which gives the same polygon up to rounding.
+pub(crate) fn inside_test(region: &ClipRegion) -> impl Fn(Point2) -> bool + '_ {
+    let ring = &region.ring;
+    let k = ring.len();
+    move |p: Point2| {
+        (0..k).all(|i| {
+            let (a, b) = (ring[i], ring[(i + 1) % k]);
+            (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) > 0.0
+        })
+    }
+}
+
 /// The cell of every site (in [`VoronoiDiagram::sites`] order, i.e. the order of first
 /// occurrence in the input), clipped to `region`: a counter-clockwise ring without a
 /// repeated closing point, empty where the cell misses the region.
@@ -180,73 +194,79 @@ pub(crate) fn cut(poly: &[Point2], s: Point2, t: Point2) -> Vec<Point2> {
 /// ```
 pub fn clip_cells(d: &VoronoiDiagram, region: &ClipRegion) -> Vec<Vec<Point2>> {
     let ring = &region.ring;
-    let k = ring.len();
-    // Strictly inside the region (f64; a vertex within rounding of the boundary takes the
-    // general path below, which gives the same polygon up to rounding).
-    let inside = |p: Point2| {
-        (0..k).all(|i| {
-            let (a, b) = (ring[i], ring[(i + 1) % k]);
-            (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) > 0.0
-        })
-    };
-    (0..d.sites.len())
-        .map(|s| {
-            // A bounded cell whose vertices are all inside: its own vertices, in order.
-            if let Some(start) = d.site_half_edge[s] {
-                let mut poly = Vec::new();
-                let mut h = start;
-                loop {
-                    let e = &d.half_edges[h];
-                    match (e.origin, e.next) {
-                        (Some(v), Some(n)) if inside(d.vertices[v].point) => {
-                            poly.push(d.vertices[v].point);
-                            h = n;
-                        }
-                        _ => {
-                            poly.clear();
-                            break;
-                        }
+    let inside = inside_test(region);
+    let flags: Vec<bool> = d.vertices.iter().map(|v| inside(v.point)).collect();
+    let inside = |v: usize| flags[v];
+    let one = |s: usize| -> Vec<Point2> {
+        // A bounded cell whose vertices are all inside: its own vertices, in order.
+        if let Some(start) = d.site_half_edge[s] {
+            let mut poly = Vec::with_capacity(8);
+            let mut h = start;
+            loop {
+                let e = &d.half_edges[h];
+                match (e.origin, e.next) {
+                    (Some(v), Some(n)) if inside(v) => {
+                        poly.push(d.vertices[v].point);
+                        h = n;
                     }
-                    if h == start || poly.len() > d.half_edges.len() {
+                    _ => {
+                        poly.clear();
                         break;
                     }
                 }
-                if h == start && poly.len() >= 3 {
-                    return poly;
-                }
-            }
-            // Otherwise: the region cut by the bisector half-planes of the neighbours.
-            let mut poly = ring.clone();
-            let mut h = d.site_half_edge[s];
-            let mut neighbours: Vec<usize> = Vec::new();
-            if let Some(start) = h {
-                // Neighbours along the chain from `start`; a strip (collinear sites) or a
-                // cell with a second chain needs the full list.
-                let mut count = 0;
-                while let Some(x) = h {
-                    neighbours.push(d.half_edges[d.half_edges[x].twin].site);
-                    count += 1;
-                    h = d.half_edges[x].next;
-                    if h == Some(start) || count > d.half_edges.len() {
-                        break;
-                    }
-                }
-                if h.is_none() && d.vertices.is_empty() {
-                    neighbours = d
-                        .half_edges
-                        .iter()
-                        .filter(|e| e.site == s)
-                        .map(|e| d.half_edges[e.twin].site)
-                        .collect();
-                }
-            }
-            for &t in &neighbours {
-                if poly.is_empty() {
+                if h == start || poly.len() > d.half_edges.len() {
                     break;
                 }
-                poly = cut(&poly, d.sites[s], d.sites[t]);
             }
-            poly
-        })
-        .collect()
+            if h == start && poly.len() >= 3 {
+                return poly;
+            }
+        }
+        // Otherwise: the region cut by the bisector half-planes of the neighbours.
+        let mut poly = ring.clone();
+        let mut h = d.site_half_edge[s];
+        let mut neighbours: Vec<usize> = Vec::new();
+        if let Some(start) = h {
+            // Neighbours along the chain from `start`; a strip (collinear sites) or a
+            // cell with a second chain needs the full list.
+            let mut count = 0;
+            while let Some(x) = h {
+                neighbours.push(d.half_edges[d.half_edges[x].twin].site);
+                count += 1;
+                h = d.half_edges[x].next;
+                if h == Some(start) || count > d.half_edges.len() {
+                    break;
+                }
+            }
+            if h.is_none() && d.vertices.is_empty() {
+                neighbours = d
+                    .half_edges
+                    .iter()
+                    .filter(|e| e.site == s)
+                    .map(|e| d.half_edges[e.twin].site)
+                    .collect();
+            }
+        }
+        for &t in &neighbours {
+            if poly.is_empty() {
+                break;
+            }
+            poly = cut(&poly, d.sites[s], d.sites[t]);
+        }
+        poly
+    };
+    // Visit the cells in the order of their first half-edge (which follows the diagram's
+    // memory layout) rather than in site order (the input order, at random in memory).
+    let mut order: Vec<(usize, usize)> = d
+        .site_half_edge
+        .iter()
+        .enumerate()
+        .map(|(s, h)| (h.unwrap_or(usize::MAX), s))
+        .collect();
+    order.sort_unstable();
+    let mut cells = vec![Vec::new(); d.sites.len()];
+    for (_, s) in order {
+        cells[s] = one(s);
+    }
+    cells
 }

@@ -6,7 +6,8 @@
 //! centres of its two triangles, a ray for a hull edge. The triangulation comes from
 //! [`crate::delaunay::delaunay`] (spatial sort, walking location, exact flips).
 //!
-//! O(n log n) in all (the triangulation), O(n) for the conversion.
+//! O(n log n) in all (the triangulation), O(n) for the conversion, which goes through the
+//! compact [`VoronoiCells`] (one pass, grouped by cell).
 //!
 //! ## Degenerate input
 //!
@@ -22,12 +23,23 @@
 //!   separated by parallel edges without vertices.
 //! - Fewer than two distinct sites: no edges.
 
-use super::diagram::{HalfEdge, Vertex, VoronoiDiagram};
+#[cfg(test)]
+use super::cells::cocircular;
+use super::cells::VoronoiCells;
+use super::diagram::VoronoiDiagram;
+#[cfg(test)]
+use super::diagram::{HalfEdge, Vertex};
+#[cfg(test)]
 use super::predicates::circumcentre;
-use crate::delaunay::{delaunay, Triangulation, NO_NEIGHBOR};
-use crate::kernel::{compare_xy, incircle, CircleSide, Point2};
+#[cfg(test)]
+use crate::delaunay::NO_NEIGHBOR;
+use crate::delaunay::{delaunay, Triangulation};
+#[cfg(test)]
+use crate::kernel::compare_xy;
+use crate::kernel::Point2;
 use crate::Result;
 
+#[cfg(test)]
 const NIL: usize = usize::MAX;
 
 /// The Voronoi diagram of `points` as the dual of their Delaunay triangulation.
@@ -63,6 +75,14 @@ pub fn dual_voronoi(points: &[Point2]) -> Result<VoronoiDiagram> {
 /// otherwise the result is a well-formed structure of circumcentres but not a Voronoi
 /// diagram (and [`super::verify_voronoi`] says so).
 pub fn from_triangulation(t: &Triangulation) -> VoronoiDiagram {
+    VoronoiCells::from_triangulation(t).to_diagram()
+}
+
+/// The former conversion (triangle sides to half-edges, then `next` links by turning
+/// around each site), kept as an independent reference for the tests of
+/// [`VoronoiCells`].
+#[cfg(test)]
+pub(crate) fn reference_from_triangulation(t: &Triangulation) -> VoronoiDiagram {
     let sites = t.vertices().to_vec();
     let input_to_site: Vec<usize> = t.input_to_vertex().iter().map(|&v| v as usize).collect();
     let mut site_input_index = vec![NIL; sites.len()];
@@ -86,8 +106,10 @@ pub fn from_triangulation(t: &Triangulation) -> VoronoiDiagram {
     }
 }
 
+#[cfg(test)]
 type Parts = (Vec<Vertex>, Vec<HalfEdge>, Vec<Option<usize>>);
 
+#[cfg(test)]
 /// Collinear (or fewer than two) sites: parallel bisectors between neighbours along the
 /// line, no vertices.
 fn collinear(sites: &[Point2]) -> Parts {
@@ -115,6 +137,7 @@ fn collinear(sites: &[Point2]) -> Parts {
 
 /// The conversion state: triangles, their groups (one per Voronoi vertex), and for every
 /// triangle side `3t + i` (the edge opposite corner `i`) its Voronoi half-edge.
+#[cfg(test)]
 struct Dual<'a> {
     t: &'a Triangulation,
     /// Voronoi vertex of each triangle.
@@ -123,6 +146,7 @@ struct Dual<'a> {
     side: Vec<usize>,
 }
 
+#[cfg(test)]
 fn find(parent: &mut [u32], mut x: u32) -> u32 {
     while parent[x as usize] != x {
         let p = parent[parent[x as usize] as usize];
@@ -132,6 +156,7 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
     x
 }
 
+#[cfg(test)]
 impl<'a> Dual<'a> {
     fn new(t: &'a Triangulation) -> Self {
         Dual {
@@ -293,33 +318,7 @@ impl<'a> Dual<'a> {
     }
 }
 
-/// Are `a, b, c, d` exactly on one circle? A floating-point filter settles the common
-/// case (clearly not cocircular) with Shewchuk's error bound for the in-circle determinant;
-/// otherwise the exact in-circle test decides.
-#[inline]
-fn cocircular(a: Point2, b: Point2, c: Point2, d: Point2) -> bool {
-    let (adx, ady) = (a.x - d.x, a.y - d.y);
-    let (bdx, bdy) = (b.x - d.x, b.y - d.y);
-    let (cdx, cdy) = (c.x - d.x, c.y - d.y);
-    let (bdxcdy, cdxbdy) = (bdx * cdy, cdx * bdy);
-    let (cdxady, adxcdy) = (cdx * ady, adx * cdy);
-    let (adxbdy, bdxady) = (adx * bdy, bdx * ady);
-    let alift = adx * adx + ady * ady;
-    let blift = bdx * bdx + bdy * bdy;
-    let clift = cdx * cdx + cdy * cdy;
-    let det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-    let permanent = (bdxcdy.abs() + cdxbdy.abs()) * alift
-        + (cdxady.abs() + adxcdy.abs()) * blift
-        + (adxbdy.abs() + bdxady.abs()) * clift;
-    // (10 + 96ε)ε for ε = 2⁻⁵³, plus an absolute term covering underflow; only used
-    // when nothing overflowed.
-    const BOUND: f64 = (10.0 + 96.0 * f64::EPSILON / 2.0) * (f64::EPSILON / 2.0);
-    if det.is_finite() && permanent.is_finite() && det.abs() > BOUND * permanent + 1e-300 {
-        return false;
-    }
-    incircle(a, b, c, d) == CircleSide::OnCircle
-}
-
+#[cfg(test)]
 fn edge(origin: Option<usize>, twin: usize, site: usize) -> HalfEdge {
     HalfEdge {
         origin,
@@ -327,30 +326,5 @@ fn edge(origin: Option<usize>, twin: usize, site: usize) -> HalfEdge {
         next: None,
         prev: None,
         site,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The filtered test agrees with the exact in-circle test on exactly cocircular points,
-    /// points one ulp off the circle, huge and tiny scales.
-    #[test]
-    fn cocircular_filter_agrees_with_incircle() {
-        let next = |v: f64| f64::from_bits(v.to_bits() + 1);
-        let base = [(5.0, 0.0), (0.0, 5.0), (-3.0, 4.0), (4.0, -3.0)];
-        for scale in [1.0, 1e-150, 1e150, 3.0e-300, 1e300] {
-            let p: Vec<Point2> = base
-                .iter()
-                .map(|&(x, y)| Point2::new(x * scale, y * scale))
-                .collect();
-            let mut off = p.clone();
-            off[3] = Point2::new(next(off[3].x), off[3].y);
-            for q in [&p, &off] {
-                let want = incircle(q[0], q[1], q[2], q[3]) == CircleSide::OnCircle;
-                assert_eq!(cocircular(q[0], q[1], q[2], q[3]), want, "{q:?}");
-            }
-        }
     }
 }

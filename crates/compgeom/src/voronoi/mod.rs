@@ -4,6 +4,7 @@
 //! |---|---|---|
 //! | [`voronoi_diagram`] (default), [`dual_voronoi`] | the dual of the Delaunay triangulation ([`crate::delaunay::delaunay`]); cocircular triangles merged exactly | O(n log n) |
 //! | [`fortune_voronoi`], [`VoronoiAlgorithm::Fortune`] | VORONOIDIAGRAM (§7.2), Fortune's sweep: beach line in a balanced tree of arcs, site and circle events, false-alarm removal | O(n log n) |
+//! | [`voronoi_cells`], [`VoronoiCells`] | the same dual in a compact form grouped by cell (8-byte edges, offsets per cell), with [`VoronoiCells::clip`] cutting only the cells that reach the region's boundary; the fastest way to clipped cells | O(n log n) |
 //! | [`clip_cells`] | cells in input order clipped to a rectangle or convex polygon (the box of §7.2) | O(n + m·h) |
 //! | [`clip_cells_to_polygon`] | cells clipped to any polygon set (non-convex, holes), one [`crate::MultiPolygon`] per cell | O(n + m) + a boolean per boundary cell |
 //! | [`farthest_point_voronoi`] | farthest-point diagram (§7.4 notes): hull, randomized incremental farthest-point Delaunay, dual | O(n log n) |
@@ -36,6 +37,7 @@
 //! (parallel edges, no vertices), a single site (no edges), no sites.
 
 mod beach_line;
+mod cells;
 pub mod clip;
 mod clip_polygon;
 mod diagram;
@@ -47,6 +49,7 @@ pub mod predicates;
 mod snapshot;
 mod verify;
 
+pub use cells::{voronoi_cells, CellEdge, VoronoiCells};
 pub use clip::{clip_cells, ClipRegion};
 pub use clip_polygon::{clip_cells_to_polygon, verify_polygon_cells};
 pub use diagram::{HalfEdge, Vertex, VoronoiDiagram};

@@ -341,9 +341,23 @@ impl CircleKey {
 ///
 /// The offsets from `a` are scaled by a power of two to magnitude about 1 first (exact), so
 /// that squares neither overflow for huge coordinates nor underflow for tiny ones.
+#[inline]
 pub(crate) fn circumcentre(a: Point2, b: Point2, c: Point2) -> Point2 {
     let (bx, by) = (b.x - a.x, b.y - a.y);
     let (cx, cy) = (c.x - a.x, c.y - a.y);
+    // Offsets that are zero or between 2⁻¹⁰⁰ and 2¹⁰⁰ in magnitude: no operation below
+    // underflows or overflows (products ≥ 2⁻²⁰⁰, nonzero differences of them ≥ 2⁻²⁵²,
+    // quotients within 2^±560), so scaling by a power of two would change nothing and
+    // is skipped — the result is bit for bit the same.
+    let ok =
+        |v: f64| v == 0.0 || (v.abs() >= 7.888609052210118e-31 && v.abs() <= 1.2676506002282294e30);
+    if ok(bx) && ok(by) && ok(cx) && ok(cy) {
+        let b2 = bx * bx + by * by;
+        let c2 = cx * cx + cy * cy;
+        let d = 2.0 * (bx * cy - by * cx);
+        let (ux, uy) = ((cy * b2 - by * c2) / d, (bx * c2 - cx * b2) / d);
+        return Point2::new(a.x + ux, a.y + uy);
+    }
     let m = bx.abs().max(by.abs()).max(cx.abs()).max(cy.abs());
     let e = if m > 0.0 && m.is_finite() {
         m.log2().floor() as i32
