@@ -11,23 +11,24 @@
 //! same set. Answers are compared once, outside the clock.
 //!
 //! Measured (full size, release, 2-core machine shared with other jobs, load average
-//! about 4, so absolute times are inflated; ratios come from one run):
+//! 4 to 5, so absolute times are inflated; ratios come from one run):
 //!
 //! | structure | build ms | bytes/point | report | count | 10-NN |
 //! |---|---|---|---|---|---|
-//! | compgeom KdTree | 209 | 24 | 0.32 M/s | 0.47 M/s | 0.41 M/s |
-//! | compgeom RangeTree | 583 | 200 | 0.12 M/s | 0.21 M/s | — |
-//! | compgeom LayeredRangeTree | 393 | 204 | 0.30 M/s | 0.36 M/s | — |
-//! | kiddo ImmutableKdTree | 152 | 21 | — | — | 0.46 M/s |
-//! | kiddo KdTree (Chebyshev) | 187 | 50 | 0.17 M/s | 0.17 M/s | — |
-//! | rstar RTree | 214 | 72 | 0.13 M/s | 0.14 M/s | 0.28 M/s |
+//! | compgeom KdTree | 139 | 24.7 | 0.35 M/s | 0.66 M/s | 0.47 M/s |
+//! | compgeom RangeTree | 703 | 200 | 0.08 M/s | 0.12 M/s | — |
+//! | compgeom LayeredRangeTree | 951 | 204 | 0.16 M/s | 0.19 M/s | — |
+//! | kiddo ImmutableKdTree | 248 | 20.8 | — | — | 0.28 M/s |
+//! | kiddo KdTree (Chebyshev) | 318 | 50 | 0.10 M/s | 0.11 M/s | — |
+//! | rstar RTree | 306 | 72 | 0.10 M/s | 0.12 M/s | 0.19 M/s |
 //!
 //! Under such load, times taken a minute apart swing by ±40%, so the kd-tree's build and
-//! 10-NN are also timed against kiddo in alternating rounds (median ratio): build 0.55,
-//! 10-NN 0.93 in the run above (the build uses both cores; kiddo's is sequential).
+//! 10-NN are also timed against kiddo in alternating rounds (median ratio): build 0.56,
+//! 10-NN 0.96 in the run above (wall clock; the same comparison in thread CPU time gives
+//! 0.81 to 0.88; the build uses both cores, kiddo's is sequential).
 //!
-//! Windowing, 1,000,000 segments, 100,000 windows: compgeom SegmentWindow 1.7 s build,
-//! 191 bytes/segment, 0.03 M/s; rstar + exact filter 0.9 s, 72 bytes/segment, 0.07 M/s.
+//! Windowing, 1,000,000 segments, 100,000 windows: compgeom SegmentWindow 5.3 s build,
+//! 666 bytes/segment, 0.03 M/s; rstar + exact filter 1.8 s, 72 bytes/segment, 0.04 M/s.
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::range::{KdTree, LayeredRangeTree, RangeTree};

@@ -297,6 +297,25 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Trees several levels deep (split values matter) on small integer grids: many
+    /// duplicates, equal x and equal y, and ties in distance from half-integer queries;
+    /// `k` from 0 to beyond `n`.
+    #[test]
+    fn knn_on_deep_trees_with_ties(n in 0usize..600, side in 1u32..12, seed in 0u64..1000,
+                                   qs in prop::collection::vec((-4i32..28, -4i32..28), 1..6),
+                                   k in prop_oneof![Just(0usize), 1usize..12, 590usize..620]) {
+        let pts = grid_points(n, side, seed);
+        let kd = KdTree::new(&pts).unwrap();
+        for (qx, qy) in qs {
+            let q = Point2::new(qx as f64 * 0.5, qy as f64 * 0.5);
+            prop_assert_eq!(kd.nearest(q, k), brute_knn(&pts, q, k), "q {:?} k {}", q, k);
+        }
+    }
+}
+
 #[test]
 fn parallel_build_matches_brute_force() {
     // Above the parallel threshold (32768 points), with many duplicates.

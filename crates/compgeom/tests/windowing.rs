@@ -268,6 +268,28 @@ proptest! {
         let segs = non_crossing(k, cols, seed);
         check_window_structures(&segs, &windows(12, -1.0, 40.0, seed), false);
     }
+
+    /// Long sorted lists in few slabs (the searches over list keys and the exact tests
+    /// at their fringe): many stacked sloped segments, several on one line (collinear,
+    /// overlapping or duplicated), windows with edges on the segments' coordinates.
+    #[test]
+    fn windowing_on_stacked_segments_matches_brute_force(
+        raw in prop::collection::vec((0i32..40, 0i32..4, 0i32..4), 0..150),
+        ws in prop::collection::vec((-4i32..20, -8i32..170, 0i32..12, 0i32..40), 1..10),
+    ) {
+        // Row r is the line y = r + slope * x, slope in {-1/8, 0, 1/8}: exact, and rows
+        // never meet for x in [0, 3].
+        let line = |r: i32, x: i32| p(x as f64, r as f64 + ((r % 3) - 1) as f64 * 0.125 * x as f64);
+        let segs: Vec<Segment2> = raw
+            .iter()
+            .map(|&(r, a, b)| Segment2::new(line(r, a), line(r, b)))
+            .collect();
+        let ws: Vec<Bbox2> = ws
+            .iter()
+            .map(|&(x, y, w, h)| win(x as f64 * 0.25, y as f64 * 0.25, (x + w) as f64 * 0.25, (y + h) as f64 * 0.25))
+            .collect();
+        check_window_structures(&segs, &ws, false);
+    }
 }
 
 #[test]

@@ -73,12 +73,40 @@ pub fn compare_distance_to_radius(q: Point2, a: Point2, r: f64) -> Ordering {
     })
 }
 
+/// Bounds `(lo, hi)` on the exact squared distance whose rounded value [`dist2`] gave `d2`.
+/// Finite: the relative bound plus an absolute term for underflow. Infinite (an operation
+/// overflowed): the exact value is still at least about `f64::MAX`.
+#[inline]
+pub(crate) fn dist2_bounds(d2: f64) -> (f64, f64) {
+    if d2.is_finite() {
+        (d2 * (1.0 - EPS) - TINY, d2 * (1.0 + EPS) + TINY)
+    } else {
+        (f64::MAX * (1.0 - EPS), f64::INFINITY)
+    }
+}
+
+/// A bound on rounded squared distances (from [`dist2`]) such that a point whose rounded
+/// value exceeds it is farther, exactly, than anything whose upper bound
+/// ([`dist2_bounds`]) is `hi`: its lower bound exceeds `hi`.
+#[inline]
+pub(crate) fn prune_bound(hi: f64) -> f64 {
+    (hi + TINY) * (1.0 + 3.0 * EPS)
+}
+
 /// A lower bound of the squared distance from `q` to the closed box
 /// `[minx, maxx] x [miny, maxy]`, safe under rounding (for pruning).
 #[inline]
 pub(crate) fn box_dist2_lower(q: Point2, minx: f64, miny: f64, maxx: f64, maxy: f64) -> f64 {
     let dx = (minx - q.x).max(q.x - maxx).max(0.0);
     let dy = (miny - q.y).max(q.y - maxy).max(0.0);
+    dist2_lower(dx, dy)
+}
+
+/// A lower bound of `dx^2 + dy^2`, safe under rounding, where `dx` and `dy` are rounded
+/// differences of coordinates (each within half an ulp of the exact difference, since
+/// rounding is monotone and the exact difference is what it rounds).
+#[inline]
+pub(crate) fn dist2_lower(dx: f64, dy: f64) -> f64 {
     (dx * dx + dy * dy) * (1.0 - 4.0 * EPS) - 4.0 * TINY
 }
 

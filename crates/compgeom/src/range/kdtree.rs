@@ -14,16 +14,21 @@
 //! decision compares input coordinates with query coordinates, which is exact.
 //! [`KdTree::nearest`] and [`KdTree::within_radius`] compare squared distances exactly
 //! (floating-point filter, exact rational fallback); ties in distance are broken by the
-//! smaller input index, so answers are deterministic. k-NN keeps the `k` best in a short
-//! sorted array; a point or subtree is skipped when its rounded (lower-bounded) distance
-//! exceeds the worst kept one's by more than the rounding error, so only near-ties reach
-//! the exact comparison.
+//! smaller input index, so answers are deterministic. k-NN descends as Arya and Mount do:
+//! nearer child first, the farther one only if the query's distance to its cell (kept per
+//! axis from the split values, a compact array that stays in cache) can still beat the
+//! worst of the `k` best, which live in a short sorted array (on the stack for small `k`).
+//! Each candidate carries bounds on its exact squared distance derived from the rounded
+//! one; a point or subtree is skipped only when its bound exceeds the worst kept one's, so
+//! only near-ties reach the exact comparison.
 //!
-//! Memory: 20 bytes per point plus a 32-byte box per node (about `2n / LEAF_SIZE` nodes).
+//! Memory: 20 bytes per point plus a 32-byte box and an 8-byte split value per node (about
+//! `2n / LEAF_SIZE` nodes).
 
 use super::composite::{check_points, cmp_composite_x, cmp_composite_y, PARALLEL};
 use super::distance::{
-    box_dist2_lower, compare_distance, compare_distance_to_radius, dist2, filtered,
+    box_dist2_lower, compare_distance, compare_distance_to_radius, dist2, dist2_bounds,
+    dist2_lower, prune_bound,
 };
 use crate::kernel::{Bbox2, Point2};
 use crate::Result;
@@ -50,6 +55,10 @@ pub struct KdTree {
     ids: Vec<u32>,
     /// Bounding box of each node, heap-indexed (children of `k` are `2k+1`, `2k+2`).
     boxes: Vec<Bbox2>,
+    /// The split value of each internal node, heap-indexed like `boxes`: the coordinate
+    /// (x at even depths, y at odd) of the median, the least of the right half's. A
+    /// compact copy (8 bytes a node, small enough to stay in cache) for k-NN descents.
+    splits: Vec<f64>,
     /// The depth of every leaf (all leaves lie at this depth or one above).
     depth: u32,
 }
@@ -105,13 +114,15 @@ impl KdTree {
         let pts: Vec<Point2> = items.iter().map(|e| e.0).collect();
         let ids: Vec<u32> = items.iter().map(|e| e.1).collect();
         let mut boxes = vec![Bbox2::EMPTY; (1usize << (depth + 1)) - 1];
+        let mut splits = vec![0.0; (1usize << depth) - 1];
         if n > 0 {
-            fill_boxes(&pts, &mut boxes, Self::root(n), depth);
+            fill_boxes(&pts, &mut boxes, &mut splits, Self::root(n), depth);
         }
         Ok(KdTree {
             pts,
             ids,
             boxes,
+            splits,
             depth,
         })
     }
@@ -137,7 +148,10 @@ impl KdTree {
 
     /// Approximate heap memory in bytes.
     pub fn memory_bytes(&self) -> usize {
-        self.pts.capacity() * 16 + self.ids.capacity() * 4 + self.boxes.capacity() * 32
+        self.pts.capacity() * 16
+            + self.ids.capacity() * 4
+            + self.boxes.capacity() * 32
+            + self.splits.capacity() * 8
     }
 
     /// The points in the closed rectangle, as an iterator of input indices in tree order
@@ -222,45 +236,56 @@ impl KdTree {
         if k == 0 || self.is_empty() || !q.is_finite() {
             return Vec::new();
         }
+        let k = k.min(self.len());
+        let mut inline = [Candidate::NONE; INLINE_K];
+        let mut heap = Vec::new();
+        let items = if k <= INLINE_K {
+            &mut inline[..k]
+        } else {
+            heap.resize(k, Candidate::NONE);
+            &mut heap[..]
+        };
         let mut best = Best {
             q,
-            k,
-            items: Vec::with_capacity(k.min(self.len()) + 1),
+            ids: &self.ids,
+            items,
+            len: 0,
             prune: f64::INFINITY,
         };
-        self.knn(Self::root(self.len()), &mut best);
-        best.items.into_iter().map(|c| c.id as usize).collect()
+        self.knn(Self::root(self.len()), [0.0; 2], &mut best);
+        best.items[..best.len]
+            .iter()
+            .map(|c| self.ids[c.j as usize] as usize)
+            .collect()
     }
 
-    fn knn(&self, node: Node, best: &mut Best) {
+    /// The descent of Arya and Mount: the child on the query's side of the split first,
+    /// then the other one if the query's distance to its cell can still beat the worst kept
+    /// point. `off` holds the query's per-axis distances to the current cell (the cell is
+    /// bounded by the ancestors' split lines: left points have coordinate at most the split
+    /// value, right points at least), so the bound costs a subtraction and no memory beyond
+    /// the compact split array.
+    fn knn(&self, node: Node, off: [f64; 2], best: &mut Best) {
         if node.depth == self.depth || (node.hi - node.lo) as usize <= Self::LEAF_SIZE {
             for j in node.lo as usize..node.hi as usize {
                 let p = self.pts[j];
                 let d2 = dist2(p, best.q);
                 // Rounded distances beyond the prune bound cannot beat the worst kept.
                 if d2 <= best.prune {
-                    best.offer(Candidate {
-                        p,
-                        d2,
-                        id: self.ids[j],
-                    });
+                    best.offer(p, d2, j as u32);
                 }
             }
             return;
         }
+        let axis = (node.depth % 2) as usize;
+        let d = [best.q.x, best.q.y][axis] - self.splits[node.k as usize];
         let (l, r) = node.children();
-        let dl = self.node_dist(best.q, l);
-        let dr = self.node_dist(best.q, r);
-        let ((first, d1), (second, d2)) = if dl <= dr {
-            ((l, dl), (r, dr))
-        } else {
-            ((r, dr), (l, dl))
-        };
-        if d1 <= best.prune {
-            self.knn(first, best);
-        }
-        if d2 <= best.prune {
-            self.knn(second, best);
+        let (near, far) = if d <= 0.0 { (l, r) } else { (r, l) };
+        self.knn(near, off, best);
+        let mut far_off = off;
+        far_off[axis] = d.abs();
+        if dist2_lower(far_off[0], far_off[1]) <= best.prune {
+            self.knn(far, far_off, best);
         }
     }
 
@@ -315,23 +340,16 @@ impl KdTree {
             return;
         }
         let (l, r) = node.children();
-        // The split value: the median point is the first point of the right half.
-        let m = self.pts[r.lo as usize];
+        let m = self.splits[node.k as usize];
         let (mut lreg, mut rreg) = (region, region);
         let seg = if node.depth % 2 == 0 {
-            lreg.max.x = m.x;
-            rreg.min.x = m.x;
-            crate::Segment2::new(
-                Point2::new(m.x, region.min.y),
-                Point2::new(m.x, region.max.y),
-            )
+            lreg.max.x = m;
+            rreg.min.x = m;
+            crate::Segment2::new(Point2::new(m, region.min.y), Point2::new(m, region.max.y))
         } else {
-            lreg.max.y = m.y;
-            rreg.min.y = m.y;
-            crate::Segment2::new(
-                Point2::new(region.min.x, m.y),
-                Point2::new(region.max.x, m.y),
-            )
+            lreg.max.y = m;
+            rreg.min.y = m;
+            crate::Segment2::new(Point2::new(region.min.x, m), Point2::new(region.max.x, m))
         };
         out.push(seg);
         self.collect_splits(l, lreg, out);
@@ -366,14 +384,27 @@ fn split(items: &mut [(Point2, u32)], depth: u32, max_depth: u32) {
     }
 }
 
-/// Bounding boxes bottom-up; returns the node's box.
-fn fill_boxes(pts: &[Point2], boxes: &mut [Bbox2], node: Node, max_depth: u32) -> Bbox2 {
+/// Bounding boxes bottom-up, and the split values of internal nodes; returns the node's box.
+fn fill_boxes(
+    pts: &[Point2],
+    boxes: &mut [Bbox2],
+    splits: &mut [f64],
+    node: Node,
+    max_depth: u32,
+) -> Bbox2 {
     let b = if node.depth == max_depth || (node.hi - node.lo) as usize <= KdTree::LEAF_SIZE {
         Bbox2::of_points(&pts[node.lo as usize..node.hi as usize])
     } else {
         let (l, r) = node.children();
-        let bl = fill_boxes(pts, boxes, l, max_depth);
-        let br = fill_boxes(pts, boxes, r, max_depth);
+        let bl = fill_boxes(pts, boxes, splits, l, max_depth);
+        let br = fill_boxes(pts, boxes, splits, r, max_depth);
+        // The median itself may have moved within the right half (the children's
+        // selections reorder it); the least coordinate of the right half is the median's.
+        splits[node.k as usize] = if node.depth % 2 == 0 {
+            br.min.x
+        } else {
+            br.min.y
+        };
         let mut b = bl;
         if !br.is_empty() {
             b.extend(br.min);
@@ -395,53 +426,82 @@ fn inside(b: &Bbox2, r: &Bbox2) -> bool {
     r.min.x <= b.min.x && b.max.x <= r.max.x && r.min.y <= b.min.y && b.max.y <= r.max.y
 }
 
-/// A k-NN candidate: a point, its rounded squared distance to the query (for the filter),
-/// its input index.
+/// A k-NN candidate: a point, bounds on its exact squared distance to the query (from the
+/// rounded one, see [`dist2_bounds`]), its position in the tree order (its input index is
+/// looked up only to break exact ties, and for the answer: fewer cache lines touched).
 #[derive(Debug, Clone, Copy)]
 struct Candidate {
     p: Point2,
-    d2: f64,
-    id: u32,
+    lo: f64,
+    hi: f64,
+    j: u32,
 }
+
+impl Candidate {
+    const NONE: Candidate = Candidate {
+        p: Point2 { x: 0.0, y: 0.0 },
+        lo: 0.0,
+        hi: 0.0,
+        j: 0,
+    };
+}
+
+/// Queries for at most this many neighbours keep their candidates on the stack.
+const INLINE_K: usize = 16;
 
 /// The `k` best candidates so far, nearest first (a short sorted array: cheaper than a heap
 /// for the small `k` of typical queries), and the prune bound they imply.
 #[derive(Debug)]
-struct Best {
+struct Best<'a> {
     q: Point2,
-    k: usize,
-    items: Vec<Candidate>,
+    /// The tree's input indices, for ties.
+    ids: &'a [u32],
+    /// Room for `k` candidates; the first `len` are kept, in order.
+    items: &'a mut [Candidate],
+    len: usize,
     /// Once `k` are kept: a bound on rounded squared distances above which nothing can beat
-    /// the worst kept (that worst one's, inflated by the rounding error); else infinity.
+    /// the worst kept (see [`prune_bound`]); else infinity.
     prune: f64,
 }
 
-impl Best {
-    /// `a` before `b`: exact distance to `q`, then input index.
+impl Best<'_> {
+    /// `a` before `b`: exact distance to `q`, then input index. The bounds decide all but
+    /// near-ties, which go to the exact comparison.
     #[inline]
     fn before(&self, a: &Candidate, b: &Candidate) -> bool {
-        filtered(a.d2, b.d2)
-            .unwrap_or_else(|| compare_distance(self.q, a.p, b.p))
-            .then(a.id.cmp(&b.id))
+        if a.hi < b.lo {
+            return true;
+        }
+        if b.hi < a.lo {
+            return false;
+        }
+        compare_distance(self.q, a.p, b.p)
+            .then_with(|| self.ids[a.j as usize].cmp(&self.ids[b.j as usize]))
             == Ordering::Less
     }
 
+    /// Keep the point `p` (tree position `j`, rounded squared distance `d2`) if it is among
+    /// the `k` best so far.
     #[inline]
-    fn offer(&mut self, c: Candidate) {
-        if self.items.len() == self.k {
-            if !self.before(&c, &self.items[self.k - 1]) {
+    fn offer(&mut self, p: Point2, d2: f64, j: u32) {
+        let (lo, hi) = dist2_bounds(d2);
+        let c = Candidate { p, lo, hi, j };
+        let k = self.items.len();
+        if self.len == k {
+            if !self.before(&c, &self.items[k - 1]) {
                 return;
             }
-            self.items.pop();
+            self.len -= 1;
         }
-        let mut at = self.items.len();
+        let mut at = self.len;
         while at > 0 && self.before(&c, &self.items[at - 1]) {
+            self.items[at] = self.items[at - 1];
             at -= 1;
         }
-        self.items.insert(at, c);
-        if self.items.len() == self.k {
-            let w = self.items[self.k - 1].d2;
-            self.prune = w * (1.0 + 4e-15) + 4e-290;
+        self.items[at] = c;
+        self.len += 1;
+        if self.len == k {
+            self.prune = prune_bound(self.items[k - 1].hi);
         }
     }
 }

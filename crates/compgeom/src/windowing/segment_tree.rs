@@ -118,7 +118,19 @@ impl Skeleton {
     /// Node `k`'s list.
     #[inline]
     pub fn list(&self, k: usize) -> &[u32] {
-        &self.items[self.starts[k] as usize..self.starts[k + 1] as usize]
+        &self.items[self.list_range(k)]
+    }
+
+    /// Where node `k`'s list lies in the flat array of all lists (for data kept alongside).
+    #[inline]
+    pub fn list_range(&self, k: usize) -> std::ops::Range<usize> {
+        self.starts[k] as usize..self.starts[k + 1] as usize
+    }
+
+    /// The flat array of all lists.
+    #[inline]
+    pub fn items(&self) -> &[u32] {
+        &self.items
     }
 
     /// Number of elementary units.

@@ -6,8 +6,12 @@
 //! segment trees (§10.3): for the left and right edges, a segment tree on the segments'
 //! x-extents whose every node keeps its segments sorted bottom to top (they all span the
 //! node's slab, and non-crossing segments are totally ordered there); a query walks one
-//! root-to-leaf path and binary-searches each node's list with exact orientation tests
-//! against the edge's ends. The bottom edge uses a second tree built with x and y
+//! root-to-leaf path and searches each node's list for the edge's ends. Each list entry
+//! carries bounds (rounded outward to `f32`) on its segment's y over the node's slab,
+//! monotone along the list: the search runs over these contiguous keys (interpolation
+//! probes guarded by bisection, so never worse than twice a binary search; galloping for
+//! the second end) and only the few entries whose bounds straddle the edge's end get the
+//! exact orientation test. The bottom edge uses a second tree built with x and y
 //! exchanged (the top edge is not needed: see [`SegmentWindow::query`]).
 //! Segments of zero extent in one direction are left out of that direction's tree: a
 //! vertical segment meeting the left edge without an endpoint inside also crosses the
@@ -22,8 +26,8 @@
 //! fraction of the storage (most of a segment's O(log n) canonical nodes lie near the
 //! leaves, which buckets replace). The endpoint part is a layered range tree with
 //! fractional cascading, O(log n + k), so the whole query is O(log² n + k); it is the
-//! largest part of the storage (about 400 bytes per segment; a kd-tree would take 48 but
-//! answer in O(√n + k)). Answers are sorted (each reported once, ascending); build O(n log² n).
+//! largest part of the storage (about 400 of the 540 bytes per segment in the benchmark;
+//! a kd-tree would take 48 but answer in O(√n + k)). Answers are sorted (each reported once, ascending); build O(n log² n).
 //!
 //! **Exactness.** Lists are sorted by the exact y at the slab's left end, then at its right
 //! end (constructed points compared via the kernel's [`compare_y_at_x`]), and the build
@@ -59,6 +63,11 @@ struct Stabber {
     /// Bucket `b` (of the open unit `2b + 1`) is `bucket_items[bucket_starts[b]..][..]`.
     bucket_starts: Vec<u32>,
     bucket_items: Vec<u32>,
+    /// Alongside each list entry (the flat array of the skeleton's lists): a lower and an
+    /// upper bound of the segment's y over the node's slab, made monotone along the list
+    /// and rounded outward to `f32` (see [`slab_keys`]: 8 bytes an entry). Queries binary-search these contiguous numbers and leave the
+    /// exact orientation tests to the few entries they cannot place.
+    keys: Vec<(f32, f32)>,
 }
 
 /// The point of `s` (with `a.x < b.x`) at `x`, inside its x-range, exactly.
@@ -189,12 +198,14 @@ impl Stabber {
         } else {
             lists.into_iter().try_for_each(work)?;
         }
+        let keys = slab_keys(&skel, &segs);
         Ok(Stabber {
             segs,
             ids,
             skel,
             bucket_starts,
             bucket_items,
+            keys,
         })
     }
 
@@ -206,19 +217,23 @@ impl Stabber {
         let (lo, hi) = (Point2::new(qx, y1), Point2::new(qx, y2));
         let seg = |i: u32| &self.segs[i as usize];
         self.skel.path(u, |k, _, _| {
-            let list = self.skel.list(k);
-            if list.is_empty() {
+            let range = self.skel.list_range(k);
+            if range.is_empty() {
                 return;
             }
-            // Below (qx, y1): the point is strictly left of (above) a → b.
-            let p1 = list.partition_point(|&i| {
+            let list = &self.skel.items()[range.clone()];
+            let keys = &self.keys[range];
+            // Segments strictly below (qx, y1) (the point strictly left of, above, a → b)
+            // form a prefix; the keys settle all but the entries whose y-range over the
+            // slab contains y1, which the exact test decides.
+            let p1 = locate(list, keys, 0, y1, |i| {
                 orient2d(seg(i).a, seg(i).b, lo) == Orientation::CounterClockwise
             });
-            // The answer is usually short: gallop from p1 rather than search the list.
-            let p2 = gallop(list, p1, |i| {
+            // Segments on or below (qx, y2): a longer prefix.
+            let p2 = locate(list, keys, p1, y2, |i| {
                 orient2d(seg(i).a, seg(i).b, hi) != Orientation::Clockwise
             });
-            for &i in list.get(p1..p2.max(p1)).unwrap_or(&[]) {
+            for &i in &list[p1..p2] {
                 out.push(self.ids[i as usize] as usize);
             }
         });
@@ -248,21 +263,130 @@ impl Stabber {
             + self.ids.capacity() * 4
             + self.skel.memory_bytes()
             + (self.bucket_starts.capacity() + self.bucket_items.capacity()) * 4
+            + self.keys.capacity() * 8
     }
 }
 
+/// The end of the prefix of `list` (at or after `from`, where it is known to hold) on which
+/// `pred` holds, `pred` being "the segment's y at the query's x is below `y`" (strictly or
+/// not). An entry whose upper key is below `y` surely satisfies it, one whose lower key is
+/// above `y` surely does not (the keys bound the y over the whole slab, hence at the
+/// query's x); only the entries in between get the exact test.
+#[inline]
+fn locate(
+    list: &[u32],
+    keys: &[(f32, f32)],
+    from: usize,
+    y: f64,
+    pred: impl Fn(u32) -> bool,
+) -> usize {
+    let a = if from == 0 {
+        search(keys, y)
+    } else {
+        gallop(keys, from, |k| (k.1 as f64) < y)
+    };
+    let b = gallop(keys, a, |k| k.0 as f64 <= y);
+    a + list[a..b].partition_point(|&i| pred(i))
+}
+
+/// The first index whose upper key is at least `y` (upper keys ascend). Each round makes
+/// one interpolation probe (the keys of a list are y-values spread over its slab, so this
+/// usually lands within a few entries) and one bisection probe (so the search stays
+/// O(log n) whatever the spread): at most twice the probes of a binary search.
+#[inline]
+fn search(keys: &[(f32, f32)], y: f64) -> usize {
+    // `keys[..lo]` are below `y`, `keys[hi..]` are not.
+    let (mut lo, mut hi) = (0usize, keys.len());
+    while hi - lo > 8 {
+        let (v0, v1) = (keys[lo].1 as f64, keys[hi - 1].1 as f64);
+        // A float-to-int cast saturates (NaN gives 0): any probe in range is valid.
+        let guess = lo + ((y - v0) / (v1 - v0) * (hi - 1 - lo) as f64) as usize;
+        let probe = guess.clamp(lo, hi - 1);
+        if (keys[probe].1 as f64) < y {
+            lo = probe + 1;
+        } else {
+            hi = probe;
+        }
+        if hi - lo <= 8 {
+            break;
+        }
+        let mid = lo + (hi - lo) / 2;
+        if (keys[mid].1 as f64) < y {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    lo + keys[lo..hi].partition_point(|k| (k.1 as f64) < y)
+}
+
 /// The first index at or after `from` where `pred` fails, `pred` holding on a prefix of
-/// `list`: O(log d) tests for an answer `d` places on.
-fn gallop(list: &[u32], from: usize, pred: impl Fn(u32) -> bool) -> usize {
+/// `keys` and at `from - 1`: O(log d) tests for an answer `d` places on.
+#[inline]
+fn gallop(keys: &[(f32, f32)], from: usize, pred: impl Fn(&(f32, f32)) -> bool) -> usize {
     let (mut lo, mut probe, mut step) = (from, from, 1);
     // `pred` holds below `lo`; `probe` is the next place tested.
-    while probe < list.len() && pred(list[probe]) {
+    while probe < keys.len() && pred(&keys[probe]) {
         lo = probe + 1;
         probe += step;
         step *= 2;
     }
-    let end = probe.min(list.len()).max(lo);
-    lo + list[lo..end].partition_point(|&i| pred(i))
+    let end = probe.min(keys.len()).max(lo);
+    lo + keys[lo..end].partition_point(pred)
+}
+
+/// The greatest `f32` at most `v` (`v` not NaN).
+fn f32_below(v: f64) -> f32 {
+    let f = v as f32;
+    if f as f64 <= v {
+        f
+    } else if f > 0.0 {
+        f32::from_bits(f.to_bits() - 1)
+    } else if f == 0.0 {
+        -f32::from_bits(1)
+    } else {
+        f32::from_bits(f.to_bits() + 1)
+    }
+}
+
+/// The least `f32` at least `v` (`v` not NaN).
+fn f32_above(v: f64) -> f32 {
+    -f32_below(-v)
+}
+
+/// The keys of every list entry (see [`Stabber::keys`]): bounds on the segment's y at the
+/// two ends of the node's slab, whose hull bounds its y anywhere in the slab. Along a list
+/// (bottom to top) the exact y-values never decrease at either end, so a running maximum
+/// of the upper bounds and a running minimum from the top of the lower bounds are still
+/// bounds, and are monotone, as binary search needs. Overflow gives infinite bounds.
+fn slab_keys(skel: &Skeleton, segs: &[Segment2]) -> Vec<(f32, f32)> {
+    let mut keys = vec![(0.0f32, 0.0f32); skel.items().len()];
+    skel.for_each_node(|k, u0, u1| {
+        let range = skel.list_range(k);
+        if range.is_empty() {
+            return;
+        }
+        let (xl, xr) = skel.slab(u0, u1);
+        let list = &skel.items()[range.clone()];
+        let keys = &mut keys[range];
+        for (key, &i) in keys.iter_mut().zip(list) {
+            let s = &segs[i as usize];
+            *key = match (approx_y(s, xl), approx_y(s, xr)) {
+                (Some((yl, el)), Some((yr, er))) => (
+                    f32_below((yl - el).min(yr - er)),
+                    f32_above((yl + el).max(yr + er)),
+                ),
+                _ => (f32::NEG_INFINITY, f32::INFINITY),
+            };
+        }
+        for j in 1..keys.len() {
+            keys[j].1 = keys[j].1.max(keys[j - 1].1);
+        }
+        for j in (0..keys.len() - 1).rev() {
+            keys[j].0 = keys[j].0.min(keys[j + 1].0);
+        }
+    });
+    keys
 }
 
 /// The buckets of the open units (unit `2b + 1` is bucket `b`): the stored segments with an
