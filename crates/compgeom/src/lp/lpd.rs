@@ -156,6 +156,7 @@ fn lp_d_with(rows: &[Vec<f64>], objective: &[f64], seed: u64, fast: bool) -> Res
             .iter()
             .map(|v| Q::new(v.clone(), cert.w.clone()))
             .collect();
+        FAST_HITS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         return Ok(optimal(&x, &c_q, cert.tight.iter().map(|&k| order[k])));
     }
     let irows: Vec<IRow> = order
@@ -198,6 +199,16 @@ fn optimal(x: &[Q], c: &[Q], tight: impl Iterator<Item = usize>) -> LpSolution {
         value: to_f64(&value),
         constraints,
     }
+}
+
+/// Answers of [`lp_d`] (all threads) given by a certified fast-path basis.
+static FAST_HITS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// How many [`lp_d`] answers so far came from the certified `f64` fast path. For tests and
+/// benchmarks.
+#[doc(hidden)]
+pub fn lp_d_fast_hits() -> u64 {
+    FAST_HITS.load(std::sync::atomic::Ordering::Relaxed)
 }
 
 /// The lexicographic objectives: `c`, then minimize `x_1`, `x_2`, ... (the book's rule).

@@ -28,8 +28,10 @@
 //! Coordinates are reported as the nearest `f64` of the exact value.
 //!
 //! Parallel, identical and redundant constraints are ordinary input. A constraint with a
-//! zero normal (`0·x + 0·y <= c`) is always true when `c >= 0` and ignored, and makes the
-//! problem infeasible when `c < 0`. Non-finite numbers are rejected with
+//! **zero normal** (`0·x <= c`) is accepted, the same way by [`lp2d`], [`lp_d`] and the
+//! half-plane intersections: when `c >= 0` it is always true and ignored (never reported
+//! as tight or bounding); when `c < 0` it is always false, so the answer is infeasible
+//! (`Infeasible { certificate: [that constraint] }`, or the empty region). Non-finite numbers are rejected with
 //! [`Error::NonFinite`] naming the constraint.
 
 mod casting;
@@ -49,7 +51,7 @@ pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, intersect_halfplanes_incremental, Region, RegionKind};
 pub use halfplanes_dc::{intersect_halfplanes_dc, intersect_halfplanes_dc_leaf};
 pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
-pub use lpd::{lp_d, lp_d_exact, LpSolution};
+pub use lpd::{lp_d, lp_d_exact, lp_d_fast_hits, LpSolution};
 pub use read::{read_constraints, read_halfplanes};
 pub use verify::{verify_lp2d, verify_region};
 
