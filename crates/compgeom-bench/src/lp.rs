@@ -383,9 +383,11 @@ fn lpd_part(quick: bool) -> Result<(), String> {
     let sizes: &[usize] = if quick {
         &[1_000, 10_000]
     } else {
-        &[10_000, 100_000]
+        &[1_000, 10_000, 100_000]
     };
-    println!("lp_d, d = 3: ms (best of 3)");
+    println!(
+        "lp_d, d = 3: ms (best of 3); exact = the exact integer path alone (no f64 fast path)"
+    );
     let mut prev: Option<f64> = None;
     for &n in sizes {
         let mut r = Rng::new(3);
@@ -397,9 +399,13 @@ fn lpd_part(quick: bool) -> Result<(), String> {
             })
             .collect();
         let c = [0.2, -0.5, 0.7];
-        compgeom::lp::lp_d(&rows, &c, 0).map_err(|e| e.to_string())?;
+        let r = compgeom::lp::lp_d(&rows, &c, 0).map_err(|e| e.to_string())?;
+        if compgeom::lp::lp_d_exact(&rows, &c, 0).map_err(|e| e.to_string())? != r {
+            return Err("lp_d fast and exact paths disagree".into());
+        }
         let t = best_of(3, || compgeom::lp::lp_d(&rows, &c, 0));
-        print!("{:>9} compgeom {:>10.2}", n, ms(t));
+        let te = best_of(1, || compgeom::lp::lp_d_exact(&rows, &c, 0));
+        print!("{:>9} compgeom {:>10.2}  exact {:>10.2}", n, ms(t), ms(te));
         match prev {
             Some(p) => println!("  growth x{:.1} for 10x", ms(t) / p),
             None => println!(),
@@ -411,7 +417,11 @@ fn lpd_part(quick: bool) -> Result<(), String> {
 
 /// Casting a prism over a regular k-gon (k + 2 facets; castable from both caps).
 fn cast_part(quick: bool) -> Result<(), String> {
-    let sizes: &[usize] = if quick { &[100, 300] } else { &[300, 1_000] };
+    let sizes: &[usize] = if quick {
+        &[100, 300]
+    } else {
+        &[100, 300, 1_000]
+    };
     println!("castability of a k-gon prism: ms (best of 1)");
     let mut prev: Option<f64> = None;
     for &k in sizes {

@@ -6,9 +6,11 @@
 //! facet and points out of the top facet: `n_f·d <= 0` for all `f != t` and `n_t·d > 0`.
 //! That is a linear feasibility problem in `d` (the book fixes the top facet's direction
 //! and intersects half-planes in two dimensions; we solve the equivalent homogeneous
-//! program in three). Per top facet the program is solved exactly by the randomized LP of
-//! §4.5 over the facets' exact rational normals, so the whole run takes O(n²) expected time
-//! (Theorem 4.2), with exact rational arithmetic (a large constant).
+//! program in three). Per top facet the program is solved by the randomized LP of §4.5
+//! over the facets' exact normals (integers): first in `f64` with the optimal basis
+//! certified exactly, else exactly on integers — so the whole run takes O(n²) expected
+//! time (Theorem 4.2) and every decision is exact. A unit box `|d_j| <= 1` keeps both
+//! programs bounded.
 //!
 //! The reported direction is an interior direction of the feasible cone (strictly away from
 //! every ordinary facet) when the cone has interior, found by maximizing a common margin;
@@ -23,10 +25,13 @@
 //! volume is an error. Self-intersections and vertices where two sheets touch are not
 //! detected.
 
+use super::certify::{common_denominator, f64_row, irow_from_q, IRow};
 use super::exact::{rat, to_f64};
-use super::lpd::{run_exact, Exact};
+use super::lpd::{run_fast_then_exact, Exact};
+use super::Shuffler;
 use crate::io::Polyhedron;
 use crate::{Error, Result};
+use num_bigint::BigInt;
 use num_rational::BigRational as Q;
 use num_traits::{Signed, Zero};
 use std::collections::HashMap;
@@ -173,9 +178,10 @@ pub(crate) fn check_closed_manifold(p: &Polyhedron) -> Result<Vec<[Q; 3]>> {
 /// ```
 pub fn castability(p: &Polyhedron) -> Result<Castability> {
     let normals = check_closed_manifold(p)?;
+    let facets: Vec<Facet> = normals.iter().map(Facet::new).collect();
     let mut top_facets = Vec::new();
     for t in 0..normals.len() {
-        if let Some((d, interior)) = direction_for(&normals, t) {
+        if let Some((d, interior)) = direction_for(&facets, t) {
             let len = d.iter().map(|x| to_f64(x).powi(2)).sum::<f64>().sqrt();
             let unit = [
                 to_f64(&d[0]) / len,
@@ -195,57 +201,166 @@ pub fn castability(p: &Polyhedron) -> Result<Castability> {
     })
 }
 
-/// A removal direction for top facet `t`: `(d, interior)`, or `None`.
-fn direction_for(normals: &[[Q; 3]], t: usize) -> Option<(V3, bool)> {
-    let one = Q::from_integer(1.into());
-    let nt = &normals[t];
-    // First: maximize a margin s with n_f·d + s <= 0, s - n_t·d <= 0, n_t·d <= 1, s <= 1.
-    let mut rows: Vec<(Vec<Q>, Q, usize)> = Vec::with_capacity(normals.len() + 2);
-    for (f, n) in normals.iter().enumerate() {
-        if f != t {
-            rows.push((
-                vec![n[0].clone(), n[1].clone(), n[2].clone(), one.clone()],
-                Q::zero(),
-                f,
-            ));
+/// A facet's outward normal `n = N / L` in integers (`L > 0`), with `f64` rows ready for
+/// the two programs below: `[N, L, 0]` (margin rows) and `[N, 0]` (plain rows).
+struct Facet {
+    n: [BigInt; 3],
+    l: BigInt,
+    margin: Vec<f64>,
+    plain: Vec<f64>,
+}
+
+impl Facet {
+    fn new(n: &[Q; 3]) -> Facet {
+        let l = common_denominator(n.iter());
+        let r = irow_from_q(n, &Q::zero());
+        let [n0, n1, n2]: [BigInt; 3] = [r.a[0].clone(), r.a[1].clone(), r.a[2].clone()];
+        let margin = f64_row(&IRow {
+            a: vec![n0.clone(), n1.clone(), n2.clone(), l.clone()],
+            b: BigInt::zero(),
+        });
+        let plain = f64_row(&IRow {
+            a: vec![n0.clone(), n1.clone(), n2.clone()],
+            b: BigInt::zero(),
+        });
+        Facet {
+            n: [n0, n1, n2],
+            l,
+            margin,
+            plain,
         }
     }
-    let k = normals.len();
-    rows.push((
-        vec![-nt[0].clone(), -nt[1].clone(), -nt[2].clone(), one.clone()],
-        Q::zero(),
-        k,
-    ));
-    rows.push((
-        vec![nt[0].clone(), nt[1].clone(), nt[2].clone(), Q::zero()],
-        one.clone(),
-        k + 1,
-    ));
-    rows.push((
-        vec![Q::zero(), Q::zero(), Q::zero(), one.clone()],
-        one.clone(),
-        k + 2,
-    ));
-    let objective = [Q::zero(), Q::zero(), Q::zero(), one.clone()];
-    if let Exact::Solved { x, .. } = run_exact(rows, &objective, t as u64) {
+}
+
+/// A removal direction for top facet `t`: `(d, interior)`, or `None`.
+fn direction_for(facets: &[Facet], t: usize) -> Option<(V3, bool)> {
+    let z = BigInt::zero;
+    let ft = &facets[t];
+    let neg_t = Facet {
+        n: [-&ft.n[0], -&ft.n[1], -&ft.n[2]],
+        l: ft.l.clone(),
+        margin: Vec::new(),
+        plain: Vec::new(),
+    };
+    // First: maximize a margin s with n_f·d + s <= 0 (f != t), s - n_t·d <= 0,
+    // n_t·d <= 1, s <= 1 — in integers N_f·d + L_f·s <= 0 and so on.
+    let k = facets.len();
+    let mut extra = vec![
+        IRow {
+            a: vec![
+                neg_t.n[0].clone(),
+                neg_t.n[1].clone(),
+                neg_t.n[2].clone(),
+                ft.l.clone(),
+            ],
+            b: z(),
+        },
+        IRow {
+            a: vec![ft.n[0].clone(), ft.n[1].clone(), ft.n[2].clone(), z()],
+            b: ft.l.clone(),
+        },
+        IRow {
+            a: vec![z(), z(), z(), BigInt::from(1)],
+            b: BigInt::from(1),
+        },
+    ];
+    extra.extend(unit_box(4));
+    let extra_f: Vec<Vec<f64>> = extra.iter().map(f64_row).collect();
+    let margin_row = |f: usize| -> IRow {
+        if f < k {
+            let g = &facets[f];
+            IRow {
+                a: vec![g.n[0].clone(), g.n[1].clone(), g.n[2].clone(), g.l.clone()],
+                b: z(),
+            }
+        } else {
+            extra[f - k].clone()
+        }
+    };
+    let ids = shuffled((0..k + extra.len()).filter(|&f| f != t).collect(), t as u64);
+    let frows: Vec<&[f64]> = ids
+        .iter()
+        .map(|&f| {
+            if f < k {
+                facets[f].margin.as_slice()
+            } else {
+                extra_f[f - k].as_slice()
+            }
+        })
+        .collect();
+    let objective = [z(), z(), z(), BigInt::from(1)];
+    if let Exact::Solved { x, .. } =
+        run_fast_then_exact(&frows, EPS, |i| margin_row(ids[i]), &ids, &objective)
+    {
         if x[3].is_positive() {
             return Some(([x[0].clone(), x[1].clone(), x[2].clone()], true));
         }
     }
-    // No interior: maximize n_t·d with n_f·d <= 0 and n_t·d <= 1.
-    let mut rows: Vec<(Vec<Q>, Q, usize)> = normals
+    // No interior: maximize n_t·d with n_f·d <= 0 (f != t) and n_t·d <= 1.
+    let top = IRow {
+        a: ft.n.to_vec(),
+        b: ft.l.clone(),
+    };
+    let mut extra = vec![top];
+    extra.extend(unit_box(3));
+    let extra_f: Vec<Vec<f64>> = extra.iter().map(f64_row).collect();
+    let plain_row = |f: usize| -> IRow {
+        if f < k {
+            IRow {
+                a: facets[f].n.to_vec(),
+                b: z(),
+            }
+        } else {
+            extra[f - k].clone()
+        }
+    };
+    let ids = shuffled((0..k + extra.len()).filter(|&f| f != t).collect(), t as u64);
+    let frows: Vec<&[f64]> = ids
         .iter()
-        .enumerate()
-        .filter(|&(f, _)| f != t)
-        .map(|(f, n)| (n.to_vec(), Q::zero(), f))
+        .map(|&f| {
+            if f < k {
+                facets[f].plain.as_slice()
+            } else {
+                extra_f[f - k].as_slice()
+            }
+        })
         .collect();
-    rows.push((nt.to_vec(), one, k));
-    match run_exact(rows, nt, t as u64) {
-        Exact::Solved { x, .. }
-            if dot(nt, &[x[0].clone(), x[1].clone(), x[2].clone()]).is_positive() =>
-        {
-            Some(([x[0].clone(), x[1].clone(), x[2].clone()], false))
+    match run_fast_then_exact(&frows, EPS, |i| plain_row(ids[i]), &ids, &ft.n) {
+        Exact::Solved { x, .. } => {
+            let d = [x[0].clone(), x[1].clone(), x[2].clone()];
+            let nt = [
+                Q::from_integer(ft.n[0].clone()),
+                Q::from_integer(ft.n[1].clone()),
+                Q::from_integer(ft.n[2].clone()),
+            ];
+            dot(&nt, &d).is_positive().then_some((d, false))
         }
         _ => None,
     }
+}
+
+/// Entries of [`f64_row`] are within `2^-50` of the row's largest entry.
+const EPS: f64 = 1.0 / (1u64 << 50) as f64;
+
+/// `±d_j <= 1` for the first three of `k` variables: keeps both programs bounded, so their
+/// lexicographic optimum exists (and the fast path can certify it).
+fn unit_box(k: usize) -> Vec<IRow> {
+    let mut out = Vec::with_capacity(6);
+    for j in 0..3 {
+        for s in [1, -1] {
+            let mut a = vec![BigInt::zero(); k];
+            a[j] = BigInt::from(s);
+            out.push(IRow {
+                a,
+                b: BigInt::from(1),
+            });
+        }
+    }
+    out
+}
+
+/// `v` in a seeded random order.
+fn shuffled(mut v: Vec<usize>, seed: u64) -> Vec<usize> {
+    Shuffler::new(seed).shuffle(&mut v);
+    v
 }

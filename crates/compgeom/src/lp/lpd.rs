@@ -5,11 +5,23 @@
 //! lies on its hyperplane, found by a recursive `(d-1)`-dimensional program (one variable
 //! eliminated) over the earlier constraints. Expected time O(d!·n).
 //!
-//! Exactness: everything is computed in **exact rational arithmetic** (`BigRational`)
-//! — slower than the filtered two-dimensional [`lp2d`](super::lp2d) by a large constant,
-//! but never wrong. Unboundedness is handled as in two dimensions: a symbolic box
-//! `|x_j| <= M` (numbers are `u + v·M` with `M` larger than everything finite), re-created
-//! for the remaining variables at each level of the recursion.
+//! Exactness, in two passes:
+//!
+//! 1. **Fast path.** The algorithm runs in `f64` and proposes the `d` constraints that
+//!    define its optimum; that basis is then *certified exactly* (the vertex by integer
+//!    Cramer's rule, feasibility of every constraint by an `f64` filter with a rigorous
+//!    error bound and exact integers where it cannot tell, optimality by the lexicographic
+//!    dual certificate). A certified basis gives exactly the exact algorithm's answer
+//!    (the unique lexicographic optimum, same tight constraints).
+//! 2. **Exact path**, when the certificate fails (infeasible, unbounded, a box side in the
+//!    basis, or a degenerate basis the `f64` run got wrong): the same algorithm on
+//!    integers. Points are homogeneous (`X / W`) and variables are eliminated
+//!    fraction-free, so no rational normalisation happens in the inner loop and the
+//!    numbers grow with the depth of the recursion (at most `d`), not with `n`.
+//!
+//! Unboundedness is handled as in two dimensions: a symbolic box `|x_j| <= M` (numbers are
+//! `u + v·M` with `M` larger than everything finite), re-created for the remaining
+//! variables at each level of the recursion.
 //!
 //! Ties are broken lexicographically (maximize `c·x`, then minimize `x_1`, then `x_2`, …),
 //! so the answer is the **lexicographically smallest optimal point** whenever it exists
@@ -17,12 +29,14 @@
 //! smaller coordinates, another optimal point is reported: the first point of the ray the
 //! symbolic optimum moves along that satisfies every constraint.
 
+use super::certify::{certify, f64_row, ints_from_f64, irow_from_f64, Certified, IRow};
 use super::exact::{rat, to_f64};
+use super::seidel::{solve, Mq, Ring, Rows};
 use super::Shuffler;
 use crate::{Error, Result};
+use num_bigint::BigInt;
 use num_rational::BigRational as Q;
 use num_traits::{Signed, Zero};
-use std::cmp::Ordering;
 
 /// The outcome of a linear program in `d` dimensions.
 #[derive(Debug, Clone, PartialEq)]
@@ -50,173 +64,6 @@ pub enum LpSolution {
         /// containing them is infeasible.
         certificate: Vec<usize>,
     },
-}
-
-/// `c + m·M` with the symbolic `M`; ordered by `m` first.
-#[derive(Debug, Clone, PartialEq, Eq)]
-struct Mq {
-    m: Q,
-    c: Q,
-}
-
-impl Mq {
-    fn finite(c: Q) -> Mq {
-        Mq { m: Q::zero(), c }
-    }
-    fn sub(&self, o: &Mq) -> Mq {
-        Mq {
-            m: &self.m - &o.m,
-            c: &self.c - &o.c,
-        }
-    }
-    fn add(&self, o: &Mq) -> Mq {
-        Mq {
-            m: &self.m + &o.m,
-            c: &self.c + &o.c,
-        }
-    }
-    fn scale(&self, s: &Q) -> Mq {
-        Mq {
-            m: &self.m * s,
-            c: &self.c * s,
-        }
-    }
-}
-
-impl PartialOrd for Mq {
-    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
-        Some(self.cmp(o))
-    }
-}
-
-impl Ord for Mq {
-    fn cmp(&self, o: &Self) -> Ordering {
-        self.m.cmp(&o.m).then_with(|| self.c.cmp(&o.c))
-    }
-}
-
-/// `a·y <= b`; `id` is the input index, `None` for a side of the symbolic box.
-#[derive(Debug, Clone)]
-struct Con {
-    a: Vec<Q>,
-    b: Mq,
-    id: Option<usize>,
-}
-
-fn dot(a: &[Q], y: &[Mq]) -> Mq {
-    let mut s = Mq::finite(Q::zero());
-    for (aj, yj) in a.iter().zip(y) {
-        if !aj.is_zero() {
-            s = s.add(&yj.scale(aj));
-        }
-    }
-    s
-}
-
-type Cert = Vec<Option<usize>>;
-
-/// The lexicographic optimum over `cons` in `k` variables, inside the symbolic box.
-fn solve(cons: &[Con], k: usize, objs: &[Vec<Q>]) -> std::result::Result<Vec<Mq>, Cert> {
-    // The box corner that is best for the objectives: each variable to ±M by the sign of
-    // its first non-zero objective coefficient (the objectives span, so one exists).
-    let mut v: Vec<Mq> = (0..k)
-        .map(|j| {
-            let s = objs
-                .iter()
-                .map(|o| o[j].cmp(&Q::zero()))
-                .find(|&s| s != Ordering::Equal)
-                .unwrap_or(Ordering::Less);
-            let one = if s == Ordering::Greater { 1 } else { -1 };
-            Mq {
-                m: Q::from_integer(one.into()),
-                c: Q::zero(),
-            }
-        })
-        .collect();
-    for i in 0..cons.len() {
-        let h = &cons[i];
-        if dot(&h.a, &v) <= h.b {
-            continue;
-        }
-        let Some(p) = h.a.iter().position(|x| !x.is_zero()) else {
-            return Err(vec![h.id]);
-        };
-        if k == 1 {
-            let y = vec![h.b.scale(&(Q::from_integer(1.into()) / &h.a[0]))];
-            let bound = Mq {
-                m: Q::from_integer(1.into()),
-                c: Q::zero(),
-            };
-            if y[0] > bound || y[0].scale(&Q::from_integer((-1).into())) > bound {
-                return Err(vec![h.id]);
-            }
-            if let Some(g) = cons[..i].iter().find(|g| dot(&g.a, &y) > g.b) {
-                return Err(vec![h.id, g.id]);
-            }
-            v = y;
-            continue;
-        }
-        // Eliminate variable p: y_p = (b - Σ_{j≠p} a_j·y_j) / a_p.
-        let ap = h.a[p].clone();
-        let project = |g: &Con| -> Con {
-            let f = &g.a[p] / &ap;
-            let a: Vec<Q> = (0..k)
-                .filter(|&j| j != p)
-                .map(|j| &g.a[j] - &f * &h.a[j])
-                .collect();
-            Con {
-                a,
-                b: g.b.sub(&h.b.scale(&f)),
-                id: g.id,
-            }
-        };
-        let mut sub: Vec<Con> = Vec::with_capacity(i + 2);
-        for s in [1, -1] {
-            let mut a = vec![Q::zero(); k];
-            a[p] = Q::from_integer(s.into());
-            sub.push(project(&Con {
-                a,
-                b: Mq {
-                    m: Q::from_integer(1.into()),
-                    c: Q::zero(),
-                },
-                id: None,
-            }));
-        }
-        sub.extend(cons[..i].iter().map(project));
-        let sub_objs: Vec<Vec<Q>> = objs
-            .iter()
-            .map(|o| {
-                let f = &o[p] / &ap;
-                (0..k)
-                    .filter(|&j| j != p)
-                    .map(|j| &o[j] - &f * &h.a[j])
-                    .collect()
-            })
-            .collect();
-        match solve(&sub, k - 1, &sub_objs) {
-            Ok(y) => {
-                let mut full = Vec::with_capacity(k);
-                let mut rest = y.into_iter();
-                for j in 0..k {
-                    if j == p {
-                        full.push(Mq::finite(Q::zero()));
-                    } else {
-                        full.push(rest.next().unwrap_or_else(|| Mq::finite(Q::zero())));
-                    }
-                }
-                // a_p·y_p = b - Σ_{j≠p} a_j·y_j.
-                let others = dot(&h.a, &full);
-                full[p] = h.b.sub(&others).scale(&(Q::from_integer(1.into()) / &ap));
-                v = full;
-            }
-            Err(mut cert) => {
-                cert.push(h.id);
-                return Err(cert);
-            }
-        }
-    }
-    Ok(v)
 }
 
 /// Solve: maximize `objective · x` subject to every row `[a_1, …, a_d, b]` (`a·x <= b`),
@@ -253,13 +100,24 @@ fn solve(cons: &[Con], k: usize, objs: &[Vec<Q>]) -> std::result::Result<Vec<Mq>
 /// # Ok::<(), compgeom::Error>(())
 /// ```
 pub fn lp_d(rows: &[Vec<f64>], objective: &[f64], seed: u64) -> Result<LpSolution> {
+    lp_d_with(rows, objective, seed, true)
+}
+
+/// [`lp_d`] without the `f64` fast path: always the exact integer algorithm. The answers
+/// are the same (tests check it); for tests and benchmarks.
+#[doc(hidden)]
+pub fn lp_d_exact(rows: &[Vec<f64>], objective: &[f64], seed: u64) -> Result<LpSolution> {
+    lp_d_with(rows, objective, seed, false)
+}
+
+fn lp_d_with(rows: &[Vec<f64>], objective: &[f64], seed: u64, fast: bool) -> Result<LpSolution> {
     let d = objective.len();
     if d == 0 || objective.iter().any(|c| !c.is_finite()) || objective.iter().all(|&c| c == 0.0) {
         return Err(Error::InvalidInput(
             "the objective must have at least one coefficient, all finite, not all zero".into(),
         ));
     }
-    let mut cons = Vec::with_capacity(rows.len());
+    let mut kept: Vec<usize> = Vec::with_capacity(rows.len());
     for (i, r) in rows.iter().enumerate() {
         if r.len() != d + 1 {
             return Err(Error::InvalidInput(format!(
@@ -282,36 +140,153 @@ pub fn lp_d(rows: &[Vec<f64>], objective: &[f64], seed: u64) -> Result<LpSolutio
             }
             continue;
         }
-        cons.push((
-            r[..d].iter().map(|&a| rat(a)).collect::<Vec<Q>>(),
-            rat(r[d]),
-            i,
-        ));
+        kept.push(i);
     }
-    let objective: Vec<Q> = objective.iter().map(|&c| rat(c)).collect();
-    let (x, v1, grow) = match run_exact(cons.clone(), &objective, seed) {
-        Exact::Infeasible(certificate) => return Ok(LpSolution::Infeasible { certificate }),
-        Exact::Solved { x, ray, grows } => (x, ray, grows),
-    };
-    let point: Vec<f64> = x.iter().map(to_f64).collect();
-    if grow {
-        let scale = v1.iter().map(|q| q.abs()).max().unwrap_or_else(Q::zero);
-        let direction = v1.iter().map(|q| to_f64(&(q / &scale))).collect();
-        return Ok(LpSolution::Unbounded { point, direction });
+    let c_int = ints_from_f64(objective);
+    let c_q: Vec<Q> = objective.iter().map(|&c| rat(c)).collect();
+    let mut order = kept.clone();
+    Shuffler::new(seed).shuffle(&mut order);
+    // Fast path: the same algorithm in f64 proposes a basis; certified exactly or dropped.
+    if let Some(cert) = fast
+        .then(|| fast_optimum(rows, &order, objective, &c_int))
+        .flatten()
+    {
+        let x: Vec<Q> = cert
+            .x
+            .iter()
+            .map(|v| Q::new(v.clone(), cert.w.clone()))
+            .collect();
+        FAST_HITS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        return Ok(optimal(&x, &c_q, cert.tight.iter().map(|&k| order[k])));
     }
-    let c = &objective;
-    let value: Q = c.iter().zip(&x).map(|(a, b)| a * b).sum();
-    let mut constraints: Vec<usize> = cons
+    let irows: Vec<IRow> = order
         .iter()
-        .filter(|(a, b, _)| a.iter().zip(&x).map(|(a, b)| a * b).sum::<Q>() == *b)
-        .map(|(_, _, id)| *id)
+        .map(|&i| irow_from_f64(&rows[i][..d], rows[i][d]))
         .collect();
+    match run_exact(&irows, &order, &c_int) {
+        Exact::Infeasible(certificate) => Ok(LpSolution::Infeasible { certificate }),
+        Exact::Solved { x, ray, grows, hom } => {
+            let point: Vec<f64> = x.iter().map(to_f64).collect();
+            if grows {
+                let scale = ray.iter().map(|q| q.abs()).max().unwrap_or_else(Q::zero);
+                let direction = ray.iter().map(|q| to_f64(&(q / &scale))).collect();
+                return Ok(LpSolution::Unbounded { point, direction });
+            }
+            // Integer tests when the point is X / W, rational ones otherwise (rare).
+            let on = |r: &IRow| match &hom {
+                Some((xs, w)) => r.a.iter().zip(xs).map(|(a, b)| a * b).sum::<BigInt>() == &r.b * w,
+                None => {
+                    r.a.iter().zip(&x).map(|(a, b)| b * a).sum::<Q>()
+                        == Q::from_integer(r.b.clone())
+                }
+            };
+            let tight = irows
+                .iter()
+                .zip(&order)
+                .filter_map(|(r, &id)| on(r).then_some(id));
+            Ok(optimal(&x, &c_q, tight))
+        }
+    }
+}
+
+/// The `Optimal` answer at the exact point `x`, tight constraints `tight` (input ids).
+fn optimal(x: &[Q], c: &[Q], tight: impl Iterator<Item = usize>) -> LpSolution {
+    let value: Q = c.iter().zip(x).map(|(a, b)| a * b).sum();
+    let mut constraints: Vec<usize> = tight.collect();
     constraints.sort_unstable();
-    Ok(LpSolution::Optimal {
-        point,
+    LpSolution::Optimal {
+        point: x.iter().map(to_f64).collect(),
         value: to_f64(&value),
         constraints,
+    }
+}
+
+/// Answers of [`lp_d`] (all threads) given by a certified fast-path basis.
+static FAST_HITS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+
+/// How many [`lp_d`] answers so far came from the certified `f64` fast path. For tests and
+/// benchmarks.
+#[doc(hidden)]
+pub fn lp_d_fast_hits() -> u64 {
+    FAST_HITS.load(std::sync::atomic::Ordering::Relaxed)
+}
+
+/// The lexicographic objectives: `c`, then minimize `x_1`, `x_2`, ... (the book's rule).
+fn objectives<R: Ring>(c: Vec<R>) -> Vec<Vec<R>> {
+    let d = c.len();
+    let mut objs = vec![c];
+    for j in 0..d {
+        let mut t = vec![R::zero(); d];
+        t[j] = R::one().neg();
+        objs.push(t);
+    }
+    objs
+}
+
+/// Run the algorithm in `f64` over `rows[order[k]]` and certify the basis it ends on;
+/// `tight` in the answer holds positions into `order`.
+fn fast_optimum(
+    rows: &[Vec<f64>],
+    order: &[usize],
+    objective: &[f64],
+    c_int: &[BigInt],
+) -> Option<Certified> {
+    let d = objective.len();
+    let mut frows = Rows::new(d, order.len());
+    for (k, &i) in order.iter().enumerate() {
+        frows.push(
+            rows[i][..d].iter().copied(),
+            Mq::finite(rows[i][d]),
+            Some(k),
+        );
+    }
+    let v = solve(&frows, &objectives(objective.to_vec())).ok()?;
+    let basis: Vec<usize> = v.basis.iter().copied().collect::<Option<Vec<usize>>>()?;
+    let plain: Vec<&[f64]> = order.iter().map(|&i| rows[i].as_slice()).collect();
+    certify(&basis, c_int, &plain, 0.0, |k| {
+        irow_from_f64(&rows[order[k]][..d], rows[order[k]][d])
     })
+}
+
+/// The exact LP over `n` integer rows `exact(k)` (inserted in the order `k = 0, 1, …`;
+/// `ids[k]` the input index) maximizing `objective`: first the `f64` run over `frows[k]`
+/// (each within `eps` times its largest entry of a positive multiple of `exact(k)`) with
+/// a certified basis, else [`run_exact`]. The same answer either way.
+pub(crate) fn run_fast_then_exact(
+    frows: &[&[f64]],
+    eps: f64,
+    exact: impl Fn(usize) -> IRow,
+    ids: &[usize],
+    objective: &[BigInt],
+) -> Exact {
+    let d = objective.len();
+    let mut rows = Rows::new(d, frows.len());
+    for (k, r) in frows.iter().enumerate() {
+        rows.push(r[..d].iter().copied(), Mq::finite(r[d]), Some(k));
+    }
+    let c: Vec<f64> = f64_row(&IRow {
+        a: objective.to_vec(),
+        b: <BigInt as Zero>::zero(),
+    });
+    if let Ok(v) = solve(&rows, &objectives(c[..d].to_vec())) {
+        if let Some(basis) = v.basis.iter().copied().collect::<Option<Vec<usize>>>() {
+            if let Some(cert) = certify(&basis, objective, frows, eps, &exact) {
+                let x = cert
+                    .x
+                    .iter()
+                    .map(|v| Q::new(v.clone(), cert.w.clone()))
+                    .collect();
+                return Exact::Solved {
+                    x,
+                    ray: vec![Q::zero(); d],
+                    grows: false,
+                    hom: Some((cert.x, cert.w)),
+                };
+            }
+        }
+    }
+    let all: Vec<IRow> = (0..frows.len()).map(exact).collect();
+    run_exact(&all, ids, objective)
 }
 
 /// The exact outcome of [`run_exact`].
@@ -320,30 +295,24 @@ pub(crate) enum Exact {
     Infeasible(Vec<usize>),
     /// `x` feasible; `ray` the direction the symbolic optimum moves along (zero when the
     /// lexicographic optimum is finite); `grows` when the objective increases along it.
-    Solved { x: Vec<Q>, ray: Vec<Q>, grows: bool },
+    Solved {
+        x: Vec<Q>,
+        ray: Vec<Q>,
+        grows: bool,
+        /// `x` as `X / W` (`W > 0`) when `ray` is zero.
+        hom: Option<(Vec<BigInt>, BigInt)>,
+    },
 }
 
-/// Exact randomized LP over constraints `a·x <= b` (`(a, b, id)`); `x` is the
-/// lexicographically smallest optimum when it exists, else a feasible point on the ray.
-pub(crate) fn run_exact(rows: Vec<(Vec<Q>, Q, usize)>, objective: &[Q], seed: u64) -> Exact {
-    let d = objective.len();
-    let mut cons: Vec<Con> = rows
-        .into_iter()
-        .map(|(a, b, id)| Con {
-            a,
-            b: Mq::finite(b),
-            id: Some(id),
-        })
-        .collect();
-    Shuffler::new(seed).shuffle(&mut cons);
-    // Objectives: c, then minimize x_1, x_2, ... (the book's lexicographic rule).
-    let mut objs = vec![objective.to_vec()];
-    for j in 0..d {
-        let mut t = vec![Q::zero(); d];
-        t[j] = Q::from_integer((-1).into());
-        objs.push(t);
+/// Exact randomized LP over the integer constraints `rows` (inserted in this order; `ids`
+/// their input indices) maximizing `objective`: `x` is the lexicographically smallest
+/// optimum when it exists, else a feasible point on the ray.
+pub(crate) fn run_exact(rows: &[IRow], ids: &[usize], objective: &[BigInt]) -> Exact {
+    let mut cons = Rows::new(objective.len(), rows.len());
+    for (r, &id) in rows.iter().zip(ids) {
+        cons.push(r.a.iter().cloned(), Mq::finite(r.b.clone()), Some(id));
     }
-    let v = match solve(&cons, d, &objs) {
+    let v = match solve(&cons, &objectives(objective.to_vec())) {
         Ok(v) => v,
         Err(cert) => {
             let mut certificate: Vec<usize> = cert.into_iter().flatten().collect();
@@ -352,25 +321,42 @@ pub(crate) fn run_exact(rows: Vec<(Vec<Q>, Q, usize)>, objective: &[Q], seed: u6
             return Exact::Infeasible(certificate);
         }
     };
-    let v0: Vec<Q> = v.iter().map(|x| x.c.clone()).collect();
-    let v1: Vec<Q> = v.iter().map(|x| x.m.clone()).collect();
-    let grow: Q = objective.iter().zip(&v1).map(|(a, b)| a * b).sum();
-    // v0 + t·v1 is feasible for all large t: the smallest such t >= 0.
+    let w = &v.w;
+    let v1: Vec<Q> = v.x.iter().map(|x| Q::new(x.m.clone(), w.clone())).collect();
+    let grow: BigInt = objective.iter().zip(&v.x).map(|(a, b)| a * &b.m).sum();
+    if v1.iter().all(|q| q.is_zero()) {
+        let x = v.x.iter().map(|x| Q::new(x.c.clone(), w.clone())).collect();
+        let hom = Some((v.x.iter().map(|x| x.c.clone()).collect(), w.clone()));
+        return Exact::Solved {
+            x,
+            ray: v1,
+            grows: false,
+            hom,
+        };
+    }
+    // X.c / W + t·X.m / W is feasible for all large t: the smallest such t >= 0, from
+    // a·X.c - b·W + t·(a·X.m) <= 0 for each constraint with a·X.m < 0.
     let mut t = Q::zero();
-    for g in &cons {
-        let slope: Q = g.a.iter().zip(&v1).map(|(a, b)| a * b).sum();
+    for g in rows {
+        let slope: BigInt = g.a.iter().zip(&v.x).map(|(a, b)| a * &b.m).sum();
         if slope.is_negative() {
-            let at0: Q = g.a.iter().zip(&v0).map(|(a, b)| a * b).sum();
-            let need = (at0 - &g.b.c) / (-slope);
+            let at0: BigInt =
+                g.a.iter().zip(&v.x).map(|(a, b)| a * &b.c).sum::<BigInt>() - &g.b * w;
+            let need = Q::new(at0, -slope);
             if need > t {
                 t = need;
             }
         }
     }
-    let x: Vec<Q> = v0.iter().zip(&v1).map(|(a, b)| a + &t * b).collect();
+    let x: Vec<Q> =
+        v.x.iter()
+            .zip(&v1)
+            .map(|(a, b)| Q::new(a.c.clone(), w.clone()) + &t * b)
+            .collect();
     Exact::Solved {
         x,
         ray: v1,
         grows: grow.is_positive(),
+        hom: None,
     }
 }

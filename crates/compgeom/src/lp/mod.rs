@@ -5,9 +5,9 @@
 //! | [`lp2d`] | §4.3–4.4 2DRANDOMIZEDBOUNDEDLP + unbounded case | randomized incremental, symbolic bounding box | expected O(n) |
 //! | [`intersect_halfplanes`] = [`intersect_halfplanes_dc`] | §4.2 INTERSECTHALFPLANES | divide and conquer, linear merge of left/right boundary chains | O(n log n) |
 //! | [`intersect_halfplanes_incremental`] | §4.2 half-plane intersection | randomized incremental clipping of a symbolic box | expected O(n·h), h the size of the intermediate regions (worst case O(n²)) |
-//! | [`lp_d`] | §4.5 RANDOMIZEDLP | recursive randomized incremental, exact rationals | expected O(d!·n) |
+//! | [`lp_d`] | §4.5 RANDOMIZEDLP | recursive randomized incremental; `f64` run with an exactly certified basis, else exact integers | expected O(d!·n) |
 //! | [`smallest_enclosing_disc`] | §4.7 MINIDISC | randomized incremental; `f64` disc filter, exact `incircle`/`orient2d` near the circle | expected O(n) |
-//! | [`castability`] | §4.1 casting | per top facet a feasibility problem (Lemma 4.1), exact rational LP | O(n²) expected |
+//! | [`castability`] | §4.1 casting | per top facet a feasibility problem (Lemma 4.1), the LP of [`lp_d`] with its certified fast path | O(n²) expected |
 //! | [`verify_lp2d`], [`verify_region`], [`verify_enclosing_disc`] | | exact checks of a claimed answer | O(n) / O(n·h) / O(n) |
 //!
 //! # Input
@@ -28,11 +28,14 @@
 //! Coordinates are reported as the nearest `f64` of the exact value.
 //!
 //! Parallel, identical and redundant constraints are ordinary input. A constraint with a
-//! zero normal (`0·x + 0·y <= c`) is always true when `c >= 0` and ignored, and makes the
-//! problem infeasible when `c < 0`. Non-finite numbers are rejected with
+//! **zero normal** (`0·x <= c`) is accepted, the same way by [`lp2d`], [`lp_d`] and the
+//! half-plane intersections: when `c >= 0` it is always true and ignored (never reported
+//! as tight or bounding); when `c < 0` it is always false, so the answer is infeasible
+//! (`Infeasible { certificate: [that constraint] }`, or the empty region). Non-finite numbers are rejected with
 //! [`Error::NonFinite`] naming the constraint.
 
 mod casting;
+mod certify;
 mod enclosing_disc;
 mod exact;
 mod halfplanes;
@@ -40,6 +43,7 @@ mod halfplanes_dc;
 mod lp2d;
 mod lpd;
 mod read;
+mod seidel;
 mod verify;
 
 pub use casting::{castability, Castability, TopFacet};
@@ -47,7 +51,7 @@ pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, intersect_halfplanes_incremental, Region, RegionKind};
 pub use halfplanes_dc::{intersect_halfplanes_dc, intersect_halfplanes_dc_leaf};
 pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
-pub use lpd::{lp_d, LpSolution};
+pub use lpd::{lp_d, lp_d_exact, lp_d_fast_hits, LpSolution};
 pub use read::{read_constraints, read_halfplanes};
 pub use verify::{verify_lp2d, verify_region};
 
