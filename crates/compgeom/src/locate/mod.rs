@@ -29,8 +29,11 @@
 //! proper crossings ([`check_no_crossings`]). Both checks are exact (the intersection
 //! sweep) and name the offending pair.
 //!
-//! Layout: flat `Vec` arenas with `u32` indices (a node is 16 bytes, a trapezoid 32),
-//! children stored after their parents; a query is a tight loop over the nodes.
+//! Layout: flat `Vec` arenas with `u32` indices. For queries D is frozen into 40-byte
+//! nodes holding the coordinates they test; a uniform grid of cells taller than wide
+//! (about eight per segment) gives each cell the deepest node that all its points pass
+//! (computed exactly), so a query skips the top of D, and the nodes below each cell's
+//! start are stored together.
 mod check;
 mod locator;
 mod map;

@@ -574,16 +574,70 @@ impl Frozen {
             f.item.push(node.idx);
         }
         f.grid = Grid::new(&f, &core.points, core.segs.len());
+        f.relayout();
         f
     }
 
-    /// The deepest node on the common search path of every point of the closed box
-    /// `[x0, x1] × [y0, y1]`: below it, points of the box part ways. Exact: an x-node
-    /// is passed when the box is strictly on one side of its vertical line, a y-node
-    /// when all four corners are strictly on one side of its segment's line (then, by
+    /// Renumber the nodes for the queries' memory traffic: a query starts at its grid
+    /// cell's node, so the nodes below each cell's start (in preorder) are stored
+    /// together, cell after cell, and the nodes above every start come last.
+    fn relayout(&mut self) {
+        let n = self.nodes.len();
+        if self.grid.start.is_empty() || n == 0 {
+            return;
+        }
+        let mut id = vec![NONE; n];
+        let mut order: Vec<u32> = Vec::with_capacity(n);
+        let mut stack = Vec::new();
+        let mut place = |from: u32, id: &mut Vec<u32>, order: &mut Vec<u32>| {
+            stack.push(from);
+            while let Some(r) = stack.pop() {
+                if r & LEAF_REF != 0 || id[r as usize] != NONE {
+                    continue;
+                }
+                id[r as usize] = order.len() as u32;
+                order.push(r);
+                let node = &self.nodes[r as usize];
+                stack.push(node.b);
+                stack.push(node.a & REF_MASK);
+            }
+        };
+        let mut last = NONE;
+        for &s in &self.grid.start {
+            if s != last {
+                place(s, &mut id, &mut order);
+                last = s;
+            }
+        }
+        place(self.root, &mut id, &mut order);
+        let re = |r: u32| if r & LEAF_REF != 0 { r } else { id[r as usize] };
+        let nodes = order
+            .iter()
+            .map(|&o| {
+                let q = self.nodes[o as usize];
+                QNode {
+                    a: re(q.a & REF_MASK) | (q.a & X_FLAG),
+                    b: re(q.b),
+                    c: q.c,
+                }
+            })
+            .collect();
+        self.item = order.iter().map(|&o| self.item[o as usize]).collect();
+        self.nodes = nodes;
+        self.root = re(self.root);
+        for s in &mut self.grid.start {
+            *s = re(*s);
+        }
+    }
+
+    /// The deepest node on the common search path, below `from`, of every point of the
+    /// closed box `[x0, x1] × [y0, y1]` (whose points all reach `from`), and the number
+    /// of nodes passed: below it, points of the box part ways. Exact: an x-node is
+    /// passed when the box is strictly on one side of its vertical line, a y-node when
+    /// all four corners are strictly on one side of its segment's line (then, by
     /// convexity, so is the whole box).
-    fn common_start(&self, x0: f64, x1: f64, y0: f64, y1: f64) -> u32 {
-        let mut r = self.root;
+    fn common_start(&self, from: u32, x0: f64, x1: f64, y0: f64, y1: f64) -> (u32, usize) {
+        let (mut r, mut steps) = (from, 0);
         while r & LEAF_REF == 0 {
             let n = &self.nodes[r as usize];
             r = if n.a & X_FLAG != 0 {
@@ -607,8 +661,9 @@ impl Frozen {
                     _ => break,
                 }
             };
+            steps += 1;
         }
-        r
+        (r, steps)
     }
 
     /// Every trapezoid referenced by a leaf, with repetitions (for validation).
@@ -677,6 +732,12 @@ struct Grid {
 }
 
 impl Grid {
+    /// The grid of a search structure over `points` (the segments' endpoints). The
+    /// early levels of D are dominated by the long vertical extensions of the first
+    /// endpoints, so square cells are split early; cells taller than wide start
+    /// deeper. The aspect ratio is chosen by trying a few on a coarse grid and keeping
+    /// the one whose cells start deepest on average; the final grid has about eight
+    /// cells per segment (4 bytes each).
     fn new(f: &Frozen, points: &[Point2], segments: usize) -> Grid {
         if segments < 64 || points.is_empty() {
             return Grid::default();
@@ -690,29 +751,59 @@ impl Grid {
         if !(w > 0.0 && h > 0.0 && w.is_finite() && h.is_finite()) {
             return Grid::default();
         }
-        // About one cell per two segments, square cells.
-        let cells = (segments / 2) as f64;
-        let nx = ((cells * w / h).sqrt().ceil() as usize).clamp(1, 1 << 12);
-        let ny = ((cells * h / w).sqrt().ceil() as usize).clamp(1, 1 << 12);
+        let n = segments as f64;
+        let mut best = (f64::MIN, 1.0);
+        for aspect in [1.0, 4.0, 16.0, 64.0, 256.0, 1024.0] {
+            let (_, mean) = Self::build(f, lo, w, h, n, aspect);
+            if mean > best.0 {
+                best = (mean, aspect);
+            }
+        }
+        Self::build(f, lo, w, h, 8.0 * n, best.1).0
+    }
+
+    /// A grid of about `cells` cells over the box at `lo` of size `w × h`, cells
+    /// `aspect` times taller than wide (relative to the box), and the mean depth of
+    /// its cells' start nodes.
+    fn build(f: &Frozen, lo: Point2, w: f64, h: f64, cells: f64, aspect: f64) -> (Grid, f64) {
+        let nx = ((cells * aspect * w / h).sqrt().ceil() as usize).clamp(1, 1 << 16);
+        let ny = ((cells / aspect * h / w).sqrt().ceil() as usize).clamp(1, 1 << 16);
         let xs: Vec<f64> = (0..=nx)
             .map(|i| lo.x + w * (i as f64 / nx as f64))
             .collect();
         let ys: Vec<f64> = (0..=ny)
             .map(|j| lo.y + h * (j as f64 / ny as f64))
             .collect();
-        let mut start = Vec::with_capacity(nx * ny);
-        for j in 0..ny {
-            for i in 0..nx {
-                start.push(f.common_start(xs[i], xs[i + 1], ys[j], ys[j + 1]));
+        let mut start = vec![NONE; nx * ny];
+        let mut total = 0usize;
+        // Coarse to fine: a block's common path is a prefix of each of its cells' paths.
+        let mut stack = vec![(0usize, nx, 0usize, ny, f.root, 0usize)];
+        while let Some((i0, i1, j0, j1, from, depth)) = stack.pop() {
+            let (r, steps) = f.common_start(from, xs[i0], xs[i1], ys[j0], ys[j1]);
+            let depth = depth + steps;
+            if (i1 - i0 == 1 && j1 - j0 == 1) || r & LEAF_REF != 0 {
+                for j in j0..j1 {
+                    start[j * nx + i0..j * nx + i1].fill(r);
+                }
+                total += depth * (i1 - i0) * (j1 - j0);
+            } else if i1 - i0 >= j1 - j0 {
+                let m = (i0 + i1) / 2;
+                stack.push((i0, m, j0, j1, r, depth));
+                stack.push((m, i1, j0, j1, r, depth));
+            } else {
+                let m = (j0 + j1) / 2;
+                stack.push((i0, i1, j0, m, r, depth));
+                stack.push((i0, i1, m, j1, r, depth));
             }
         }
-        Grid {
+        let grid = Grid {
             inv_w: nx as f64 / w,
             inv_h: ny as f64 / h,
             xs,
             ys,
             start,
-        }
+        };
+        (grid, total as f64 / (nx * ny) as f64)
     }
 
     /// The start node for `q`, if `q` is (exactly) inside the cell its coordinates round to.
