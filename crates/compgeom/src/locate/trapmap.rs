@@ -22,7 +22,7 @@
 //! compares the other endpoint `q` with that segment (the segment leaving `p` more
 //! steeply is above). A query that hits an x-node's point exactly is reported as that
 //! vertex; one on a y-node's segment (orientation zero) as that segment.
-use crate::kernel::{orient2d, Orientation, Point2};
+use crate::kernel::{orient2d, orient_exact, ExactPoint, Orientation, Point2};
 use crate::{Error, Result};
 use std::cmp::Ordering;
 
@@ -85,7 +85,11 @@ pub(crate) enum CoreHit {
 /// The trapezoidal map and its search structure over points and segments given by index.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Core {
+    /// The points, rounded to `f64` where constructed.
     pub points: Vec<Point2>,
+    /// The exact points when some are constructed (crossings), else empty: then every
+    /// decision about the points uses the exact predicates of [`crate::kernel`].
+    pub exact: Vec<ExactPoint>,
     /// Endpoints `[left, right]` in lexicographic order.
     pub segs: Vec<[u32; 2]>,
     pub traps: Vec<Trap>,
@@ -111,6 +115,16 @@ pub(crate) fn lex(a: Point2, b: Point2) -> Ordering {
     }
 }
 
+/// An orientation as an ordering: `Greater` is counter-clockwise (left, above).
+#[inline]
+pub(crate) fn ordering(o: Orientation) -> Ordering {
+    match o {
+        Orientation::CounterClockwise => Ordering::Greater,
+        Orientation::Clockwise => Ordering::Less,
+        Orientation::Collinear => Ordering::Equal,
+    }
+}
+
 /// Exact orientation of `c` relative to the directed line `a → b`: `Greater` when `c` is
 /// to the left (above, for `a <_lex b`). A floating-point filter (Shewchuk's first
 /// error bound, valid while nothing under- or overflows) and the adaptive exact
@@ -131,11 +145,7 @@ pub(crate) fn orient(a: Point2, b: Point2, c: Point2) -> Ordering {
             return Ordering::Less;
         }
     }
-    match orient2d(a, b, c) {
-        Orientation::CounterClockwise => Ordering::Greater,
-        Orientation::Clockwise => Ordering::Less,
-        Orientation::Collinear => Ordering::Equal,
-    }
+    ordering(orient2d(a, b, c))
 }
 
 fn broken(what: String) -> Error {
@@ -149,9 +159,15 @@ impl Core {
     /// Preconditions (checked by the callers, exactly): points distinct and finite,
     /// each segment's endpoints distinct and lexicographically sorted, segments meeting
     /// only at common endpoints. A violated precondition met on the way gives an `Err`.
-    pub fn build(points: Vec<Point2>, segs: Vec<[u32; 2]>, order: &[u32]) -> Result<Core> {
+    pub fn build(
+        points: Vec<Point2>,
+        exact: Vec<ExactPoint>,
+        segs: Vec<[u32; 2]>,
+        order: &[u32],
+    ) -> Result<Core> {
         let mut core = Core {
             points,
+            exact,
             segs,
             traps: Vec::with_capacity(4 * order.len() + 1),
             nodes: Vec::with_capacity(8 * order.len() + 1),
@@ -179,9 +195,31 @@ impl Core {
         Ok(core)
     }
 
+    /// Lexicographic comparison of points `a` and `b`, exact.
+    #[inline]
+    pub fn cmp(&self, a: u32, b: u32) -> Ordering {
+        if self.exact.is_empty() {
+            lex(self.points[a as usize], self.points[b as usize])
+        } else {
+            self.exact[a as usize].compare_xy(&self.exact[b as usize])
+        }
+    }
+
+    /// Orientation of point `c` relative to the line from point `a` to point `b`, exact.
+    #[inline]
+    pub fn side(&self, a: u32, b: u32, c: u32) -> Ordering {
+        if self.exact.is_empty() {
+            let p = &self.points;
+            orient(p[a as usize], p[b as usize], p[c as usize])
+        } else {
+            let e = &self.exact;
+            ordering(orient_exact(&e[a as usize], &e[b as usize], &e[c as usize]))
+        }
+    }
+
     /// The trapezoid containing the point just to the right of `p` along segment `s`
     /// (whose left endpoint is `p` and right endpoint `q`).
-    fn find_start(&self, p: Point2, q: Point2) -> Result<u32> {
+    fn find_start(&self, p: u32, q: u32) -> Result<u32> {
         let mut n = 0usize;
         loop {
             let node = self.nodes[n];
@@ -189,7 +227,7 @@ impl Core {
                 LEAF => return Ok(node.idx),
                 XNODE => {
                     // Equal goes right: the segment leaves p to the right.
-                    if lex(p, self.points[node.idx as usize]) == Ordering::Less {
+                    if self.cmp(p, node.idx) == Ordering::Less {
                         node.a
                     } else {
                         node.b
@@ -197,12 +235,12 @@ impl Core {
                 }
                 _ => {
                     let [l, r] = self.segs[node.idx as usize];
-                    let (l, r) = (self.points[l as usize], self.points[r as usize]);
-                    let side = match orient(l, r, p) {
+                    let side = match self.side(l, r, p) {
                         // p on the segment: a shared left endpoint; compare q instead.
-                        Ordering::Equal => orient(l, r, q),
+                        Ordering::Equal => self.side(l, r, q),
                         o => o,
                     };
+                    let (l, r) = (self.points[l as usize], self.points[r as usize]);
                     match side {
                         Ordering::Greater => node.a,
                         Ordering::Less => node.b,
@@ -272,17 +310,16 @@ impl Core {
     /// One step of TRAPEZOIDALMAP: add segment `s` to the map and to D.
     fn insert(&mut self, s: u32, b: &mut Builder) -> Result<()> {
         let [p, q] = self.segs[s as usize];
-        let (pp, qp) = (self.points[p as usize], self.points[q as usize]);
         // 1. FOLLOWSEGMENT: the trapezoids d0, ..., dk crossed by s.
         b.ds.clear();
-        b.ds.push(self.find_start(pp, qp)?);
+        b.ds.push(self.find_start(p, q)?);
         loop {
             let t = self.traps[*b.ds.last().unwrap_or(&0) as usize];
-            if t.rightp == NONE || lex(qp, self.points[t.rightp as usize]) != Ordering::Greater {
+            if t.rightp == NONE || self.cmp(q, t.rightp) != Ordering::Greater {
                 break;
             }
             let r = self.points[t.rightp as usize];
-            let next = match orient(pp, qp, r) {
+            let next = match self.side(p, q, t.rightp) {
                 Ordering::Greater => t.lr,
                 Ordering::Less => t.ur,
                 Ordering::Equal => {
@@ -338,7 +375,7 @@ impl Core {
             let (prev, cur) = (b.old[i - 1], b.old[i]);
             let (iprev, icur) = (b.ds[i - 1], b.ds[i]);
             let r = prev.rightp;
-            if orient(pp, qp, self.points[r as usize]) == Ordering::Greater {
+            if self.side(p, q, r) == Ordering::Greater {
                 // r above s: its extension now stops at s, splitting the part above s;
                 // the parts below s merge.
                 let u2 = self.new_trap(Trap::new(cur.top, s, r, NONE), b);
@@ -470,6 +507,9 @@ const LEAF_REF: u32 = 1 << 31;
 /// Flag in a node's `a`: the node is an x-node.
 const X_FLAG: u32 = 1 << 30;
 const REF_MASK: u32 = !X_FLAG;
+/// Flag in a node's `b`: the node's point or segment has a constructed point, so the
+/// node is decided by the exact predicates on [`ExactPoint`]s (its `c` is rounded).
+const EXACT_FLAG: u32 = 1 << 30;
 
 /// A node of the query layout: two child references (a leaf is folded into its
 /// parent's reference, so a query never loads it) and the coordinates it tests inline:
@@ -490,6 +530,9 @@ pub(crate) struct Frozen {
     /// The point (x-node) or segment (y-node) of each node, for reporting hits.
     item: Vec<u32>,
     root: u32,
+    /// The exact points and the segments, kept only when some points are constructed.
+    exact: Vec<ExactPoint>,
+    segs: Vec<[u32; 2]>,
     /// Where to start the search, per cell of a uniform grid over the points.
     grid: Grid,
     pub x_nodes: usize,
@@ -544,6 +587,12 @@ impl Frozen {
             nodes: Vec::with_capacity(order.len()),
             item: Vec::with_capacity(order.len()),
             root: reference(0),
+            exact: core.exact.clone(),
+            segs: if core.exact.is_empty() {
+                Vec::new()
+            } else {
+                core.segs.clone()
+            },
             grid: Grid::default(),
             x_nodes: 0,
             y_nodes: 0,
@@ -551,7 +600,17 @@ impl Frozen {
         };
         for &n in &order {
             let node = old[n as usize];
-            let (a, b) = (reference(node.a), reference(node.b));
+            let (a, mut b) = (reference(node.a), reference(node.b));
+            let constructed =
+                |p: u32| matches!(core.exact.get(p as usize), Some(ExactPoint::Crossing(_)));
+            let flagged = if node.kind == XNODE {
+                constructed(node.idx)
+            } else {
+                core.segs[node.idx as usize].into_iter().any(constructed)
+            };
+            if flagged {
+                b |= EXACT_FLAG;
+            }
             let q = if node.kind == XNODE {
                 f.x_nodes += 1;
                 let p = core.points[node.idx as usize];
@@ -598,7 +657,7 @@ impl Frozen {
                 id[r as usize] = order.len() as u32;
                 order.push(r);
                 let node = &self.nodes[r as usize];
-                stack.push(node.b);
+                stack.push(node.b & !EXACT_FLAG);
                 stack.push(node.a & REF_MASK);
             }
         };
@@ -617,7 +676,7 @@ impl Frozen {
                 let q = self.nodes[o as usize];
                 QNode {
                     a: re(q.a & REF_MASK) | (q.a & X_FLAG),
-                    b: re(q.b),
+                    b: re(q.b & !EXACT_FLAG) | (q.b & EXACT_FLAG),
                     c: q.c,
                 }
             })
@@ -640,6 +699,14 @@ impl Frozen {
         let (mut r, mut steps) = (from, 0);
         while r & LEAF_REF == 0 {
             let n = &self.nodes[r as usize];
+            if n.b & EXACT_FLAG != 0 {
+                match self.exact_box_step(r, x0, x1, y0, y1) {
+                    Some(next) => r = next,
+                    None => break,
+                }
+                steps += 1;
+                continue;
+            }
             r = if n.a & X_FLAG != 0 {
                 if x1 < n.c[0] {
                     n.a & REF_MASK
@@ -666,12 +733,73 @@ impl Frozen {
         (r, steps)
     }
 
+    /// [`Frozen::common_start`]'s step at a node with constructed points: the child
+    /// every point of the box goes to, if they all go the same way.
+    #[cold]
+    fn exact_box_step(&self, r: u32, x0: f64, x1: f64, y0: f64, y1: f64) -> Option<u32> {
+        let n = &self.nodes[r as usize];
+        let item = self.item[r as usize] as usize;
+        let corners = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)];
+        let sides: Vec<Ordering> = if n.a & X_FLAG != 0 {
+            let p = &self.exact[item];
+            corners
+                .iter()
+                .map(|&(x, y)| ExactPoint::Input(Point2::new(x, y)).compare_x(p))
+                .collect()
+        } else {
+            let [l, rp] = self.segs[item];
+            let (l, rp) = (&self.exact[l as usize], &self.exact[rp as usize]);
+            corners
+                .iter()
+                .map(|&(x, y)| {
+                    // Above the segment is the first child, like "left of" an x-node.
+                    ordering(orient_exact(l, rp, &ExactPoint::Input(Point2::new(x, y)))).reverse()
+                })
+                .collect()
+        };
+        match sides[0] {
+            Ordering::Equal => None,
+            o if sides.iter().any(|&x| x != o) => None,
+            Ordering::Less => Some(n.a & REF_MASK),
+            _ => Some(n.b & !EXACT_FLAG),
+        }
+    }
+
+    /// A query's step at a node with constructed points: the child it goes to, or what
+    /// it hit.
+    #[cold]
+    fn exact_step(&self, r: u32, q: Point2) -> std::result::Result<u32, CoreHit> {
+        let n = &self.nodes[r as usize];
+        let item = self.item[r as usize];
+        let qe = ExactPoint::Input(q);
+        if n.a & X_FLAG != 0 {
+            return match qe.compare_xy(&self.exact[item as usize]) {
+                Ordering::Less => Ok(n.a & REF_MASK),
+                Ordering::Greater => Ok(n.b & !EXACT_FLAG),
+                Ordering::Equal => Err(CoreHit::Point(item)),
+            };
+        }
+        let [li, ri] = self.segs[item as usize];
+        let (l, rp) = (&self.exact[li as usize], &self.exact[ri as usize]);
+        match ordering(orient_exact(l, rp, &qe)) {
+            Ordering::Greater => Ok(n.a),
+            Ordering::Less => Ok(n.b & !EXACT_FLAG),
+            Ordering::Equal => Err(if qe.compare_xy(l) == Ordering::Equal {
+                CoreHit::Point(li)
+            } else if qe.compare_xy(rp) == Ordering::Equal {
+                CoreHit::Point(ri)
+            } else {
+                CoreHit::Seg(item)
+            }),
+        }
+    }
+
     /// Every trapezoid referenced by a leaf, with repetitions (for validation).
     pub fn leaves(&self) -> Vec<u32> {
         let mut out: Vec<u32> = self
             .nodes
             .iter()
-            .flat_map(|n| [n.a & REF_MASK, n.b])
+            .flat_map(|n| [n.a & REF_MASK, n.b & !EXACT_FLAG])
             .filter(|r| r & LEAF_REF != 0)
             .map(|r| r & !LEAF_REF)
             .collect();
@@ -687,6 +815,13 @@ impl Frozen {
         let mut r = self.grid.start(q).unwrap_or(self.root);
         while r & LEAF_REF == 0 {
             let n = &nodes[r as usize];
+            if n.b & EXACT_FLAG != 0 {
+                match self.exact_step(r, q) {
+                    Ok(next) => r = next,
+                    Err(hit) => return hit,
+                }
+                continue;
+            }
             let next = if n.a & X_FLAG != 0 {
                 match lex(q, Point2::new(n.c[0], n.c[1])) {
                     Ordering::Less => n.a & REF_MASK,
