@@ -9,7 +9,7 @@ use compgeom::delaunay::delaunay;
 use compgeom::kernel::{orient2d, orient_exact, ExactPoint, Orientation};
 use compgeom::locate::{
     check_interior_disjoint_segments, check_no_crossings, polygons_at, Location, MapHit,
-    PointLocator, TrapezoidalMap,
+    PointLocator, SlabLocator, TrapezoidalMap,
 };
 use compgeom::overlay::overlay_polygons;
 use compgeom::{MultiPolygon, Point2, Polygon, Segment2};
@@ -104,6 +104,9 @@ fn check_layer(polys: &MultiPolygon, queries: &[Point2], seed: u64) {
         PointLocator::from_dcel_with_seed(&dcel, seed).expect("the same subdivision, reseeded");
     seeded.map().validate().unwrap();
     let all = seeded.locate_all(queries).unwrap();
+    // The slab method gives the same answers (checked against brute force below).
+    let slab = SlabLocator::from_dcel(&dcel).unwrap();
+    assert_eq!(slab.locate_all(queries).unwrap(), all);
     for (i, &q) in queries.iter().enumerate() {
         let got = loc.locate(q).unwrap();
         assert_eq!(got, all[i], "seeds disagree at {q:?}");
@@ -605,8 +608,10 @@ proptest! {
         queries.extend(o.vertex_ids().map(|v| o.vertex(v).approx));
         queries.extend(rnd.iter().map(|&(x, y)| p(x, y)));
         let all = loc.locate_all(&queries).unwrap();
+        let slab = SlabLocator::from_dcel(&o).unwrap();
         for (&q, &got) in queries.iter().zip(&all) {
             prop_assert_eq!(got, loc.locate(q).unwrap());
+            prop_assert_eq!(got, slab.locate(q).unwrap());
             match (brute_dcel(&o, q), got) {
                 (Some(Location::Vertex(v)), Location::Vertex(w)) => prop_assert_eq!(v, w),
                 (Some(Location::Edge(h)), Location::Edge(g)) => {
@@ -657,6 +662,13 @@ fn large_overlay_with_constructed_vertices() {
     let mut queries = grid_queries(0.0, 30.0);
     queries.extend(o.vertex_ids().map(|v| o.vertex(v).approx));
     let all = loc.locate_all(&queries).unwrap();
+    assert_eq!(
+        SlabLocator::from_dcel(&o)
+            .unwrap()
+            .locate_all(&queries)
+            .unwrap(),
+        all
+    );
     let mut constructed_hits = 0;
     for (&q, &got) in queries.iter().zip(&all) {
         match (brute_dcel(&o, q), got) {

@@ -11,6 +11,8 @@
 //!   trapezoid labelled with its face: a query answers the face, or the edge or vertex
 //!   it lies on ([`Location`]). Built from a DCEL, from segments or from polygons;
 //!   [`PointLocator::locate_all`] answers batches in parallel.
+//! * [`SlabLocator`] (§6.1, introduction): the simple slab method, O(log n) query but
+//!   up to O(n²) space; the same answers, for comparison.
 //!
 //! ## Exactness and degenerate input (§6.3)
 //!
@@ -37,8 +39,10 @@
 mod check;
 mod locator;
 mod map;
+mod slab;
 mod trapmap;
 
 pub use check::{check_interior_disjoint_segments, check_no_crossings};
 pub use locator::{polygons_at, Location, PointLocator, PolygonsDcel, SegmentsDcel};
 pub use map::{DagStats, MapHit, Trapezoid, TrapezoidalMap, DEFAULT_SEED};
+pub use slab::{SlabLocator, SLAB_MAX_ENTRIES};
