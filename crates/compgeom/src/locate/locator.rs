@@ -150,8 +150,7 @@ impl PointLocator {
         segments: &[Segment2],
         seed: u64,
     ) -> Result<(PointLocator, SegmentsDcel)> {
-        check_no_crossings(segments)?;
-        let d = Dcel::from_segments(segments)?;
+        let d = segments_dcel(segments)?;
         Ok((Self::from_dcel_with_seed(&d, seed)?, d))
     }
 
@@ -168,28 +167,7 @@ impl PointLocator {
         polygons: &MultiPolygon,
         seed: u64,
     ) -> Result<(PointLocator, PolygonsDcel)> {
-        let (segs, owner) = polygon_segments(polygons)?;
-        if let Err(e) = check_no_crossings(&segs) {
-            // Name polygons rather than ring edges.
-            let msg = e.to_string();
-            let nums: Vec<usize> = msg
-                .split(|c: char| !c.is_ascii_digit())
-                .filter_map(|w| w.parse().ok())
-                .take(2)
-                .collect();
-            if let [a, b] = nums[..] {
-                if a < owner.len() && b < owner.len() {
-                    let at = msg.split_once("about ").map(|x| x.1).unwrap_or("");
-                    let at = at.split(';').next().unwrap_or("");
-                    return Err(Error::InvalidInput(format!(
-                        "the boundaries of polygons {} and {} cross at about {at} (edges {a} and {b}); point location needs non-crossing polygons",
-                        owner[a], owner[b]
-                    )));
-                }
-            }
-            return Err(e);
-        }
-        let d = Dcel::from_polygons(polygons)?;
+        let d = polygons_dcel(polygons)?;
         Ok((Self::from_dcel_with_seed(&d, seed)?, d))
     }
 
@@ -247,6 +225,40 @@ impl PointLocator {
     pub fn stats(&self) -> DagStats {
         self.map.stats()
     }
+}
+
+/// The subdivision of non-crossing segments, as the locators' `from_segments` build it
+/// (the first crossing pair is an `Err`).
+pub fn segments_dcel(segments: &[Segment2]) -> Result<SegmentsDcel> {
+    check_no_crossings(segments)?;
+    Dcel::from_segments(segments)
+}
+
+/// The subdivision of polygons whose boundaries do not cross, as the locators'
+/// `from_polygons` build it (the first crossing is an `Err` naming the two polygons).
+pub fn polygons_dcel(polygons: &MultiPolygon) -> Result<PolygonsDcel> {
+    let (segs, owner) = polygon_segments(polygons)?;
+    if let Err(e) = check_no_crossings(&segs) {
+        // Name polygons rather than ring edges.
+        let msg = e.to_string();
+        let nums: Vec<usize> = msg
+            .split(|c: char| !c.is_ascii_digit())
+            .filter_map(|w| w.parse().ok())
+            .take(2)
+            .collect();
+        if let [a, b] = nums[..] {
+            if a < owner.len() && b < owner.len() {
+                let at = msg.split_once("about ").map(|x| x.1).unwrap_or("");
+                let at = at.split(';').next().unwrap_or("");
+                return Err(Error::InvalidInput(format!(
+                    "the boundaries of polygons {} and {} cross at about {at} (edges {a} and {b}); point location needs non-crossing polygons",
+                    owner[a], owner[b]
+                )));
+            }
+        }
+        return Err(e);
+    }
+    Dcel::from_polygons(polygons)
 }
 
 /// The polygons whose closed region contains a located point of a subdivision built by

@@ -43,6 +43,8 @@ mod slab;
 mod trapmap;
 
 pub use check::{check_interior_disjoint_segments, check_no_crossings};
-pub use locator::{polygons_at, Location, PointLocator, PolygonsDcel, SegmentsDcel};
+pub use locator::{
+    polygons_at, polygons_dcel, segments_dcel, Location, PointLocator, PolygonsDcel, SegmentsDcel,
+};
 pub use map::{DagStats, MapHit, Trapezoid, TrapezoidalMap, DEFAULT_SEED};
 pub use slab::{SlabLocator, SLAB_MAX_ENTRIES};

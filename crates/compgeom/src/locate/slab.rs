@@ -12,10 +12,10 @@
 //! (a vertical edge spans the zero-width slab between its ends). Every test is exact,
 //! on input points and on constructed crossings alike ([`crate::kernel::orient_exact`],
 //! [`ExactPoint::compare_xy`]).
-use super::locator::Location;
+use super::locator::{polygons_dcel, segments_dcel, Location, PolygonsDcel, SegmentsDcel};
 use super::map::check_query;
 use crate::dcel::{Dcel, FaceId, HalfEdgeId, VertexId};
-use crate::kernel::{orient_exact, ExactPoint, Orientation, Point2};
+use crate::kernel::{orient_exact, ExactPoint, MultiPolygon, Orientation, Point2, Segment2};
 use crate::{Error, Result};
 use rayon::prelude::*;
 use std::cmp::Ordering;
@@ -143,6 +143,20 @@ impl SlabLocator {
             faces,
             forward,
         })
+    }
+
+    /// The slab locator of [`Dcel::from_segments`]`(segments)`, returned with it; the
+    /// same requirement and error as [`super::PointLocator::from_segments`].
+    pub fn from_segments(segments: &[Segment2]) -> Result<(SlabLocator, SegmentsDcel)> {
+        let d = segments_dcel(segments)?;
+        Ok((Self::from_dcel(&d)?, d))
+    }
+
+    /// The slab locator of [`Dcel::from_polygons`]`(polygons)`, returned with it; the
+    /// same requirement and error as [`super::PointLocator::from_polygons`].
+    pub fn from_polygons(polygons: &MultiPolygon) -> Result<(SlabLocator, PolygonsDcel)> {
+        let d = polygons_dcel(polygons)?;
+        Ok((Self::from_dcel(&d)?, d))
     }
 
     /// Locate `q`, exactly, in O(log n). Error: a non-finite coordinate.
