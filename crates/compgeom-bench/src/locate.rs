@@ -13,24 +13,29 @@
 //! bounded face must be in the same triangle for rstar (a consistent face ↔ triangle
 //! bijection), and the unbounded face must be rstar's "no triangle".
 //!
-//! Measured (release, shared 2-core machine, load average 4–5; two full runs, best ratio
-//! shown second; rstar time / compgeom time, >1 means compgeom is faster):
+//! The slab method (`SlabLocator`) is run at 1e4 and 1e5 (its space is about n^1.5
+//! here; quadratic in the worst case), and its answers must equal the map's.
 //!
-//! | segments | compgeom build | rstar build | compgeom q/s | rstar q/s | ratio | DAG nodes/segment | depth |
-//! |---|---|---|---|---|---|---|---|
-//! | 1e4 | 6 ms | 1 ms | 4.4–4.7 M | 2.4–2.5 M | 1.77–1.86 | 4.2 | 50 |
-//! | 1e5 | 164–203 ms | 17–22 ms | 0.80–0.92 M | 0.73–0.92 M | 1.01–1.09 | 4.2 | 66 |
-//! | 1e6 | 7.9–10.1 s | 0.2–0.4 s | 0.35–0.38 M | 0.39 M | 0.90–0.97 | 4.3 | 83 |
+//! Measured (release, shared 2-core machine, load average 3.3–4.7; several runs, the
+//! range shown; rstar time / compgeom time, >1 means compgeom is faster; query grid of
+//! tall cells, about eight per segment, with nodes laid out per cell):
 //!
-//! Brute force (1e4 segments, exact point-in-triangle over every face): 0.009 M q/s.
-//! The goal (faster than the R-tree from 1e5 segments) is met at 1e5 only by a hair and
-//! missed at 1e6; construction is cache-bound (about one miss per level of D per insert).
+//! | segments | compgeom build | rstar build | compgeom q/s | rstar q/s | ratio | slab: build, q/s, pairs | DAG nodes/segment | depth |
+//! |---|---|---|---|---|---|---|---|---|
+//! | 1e4 | 24–39 ms | 1–2 ms | 3.8–6.6 M | 1.7–2.4 M | 1.6–3.0 | 4 ms, 1.2 M, 0.4 M | 4.2 | 50 |
+//! | 1e5 | 0.32–0.66 s | 13–29 ms | 0.8–1.7 M | 0.8–1.3 M | 0.97–1.53 (mostly 1.2–1.4) | 115 ms, 0.29 M, 13.5 M | 4.2 | 66 |
+//! | 1e6 | 9–12 s | 0.24–0.31 s | 0.50–0.66 M | 0.33–0.47 M | 1.40–1.56 | — | 4.3 | 83 |
+//!
+//! Brute force (1e4 segments, exact point-in-triangle over every face): 0.004–0.009 M q/s.
+//! The mean search path is 25 / 33 / 38 nodes from the root at 1e4 / 1e5 / 1e6, and
+//! 7 / 8 / 10 from the grid's start nodes. Construction is cache-bound (about one miss
+//! per level of D per insert) and 15–40× rstar's bulk load.
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::dcel::{Dcel, FaceId};
 use compgeom::delaunay::delaunay;
 use compgeom::kernel::{orient2d, Orientation};
-use compgeom::locate::{Location, PointLocator};
+use compgeom::locate::{Location, PointLocator, SlabLocator};
 use compgeom::{Point2, Segment2};
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::RTree;
@@ -70,9 +75,9 @@ pub fn run(quick: bool) -> Result<(), String> {
     let nq = if quick { 100_000 } else { 1_000_000 };
     println!("## locate: point location in a Delaunay triangulation, {nq} queries");
     println!(
-        "| segments | faces | compgeom build ms | rstar build ms | compgeom queries/s | rstar queries/s | ratio (rstar time / compgeom) | compgeom parallel queries/s | brute force queries/s | DAG nodes | nodes/segment | depth |"
+        "| segments | faces | compgeom build ms | rstar build ms | compgeom queries/s | rstar queries/s | ratio (rstar time / compgeom) | compgeom parallel queries/s | slab method build, queries/s, size | brute force queries/s | DAG nodes | nodes/segment | depth |"
     );
-    println!("|---|---|---|---|---|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for &target in sizes {
         let mut rng = Rng::new(0x10CA7E ^ target as u64);
         // A triangulation of n points has about 3n edges.
@@ -161,6 +166,33 @@ pub fn run(quick: bool) -> Result<(), String> {
             }
             acc
         });
+        // The slab method (quadratic worst-case space; about n^1.5 here) at the sizes
+        // where its memory is reasonable; its answers must equal the map's.
+        let slab = if target <= 100_000 {
+            let mut sl = None;
+            let sb = best_of(runs, || sl = Some(SlabLocator::from_dcel(&dcel)));
+            let sl = sl.ok_or("no slab")?.map_err(|e| e.to_string())?;
+            if sl.locate_all(&queries).map_err(|e| e.to_string())? != ours {
+                return Err("slab and trapezoidal map answers differ".into());
+            }
+            let st = best_of(qruns, || {
+                let mut acc = 0usize;
+                for &q in &queries {
+                    if let Ok(Location::Face(f)) = sl.locate(q) {
+                        acc = acc.wrapping_add(f.0);
+                    }
+                }
+                acc
+            });
+            format!(
+                "{:.0} ms, {:.2} M q/s, {:.1} M pairs",
+                ms(sb),
+                nq as f64 / st.as_secs_f64() / 1e6,
+                sl.entry_count() as f64 / 1e6
+            )
+        } else {
+            "—".to_string()
+        };
         let brute = if target <= 10_000 {
             let few = &queries[..1000];
             for &q in few {
@@ -179,7 +211,7 @@ pub fn run(quick: bool) -> Result<(), String> {
         let st = loc.stats();
         let rate = |d: std::time::Duration| nq as f64 / d.as_secs_f64() / 1e6;
         println!(
-            "| {} | {} | {:.0} | {:.0} | {:.2} M | {:.2} M | {:.2} | {:.2} M | {} | {} | {:.1} | {} |",
+            "| {} | {} | {:.0} | {:.0} | {:.2} M | {:.2} M | {:.2} | {:.2} M | {} | {} | {} | {:.1} | {} |",
             segs.len(),
             tris.len(),
             ms(build),
@@ -188,6 +220,7 @@ pub fn run(quick: bool) -> Result<(), String> {
             rate(theirs_t),
             theirs_t.as_secs_f64() / ours_t.as_secs_f64(),
             rate(par_t),
+            slab,
             brute,
             st.nodes,
             st.nodes as f64 / segs.len() as f64,

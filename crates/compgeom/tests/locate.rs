@@ -4,13 +4,14 @@
 //! random points on small integer grids (many equal x), random rectangle grids, random
 //! polygon layers with shared edges, holes and T-junctions; queries on a half-integer
 //! grid (exactly on edges and at vertices) and at random.
-use compgeom::dcel::FaceId;
+use compgeom::dcel::{FaceId, HalfEdgeId};
 use compgeom::delaunay::delaunay;
-use compgeom::kernel::{orient2d, Orientation};
+use compgeom::kernel::{orient2d, orient_exact, ExactPoint, Orientation};
 use compgeom::locate::{
     check_interior_disjoint_segments, check_no_crossings, polygons_at, Location, MapHit,
-    PointLocator, TrapezoidalMap,
+    PointLocator, SlabLocator, TrapezoidalMap,
 };
+use compgeom::overlay::overlay_polygons;
 use compgeom::{MultiPolygon, Point2, Polygon, Segment2};
 use proptest::prelude::*;
 use std::cmp::Ordering;
@@ -103,6 +104,9 @@ fn check_layer(polys: &MultiPolygon, queries: &[Point2], seed: u64) {
         PointLocator::from_dcel_with_seed(&dcel, seed).expect("the same subdivision, reseeded");
     seeded.map().validate().unwrap();
     let all = seeded.locate_all(queries).unwrap();
+    // The slab method gives the same answers (checked against brute force below).
+    let slab = SlabLocator::from_dcel(&dcel).unwrap();
+    assert_eq!(slab.locate_all(queries).unwrap(), all);
     for (i, &q) in queries.iter().enumerate() {
         let got = loc.locate(q).unwrap();
         assert_eq!(got, all[i], "seeds disagree at {q:?}");
@@ -535,4 +539,155 @@ fn grid_started_queries_match_brute_force() {
     let mut queries = grid_queries(0.0, 20.0);
     queries.extend((0..2000).map(|_| p(next(2100) / 100.0, next(1300) / 100.0)));
     check_layer(&layer, &queries, 7);
+}
+
+/// Brute-force location in a subdivision whose vertices may be constructed: the vertex
+/// equal to q, else the edge (index) whose relative interior holds q, else `None` (in a
+/// face). Exact, over every vertex and edge.
+fn brute_dcel<V, E, F>(d: &compgeom::dcel::Dcel<V, E, F>, q: Point2) -> Option<Location> {
+    let qe = ExactPoint::Input(q);
+    for v in d.vertex_ids() {
+        if d.vertex(v).point.compare_xy(&qe) == Ordering::Equal {
+            return Some(Location::Vertex(v));
+        }
+    }
+    for e in 0..d.edge_count() {
+        let h = HalfEdgeId(2 * e);
+        let (a, b) = (d.origin_point(h), d.origin_point(d.twin(h)));
+        let (lo, hi) = if a.compare_xy(b) == Ordering::Less {
+            (a, b)
+        } else {
+            (b, a)
+        };
+        if orient_exact(a, b, &qe) == Orientation::Collinear
+            && lo.compare_xy(&qe) == Ordering::Less
+            && qe.compare_xy(hi) == Ordering::Less
+        {
+            return Some(Location::Edge(h));
+        }
+    }
+    None
+}
+
+fn triangle_layer(tris: &[[(u8, u8); 3]]) -> MultiPolygon {
+    MultiPolygon(
+        tris.iter()
+            .filter(|t| {
+                let [a, b, c] = t.map(|(x, y)| p(x as f64, y as f64));
+                orient2d(a, b, c) != Orientation::Collinear
+            })
+            .map(|t| {
+                Polygon::new(
+                    t.iter().map(|&(x, y)| p(x as f64, y as f64)).collect(),
+                    vec![],
+                )
+            })
+            .collect(),
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Location in an overlay of two layers of crossing triangles, whose vertices are
+    /// mostly constructed crossings: against brute force over the overlay's vertices and
+    /// edges, and point-in-polygon over both input layers for the faces. Queries on the
+    /// half-integer grid, at every vertex (rounded) and at random.
+    #[test]
+    fn overlay_results_with_constructed_vertices(
+        a in prop::collection::vec(prop::array::uniform3((0u8..=8, 0u8..=8)), 1..5),
+        b in prop::collection::vec(prop::array::uniform3((0u8..=8, 0u8..=8)), 1..5),
+        rnd in prop::collection::vec((0.0f64..8.0, 0.0f64..8.0), 40),
+        seed in any::<u64>(),
+    ) {
+        let (la, lb) = (triangle_layer(&a), triangle_layer(&b));
+        let o = overlay_polygons(&la, &lb).unwrap();
+        let loc = PointLocator::from_dcel_with_seed(&o, seed).unwrap();
+        loc.map().validate().unwrap();
+        let mut queries = grid_queries(0.0, 8.0);
+        queries.extend(o.vertex_ids().map(|v| o.vertex(v).approx));
+        queries.extend(rnd.iter().map(|&(x, y)| p(x, y)));
+        let all = loc.locate_all(&queries).unwrap();
+        let slab = SlabLocator::from_dcel(&o).unwrap();
+        for (&q, &got) in queries.iter().zip(&all) {
+            prop_assert_eq!(got, loc.locate(q).unwrap());
+            prop_assert_eq!(got, slab.locate(q).unwrap());
+            match (brute_dcel(&o, q), got) {
+                (Some(Location::Vertex(v)), Location::Vertex(w)) => prop_assert_eq!(v, w),
+                (Some(Location::Edge(h)), Location::Edge(g)) => {
+                    prop_assert_eq!(h.0 / 2, g.0 / 2, "edge at {:?}", q);
+                    // The reported half-edge runs left to right.
+                    let (s, t) = (o.origin_point(g), o.origin_point(o.twin(g)));
+                    prop_assert_eq!(s.compare_xy(t), Ordering::Less);
+                }
+                (None, Location::Face(f)) => {
+                    let (ka, wa) = brute(&la, q);
+                    let (kb, wb) = brute(&lb, q);
+                    prop_assert_eq!((ka, kb), ("face", "face"));
+                    prop_assert_eq!(&o.face(f).data, &(wa, wb), "labels at {:?}", q);
+                }
+                (want, got) => prop_assert!(false, "at {:?}: want {:?}, got {:?}", q, want, got),
+            }
+        }
+    }
+}
+
+/// A larger overlay (hundreds of edges, so the query grid is used, and exact nodes meet
+/// the grid's box tests) against the same brute force.
+#[test]
+fn large_overlay_with_constructed_vertices() {
+    let mut s = 0x2545_F491_4F6C_DD1Du64;
+    let mut next = |m: u64| {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s % m) as u8
+    };
+    let mut layer = || -> Vec<[(u8, u8); 3]> {
+        (0..14)
+            .map(|_| {
+                [
+                    (next(30), next(30)),
+                    (next(30), next(30)),
+                    (next(30), next(30)),
+                ]
+            })
+            .collect()
+    };
+    let (la, lb) = (triangle_layer(&layer()), triangle_layer(&layer()));
+    let o = overlay_polygons(&la, &lb).unwrap();
+    assert!(o.edge_count() > 200, "{}", o.edge_count());
+    let loc = PointLocator::from_dcel(&o).unwrap();
+    loc.map().validate().unwrap();
+    let mut queries = grid_queries(0.0, 30.0);
+    queries.extend(o.vertex_ids().map(|v| o.vertex(v).approx));
+    let all = loc.locate_all(&queries).unwrap();
+    assert_eq!(
+        SlabLocator::from_dcel(&o)
+            .unwrap()
+            .locate_all(&queries)
+            .unwrap(),
+        all
+    );
+    let mut constructed_hits = 0;
+    for (&q, &got) in queries.iter().zip(&all) {
+        match (brute_dcel(&o, q), got) {
+            (Some(Location::Vertex(v)), Location::Vertex(w)) => {
+                assert_eq!(v, w);
+                if matches!(o.vertex(v).point, ExactPoint::Crossing(_)) {
+                    constructed_hits += 1;
+                }
+            }
+            (Some(Location::Edge(h)), Location::Edge(g)) => assert_eq!(h.0 / 2, g.0 / 2),
+            (None, Location::Face(f)) => {
+                let (wa, wb) = (brute(&la, q).1, brute(&lb, q).1);
+                assert_eq!(o.face(f).data, (wa, wb), "labels at {q:?}");
+            }
+            (want, got) => panic!("at {q:?}: want {want:?}, got {got:?}"),
+        }
+    }
+    assert!(
+        constructed_hits > 0,
+        "no query hit a constructed vertex exactly"
+    );
 }

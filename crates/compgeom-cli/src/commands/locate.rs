@@ -6,9 +6,12 @@ use crate::cli::{InputArgs, InputFormat, OutputArgs, OutputFormat};
 use crate::error::CliError;
 use crate::output;
 use clap::Args;
-use compgeom::dcel::FaceId;
+use compgeom::dcel::{Dcel, FaceId, HalfEdgeId};
 use compgeom::io::{read_polygons, read_segments};
-use compgeom::locate::{polygons_at, Location, PointLocator, DEFAULT_SEED};
+use compgeom::kernel::{orient2d, orient_exact, ExactPoint, Orientation};
+use compgeom::locate::{
+    polygons_at, polygons_dcel, segments_dcel, Location, PointLocator, SlabLocator, DEFAULT_SEED,
+};
 use compgeom::render::{Layer, Picture, Style};
 use compgeom::{Bbox2, Point2};
 use serde_json::{json, Value};
@@ -33,13 +36,24 @@ JSON output (--format json, the default) is one object:
            edge, or at a vertex of the subdivision.
 Polygons are numbered in reading order (a MultiPolygon feature gives several). Every
 decision is exact. --seed picks the random insertion order (the answers do not depend on
-it, only the search structure does). --verify checks the map's and the subdivision's
-invariants. --svg draws the trapezoidal map with its vertical extensions and the query
-points coloured by answer.
+it, only the search structure does). --locator picks the structure answering the queries:
+trap (the trapezoidal map and its randomized search structure, expected O(n log n) build,
+O(n) space) or slab (the slab method: O(n log n + S) build and O(n + S) space for S
+(slab, edge) pairs, quadratic in the worst case; an error beyond 2^28 pairs); both give
+the same answers in O(log n) per query. --verify checks the subdivision's and the
+trapezoidal map's invariants, and the answers: every query (or 2000 spread over the
+input, if more; fewer for maps over 10^4 edges, about 2*10^7 / edges) against an exact
+brute force over all vertices and edges (the vertex equal to the point, else the edge
+holding it) and, in a polygon layer, exact point-in-polygon over every polygon for the
+features; every query (or 20000 spread) is also answered by the other locator, which
+must agree (skipped when the slab method would exceed its size limit). --svg draws the trapezoidal map
+with its vertical extensions and the query points coloured by answer (whatever the
+locator).
 
 Examples:
   compgeom locate districts.geojson --queries stops.csv
-  compgeom locate walls.wkt --queries probes.csv --seed 7 --svg map.svg";
+  compgeom locate walls.wkt --queries probes.csv --seed 7 --svg map.svg
+  compgeom locate districts.geojson --queries stops.csv --locator slab --verify";
 
 /// Arguments of `compgeom locate`.
 #[derive(Debug, Clone, Args)]
@@ -60,9 +74,171 @@ pub struct LocateArgs {
     #[arg(long, value_name = "N", default_value_t = DEFAULT_SEED)]
     pub seed: u64,
 
+    /// The point-location structure: the trapezoidal map or the slab method.
+    #[arg(long, value_enum, value_name = "KIND", default_value = "trap")]
+    pub locator: LocatorKind,
+
     /// Output, picture and verification.
     #[command(flatten)]
     pub output: OutputArgs,
+}
+
+/// Which structure answers the queries.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum LocatorKind {
+    /// The trapezoidal map with its randomized search structure (book §6.1–6.3).
+    Trap,
+    /// The slab method (book §6.1, introduction).
+    Slab,
+}
+
+/// Locate the queries in `dcel` with the chosen structure; the trapezoidal map too when
+/// it is used or needed for the picture.
+fn answer<V, E, F>(
+    dcel: &Dcel<V, E, F>,
+    args: &LocateArgs,
+    queries: &[Point2],
+) -> Result<(Vec<Location>, Option<PointLocator>), CliError> {
+    let trap = if args.locator == LocatorKind::Trap || args.output.svg.is_some() {
+        Some(PointLocator::from_dcel_with_seed(dcel, args.seed)?)
+    } else {
+        None
+    };
+    let found = match (&trap, args.locator) {
+        (Some(t), LocatorKind::Trap) => t.locate_all(queries)?,
+        _ => SlabLocator::from_dcel(dcel)?.locate_all(queries)?,
+    };
+    if args.output.verify {
+        verify(dcel, args, queries, &found)?;
+    }
+    Ok((found, trap))
+}
+
+/// How many queries the O(n)-per-query brute force checks for a map of `edges` edges:
+/// 2000, fewer for large maps (about 2·10⁷ edge tests in all).
+fn brute_sample(edges: usize) -> usize {
+    (20_000_000 / edges.max(1)).clamp(20, 2000)
+}
+
+/// The indices of at most `most` queries spread over `0..n` (all when n <= most).
+fn sample(n: usize, most: usize) -> impl Iterator<Item = usize> {
+    let step = n.div_ceil(most).max(1);
+    (0..n).step_by(step)
+}
+
+/// `--verify`: the subdivision's and the map's invariants, the answers against exact brute
+/// force on a sample, and against the other locator.
+fn verify<V, E, F>(
+    dcel: &Dcel<V, E, F>,
+    args: &LocateArgs,
+    queries: &[Point2],
+    found: &[Location],
+) -> Result<(), CliError> {
+    dcel.validate()?;
+    let trap = PointLocator::from_dcel_with_seed(dcel, args.seed)?;
+    trap.map().validate()?;
+    let fail = |i: usize, what: String| {
+        let q = queries[i];
+        CliError::failure(format!(
+            "verification failed at query {i} ({}, {}): {what}",
+            q.x, q.y
+        ))
+    };
+    for i in sample(queries.len(), brute_sample(dcel.edge_count())) {
+        let want = brute_location(dcel, queries[i]);
+        let ok = match (want, found[i]) {
+            (Some(Location::Edge(h)), Location::Edge(g)) => h.0 / 2 == g.0 / 2,
+            (Some(w), g) => w == g,
+            (None, g) => matches!(g, Location::Face(_)),
+        };
+        if !ok {
+            return Err(fail(
+                i,
+                format!("answered {:?}, brute force {:?}", found[i], want),
+            ));
+        }
+    }
+    let idx: Vec<usize> = sample(queries.len(), 20_000).collect();
+    let qs: Vec<Point2> = idx.iter().map(|&i| queries[i]).collect();
+    let other = match args.locator {
+        // Beyond the slab method's size limit only the brute force checks the answers.
+        LocatorKind::Trap => match SlabLocator::from_dcel(dcel) {
+            Ok(slab) => slab.locate_all(&qs)?,
+            Err(_) => return Ok(()),
+        },
+        LocatorKind::Slab => trap.locate_all(&qs)?,
+    };
+    for (k, &i) in idx.iter().enumerate() {
+        if other[k] != found[i] {
+            return Err(fail(
+                i,
+                format!("the locators disagree: {:?} and {:?}", found[i], other[k]),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Exact brute force over every vertex and edge: the vertex equal to `q`, else the edge
+/// (its left-to-right half-edge) holding `q` in its interior, else `None` (in a face).
+fn brute_location<V, E, F>(d: &Dcel<V, E, F>, q: Point2) -> Option<Location> {
+    let qe = ExactPoint::Input(q);
+    if let Some(v) = d
+        .vertex_ids()
+        .find(|&v| d.vertex(v).point.compare_xy(&qe).is_eq())
+    {
+        return Some(Location::Vertex(v));
+    }
+    (0..d.edge_count()).find_map(|e| {
+        let h = HalfEdgeId(2 * e);
+        let (a, b) = (d.origin_point(h), d.origin_point(d.twin(h)));
+        let (lo, hi, fwd) = if a.compare_xy(b).is_lt() {
+            (a, b, h)
+        } else {
+            (b, a, d.twin(h))
+        };
+        (orient_exact(a, b, &qe) == Orientation::Collinear
+            && lo.compare_xy(&qe).is_lt()
+            && qe.compare_xy(hi).is_lt())
+        .then_some(Location::Edge(fwd))
+    })
+}
+
+/// The polygons whose closed region holds `q`, by exact point-in-polygon (crossing number
+/// of the rightward ray; boundary points count as inside).
+fn brute_polygons(polys: &compgeom::MultiPolygon, q: Point2) -> Vec<usize> {
+    let on = |a: Point2, b: Point2| {
+        orient2d(a, b, q) == Orientation::Collinear
+            && q.x >= a.x.min(b.x)
+            && q.x <= a.x.max(b.x)
+            && q.y >= a.y.min(b.y)
+            && q.y <= a.y.max(b.y)
+    };
+    let mut out = Vec::new();
+    for (i, poly) in polys.0.iter().enumerate() {
+        let (mut boundary, mut inside) = (false, false);
+        for ring in poly.rings() {
+            for j in 0..ring.len() {
+                let (a, b) = (ring[j], ring[(j + 1) % ring.len()]);
+                boundary |= on(a, b);
+                if (a.y > q.y) != (b.y > q.y) {
+                    let o = orient2d(a, b, q);
+                    let wanted = if b.y > a.y {
+                        Orientation::CounterClockwise
+                    } else {
+                        Orientation::Clockwise
+                    };
+                    if o == wanted {
+                        inside = !inside;
+                    }
+                }
+            }
+        }
+        if boundary || inside {
+            out.push(i);
+        }
+    }
+    out
 }
 
 /// The map read: polygons, or segments.
@@ -103,14 +279,25 @@ pub fn run(args: &LocateArgs) -> Result<(), CliError> {
     // (locator, per-query JSON, per-query colour key for the picture)
     let (loc, results, faces) = match &map {
         Map::Polygons(polys) => {
-            let (loc, dcel) = PointLocator::from_polygons_with_seed(polys, args.seed)?;
-            if args.output.verify {
-                loc.map().validate()?;
-                dcel.validate()?;
-            }
-            let found = loc.locate_all(&queries)?;
+            let dcel = polygons_dcel(polys)?;
+            let (found, loc) = answer(&dcel, args, &queries)?;
             let mut results = Vec::with_capacity(found.len());
             let mut keys = Vec::with_capacity(found.len());
+            if args.output.verify {
+                for i in sample(queries.len(), brute_sample(dcel.edge_count())) {
+                    let (got, want) = (
+                        polygons_at(&dcel, found[i]),
+                        brute_polygons(polys, queries[i]),
+                    );
+                    if got != want {
+                        let q = queries[i];
+                        return Err(CliError::failure(format!(
+                            "verification failed at query {i} ({}, {}): polygons {got:?}, brute force {want:?}",
+                            q.x, q.y
+                        )));
+                    }
+                }
+            }
             for l in found {
                 let feature = polygons_at(&dcel, l).first().copied();
                 results.push(json!({"feature": feature, "on": on(l)}));
@@ -119,12 +306,8 @@ pub fn run(args: &LocateArgs) -> Result<(), CliError> {
             (loc, results, keys)
         }
         Map::Segments(segs) => {
-            let (loc, dcel) = PointLocator::from_segments_with_seed(segs, args.seed)?;
-            if args.output.verify {
-                loc.map().validate()?;
-                dcel.validate()?;
-            }
-            let found = loc.locate_all(&queries)?;
+            let dcel = segments_dcel(segs)?;
+            let (found, loc) = answer(&dcel, args, &queries)?;
             let mut results = Vec::with_capacity(found.len());
             let mut keys = Vec::with_capacity(found.len());
             for l in found {
@@ -150,12 +333,12 @@ pub fn run(args: &LocateArgs) -> Result<(), CliError> {
             (loc, results, keys)
         }
     };
-    if let Some(svg) = &args.output.svg {
+    if let (Some(svg), Some(loc)) = (&args.output.svg, &loc) {
         let (segs, is_polygons) = match &map {
             Map::Polygons(p) => (polygon_edges(p), true),
             Map::Segments(s) => (s.clone(), false),
         };
-        let pic = locate_picture(&loc, &segs, is_polygons, &queries, &faces);
+        let pic = locate_picture(loc, &segs, is_polygons, &queries, &faces);
         output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
     }
     let mut value = json!({ "results": results });

@@ -66,22 +66,30 @@ impl PointLocator {
         Self::from_dcel_with_seed(dcel, DEFAULT_SEED)
     }
 
-    /// The locator of a subdivision; `seed` draws the insertion order. Every vertex must
-    /// be an input point: a constructed crossing (from crossing input segments) is an
-    /// `Err` naming the vertex. Isolated vertices are not located (they are not on any
-    /// edge). Expected O(n log n) time and O(n) space for n edges.
+    /// The locator of a subdivision; `seed` draws the insertion order. Vertices may be
+    /// constructed crossings (as in the results of [`crate::overlay`]): the map then
+    /// decides everything about them with the kernel's exact predicates on
+    /// [`ExactPoint`]s (slower than on input points, still exact). Isolated vertices are
+    /// not located (they are not on any edge). Expected O(n log n) time and O(n) space
+    /// for n edges.
     pub fn from_dcel_with_seed<V, E, F>(dcel: &Dcel<V, E, F>, seed: u64) -> Result<PointLocator> {
         let mut points = Vec::with_capacity(dcel.vertex_count());
+        let mut exact = Vec::new();
+        let constructed = dcel
+            .vertex_ids()
+            .any(|v| matches!(dcel.vertex(v).point, ExactPoint::Crossing(_)));
         for v in dcel.vertex_ids() {
-            match dcel.vertex(v).point {
-                ExactPoint::Input(p) => points.push(p),
-                ExactPoint::Crossing(c) => {
-                    let a = c.approx();
-                    return Err(Error::InvalidInput(format!(
-                        "vertex {} at about ({}, {}) is a crossing of two segments; point location needs non-crossing segments",
-                        v.0, a.x, a.y
-                    )));
-                }
+            let p = dcel.vertex(v).point;
+            let a = p.approx();
+            if !a.is_finite() {
+                return Err(Error::NonFinite {
+                    what: format!("vertex {}", v.0),
+                    value: if a.x.is_finite() { a.y } else { a.x },
+                });
+            }
+            points.push(a);
+            if constructed {
+                exact.push(p);
             }
         }
         let mut segs = Vec::with_capacity(dcel.edge_count());
@@ -90,15 +98,16 @@ impl PointLocator {
             let h = HalfEdgeId(2 * e);
             let (a, b) = (dcel.half_edge(h).origin.0, dcel.destination(h).0);
             let (a, b) = (a as u32, b as u32);
-            let pair = if lex(points[a as usize], points[b as usize]) == Ordering::Less {
-                [a, b]
+            let less = if constructed {
+                exact[a as usize].compare_xy(&exact[b as usize]) == Ordering::Less
             } else {
-                [b, a]
+                lex(points[a as usize], points[b as usize]) == Ordering::Less
             };
+            let pair = if less { [a, b] } else { [b, a] };
             segs.push(pair);
             seg_input.push(e);
         }
-        let map = TrapezoidalMap::from_parts(points, segs, seg_input, seed)?;
+        let map = TrapezoidalMap::from_parts(points, exact, segs, seg_input, seed)?;
         // The half-edge of edge e running left to right has the face above e.
         let even_forward: Vec<bool> = (0..dcel.edge_count())
             .map(|e| dcel.half_edge(HalfEdgeId(2 * e)).origin.0 as u32 == map.core.segs[e][0])
@@ -141,8 +150,7 @@ impl PointLocator {
         segments: &[Segment2],
         seed: u64,
     ) -> Result<(PointLocator, SegmentsDcel)> {
-        check_no_crossings(segments)?;
-        let d = Dcel::from_segments(segments)?;
+        let d = segments_dcel(segments)?;
         Ok((Self::from_dcel_with_seed(&d, seed)?, d))
     }
 
@@ -159,28 +167,7 @@ impl PointLocator {
         polygons: &MultiPolygon,
         seed: u64,
     ) -> Result<(PointLocator, PolygonsDcel)> {
-        let (segs, owner) = polygon_segments(polygons)?;
-        if let Err(e) = check_no_crossings(&segs) {
-            // Name polygons rather than ring edges.
-            let msg = e.to_string();
-            let nums: Vec<usize> = msg
-                .split(|c: char| !c.is_ascii_digit())
-                .filter_map(|w| w.parse().ok())
-                .take(2)
-                .collect();
-            if let [a, b] = nums[..] {
-                if a < owner.len() && b < owner.len() {
-                    let at = msg.split_once("about ").map(|x| x.1).unwrap_or("");
-                    let at = at.split(';').next().unwrap_or("");
-                    return Err(Error::InvalidInput(format!(
-                        "the boundaries of polygons {} and {} cross at about {at} (edges {a} and {b}); point location needs non-crossing polygons",
-                        owner[a], owner[b]
-                    )));
-                }
-            }
-            return Err(e);
-        }
-        let d = Dcel::from_polygons(polygons)?;
+        let d = polygons_dcel(polygons)?;
         Ok((Self::from_dcel_with_seed(&d, seed)?, d))
     }
 
@@ -238,6 +225,40 @@ impl PointLocator {
     pub fn stats(&self) -> DagStats {
         self.map.stats()
     }
+}
+
+/// The subdivision of non-crossing segments, as the locators' `from_segments` build it
+/// (the first crossing pair is an `Err`).
+pub fn segments_dcel(segments: &[Segment2]) -> Result<SegmentsDcel> {
+    check_no_crossings(segments)?;
+    Dcel::from_segments(segments)
+}
+
+/// The subdivision of polygons whose boundaries do not cross, as the locators'
+/// `from_polygons` build it (the first crossing is an `Err` naming the two polygons).
+pub fn polygons_dcel(polygons: &MultiPolygon) -> Result<PolygonsDcel> {
+    let (segs, owner) = polygon_segments(polygons)?;
+    if let Err(e) = check_no_crossings(&segs) {
+        // Name polygons rather than ring edges.
+        let msg = e.to_string();
+        let nums: Vec<usize> = msg
+            .split(|c: char| !c.is_ascii_digit())
+            .filter_map(|w| w.parse().ok())
+            .take(2)
+            .collect();
+        if let [a, b] = nums[..] {
+            if a < owner.len() && b < owner.len() {
+                let at = msg.split_once("about ").map(|x| x.1).unwrap_or("");
+                let at = at.split(';').next().unwrap_or("");
+                return Err(Error::InvalidInput(format!(
+                    "the boundaries of polygons {} and {} cross at about {at} (edges {a} and {b}); point location needs non-crossing polygons",
+                    owner[a], owner[b]
+                )));
+            }
+        }
+        return Err(e);
+    }
+    Dcel::from_polygons(polygons)
 }
 
 /// The polygons whose closed region contains a located point of a subdivision built by

@@ -1,7 +1,7 @@
 //! [`TrapezoidalMap`]: the public face of the trapezoidal map of a set of segments.
 use super::check::check_interior_disjoint;
 use super::trapmap::{lex, Core, CoreHit, NONE};
-use crate::kernel::{Bbox2, Point2, Segment2};
+use crate::kernel::{Bbox2, ExactPoint, Point2, Segment2};
 use crate::lp::Shuffler;
 use crate::{Error, Result};
 use std::cmp::Ordering;
@@ -137,13 +137,15 @@ impl TrapezoidalMap {
             }
         }
         check_interior_disjoint(&points, &segs, &seg_input)?;
-        Self::from_parts(points, segs, seg_input, seed)
+        Self::from_parts(points, Vec::new(), segs, seg_input, seed)
     }
 
     /// Build from prepared parts (distinct points, lexicographically sorted distinct
-    /// endpoints, interior-disjoint segments).
+    /// endpoints, interior-disjoint segments). `exact`: the exact points when some are
+    /// constructed (`points` then holds them rounded), else empty.
     pub(crate) fn from_parts(
         points: Vec<Point2>,
+        exact: Vec<ExactPoint>,
         segs: Vec<[u32; 2]>,
         seg_input: Vec<usize>,
         seed: u64,
@@ -156,7 +158,7 @@ impl TrapezoidalMap {
         }
         let mut order: Vec<u32> = (0..segs.len() as u32).collect();
         Shuffler::new(seed).shuffle(&mut order);
-        let core = Core::build(points, segs, &order)?;
+        let core = Core::build(points, exact, segs, &order)?;
         Ok(TrapezoidalMap {
             core,
             seg_input,
@@ -306,10 +308,7 @@ impl TrapezoidalMap {
                     }
                 }
             }
-            if t.leftp != NONE
-                && t.rightp != NONE
-                && lex(c.points[t.leftp as usize], c.points[t.rightp as usize]) != Ordering::Less
-            {
+            if t.leftp != NONE && t.rightp != NONE && c.cmp(t.leftp, t.rightp) != Ordering::Less {
                 return bad(format!(
                     "trapezoid {i} has its left point not before its right"
                 ));
@@ -319,16 +318,14 @@ impl TrapezoidalMap {
                     continue;
                 }
                 let [l, r] = c.segs[s as usize];
-                let (lp, rp) = (c.points[l as usize], c.points[r as usize]);
                 let inside = |p: u32, left: bool| {
                     if p == NONE {
                         return false;
                     }
-                    let q = c.points[p as usize];
                     if left {
-                        lex(lp, q) != Ordering::Greater
+                        c.cmp(l, p) != Ordering::Greater
                     } else {
-                        lex(q, rp) != Ordering::Greater
+                        c.cmp(p, r) != Ordering::Greater
                     }
                 };
                 if !inside(t.leftp, true) || !inside(t.rightp, false) {

@@ -11,6 +11,8 @@
 //!   trapezoid labelled with its face: a query answers the face, or the edge or vertex
 //!   it lies on ([`Location`]). Built from a DCEL, from segments or from polygons;
 //!   [`PointLocator::locate_all`] answers batches in parallel.
+//! * [`SlabLocator`] (§6.1, introduction): the simple slab method, O(log n) query but
+//!   up to O(n²) space; the same answers, for comparison.
 //!
 //! ## Exactness and degenerate input (§6.3)
 //!
@@ -29,13 +31,20 @@
 //! proper crossings ([`check_no_crossings`]). Both checks are exact (the intersection
 //! sweep) and name the offending pair.
 //!
-//! Layout: flat `Vec` arenas with `u32` indices (a node is 16 bytes, a trapezoid 32),
-//! children stored after their parents; a query is a tight loop over the nodes.
+//! Layout: flat `Vec` arenas with `u32` indices. For queries D is frozen into 40-byte
+//! nodes holding the coordinates they test; a uniform grid of cells taller than wide
+//! (about eight per segment) gives each cell the deepest node that all its points pass
+//! (computed exactly), so a query skips the top of D, and the nodes below each cell's
+//! start are stored together.
 mod check;
 mod locator;
 mod map;
+mod slab;
 mod trapmap;
 
 pub use check::{check_interior_disjoint_segments, check_no_crossings};
-pub use locator::{polygons_at, Location, PointLocator, PolygonsDcel, SegmentsDcel};
+pub use locator::{
+    polygons_at, polygons_dcel, segments_dcel, Location, PointLocator, PolygonsDcel, SegmentsDcel,
+};
 pub use map::{DagStats, MapHit, Trapezoid, TrapezoidalMap, DEFAULT_SEED};
+pub use slab::{SlabLocator, SLAB_MAX_ENTRIES};

@@ -22,7 +22,7 @@
 //! compares the other endpoint `q` with that segment (the segment leaving `p` more
 //! steeply is above). A query that hits an x-node's point exactly is reported as that
 //! vertex; one on a y-node's segment (orientation zero) as that segment.
-use crate::kernel::{orient2d, Orientation, Point2};
+use crate::kernel::{orient2d, orient_exact, ExactPoint, Orientation, Point2};
 use crate::{Error, Result};
 use std::cmp::Ordering;
 
@@ -85,7 +85,11 @@ pub(crate) enum CoreHit {
 /// The trapezoidal map and its search structure over points and segments given by index.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Core {
+    /// The points, rounded to `f64` where constructed.
     pub points: Vec<Point2>,
+    /// The exact points when some are constructed (crossings), else empty: then every
+    /// decision about the points uses the exact predicates of [`crate::kernel`].
+    pub exact: Vec<ExactPoint>,
     /// Endpoints `[left, right]` in lexicographic order.
     pub segs: Vec<[u32; 2]>,
     pub traps: Vec<Trap>,
@@ -111,6 +115,16 @@ pub(crate) fn lex(a: Point2, b: Point2) -> Ordering {
     }
 }
 
+/// An orientation as an ordering: `Greater` is counter-clockwise (left, above).
+#[inline]
+pub(crate) fn ordering(o: Orientation) -> Ordering {
+    match o {
+        Orientation::CounterClockwise => Ordering::Greater,
+        Orientation::Clockwise => Ordering::Less,
+        Orientation::Collinear => Ordering::Equal,
+    }
+}
+
 /// Exact orientation of `c` relative to the directed line `a → b`: `Greater` when `c` is
 /// to the left (above, for `a <_lex b`). A floating-point filter (Shewchuk's first
 /// error bound, valid while nothing under- or overflows) and the adaptive exact
@@ -131,11 +145,7 @@ pub(crate) fn orient(a: Point2, b: Point2, c: Point2) -> Ordering {
             return Ordering::Less;
         }
     }
-    match orient2d(a, b, c) {
-        Orientation::CounterClockwise => Ordering::Greater,
-        Orientation::Clockwise => Ordering::Less,
-        Orientation::Collinear => Ordering::Equal,
-    }
+    ordering(orient2d(a, b, c))
 }
 
 fn broken(what: String) -> Error {
@@ -149,9 +159,15 @@ impl Core {
     /// Preconditions (checked by the callers, exactly): points distinct and finite,
     /// each segment's endpoints distinct and lexicographically sorted, segments meeting
     /// only at common endpoints. A violated precondition met on the way gives an `Err`.
-    pub fn build(points: Vec<Point2>, segs: Vec<[u32; 2]>, order: &[u32]) -> Result<Core> {
+    pub fn build(
+        points: Vec<Point2>,
+        exact: Vec<ExactPoint>,
+        segs: Vec<[u32; 2]>,
+        order: &[u32],
+    ) -> Result<Core> {
         let mut core = Core {
             points,
+            exact,
             segs,
             traps: Vec::with_capacity(4 * order.len() + 1),
             nodes: Vec::with_capacity(8 * order.len() + 1),
@@ -179,9 +195,31 @@ impl Core {
         Ok(core)
     }
 
+    /// Lexicographic comparison of points `a` and `b`, exact.
+    #[inline]
+    pub fn cmp(&self, a: u32, b: u32) -> Ordering {
+        if self.exact.is_empty() {
+            lex(self.points[a as usize], self.points[b as usize])
+        } else {
+            self.exact[a as usize].compare_xy(&self.exact[b as usize])
+        }
+    }
+
+    /// Orientation of point `c` relative to the line from point `a` to point `b`, exact.
+    #[inline]
+    pub fn side(&self, a: u32, b: u32, c: u32) -> Ordering {
+        if self.exact.is_empty() {
+            let p = &self.points;
+            orient(p[a as usize], p[b as usize], p[c as usize])
+        } else {
+            let e = &self.exact;
+            ordering(orient_exact(&e[a as usize], &e[b as usize], &e[c as usize]))
+        }
+    }
+
     /// The trapezoid containing the point just to the right of `p` along segment `s`
     /// (whose left endpoint is `p` and right endpoint `q`).
-    fn find_start(&self, p: Point2, q: Point2) -> Result<u32> {
+    fn find_start(&self, p: u32, q: u32) -> Result<u32> {
         let mut n = 0usize;
         loop {
             let node = self.nodes[n];
@@ -189,7 +227,7 @@ impl Core {
                 LEAF => return Ok(node.idx),
                 XNODE => {
                     // Equal goes right: the segment leaves p to the right.
-                    if lex(p, self.points[node.idx as usize]) == Ordering::Less {
+                    if self.cmp(p, node.idx) == Ordering::Less {
                         node.a
                     } else {
                         node.b
@@ -197,12 +235,12 @@ impl Core {
                 }
                 _ => {
                     let [l, r] = self.segs[node.idx as usize];
-                    let (l, r) = (self.points[l as usize], self.points[r as usize]);
-                    let side = match orient(l, r, p) {
+                    let side = match self.side(l, r, p) {
                         // p on the segment: a shared left endpoint; compare q instead.
-                        Ordering::Equal => orient(l, r, q),
+                        Ordering::Equal => self.side(l, r, q),
                         o => o,
                     };
+                    let (l, r) = (self.points[l as usize], self.points[r as usize]);
                     match side {
                         Ordering::Greater => node.a,
                         Ordering::Less => node.b,
@@ -272,17 +310,16 @@ impl Core {
     /// One step of TRAPEZOIDALMAP: add segment `s` to the map and to D.
     fn insert(&mut self, s: u32, b: &mut Builder) -> Result<()> {
         let [p, q] = self.segs[s as usize];
-        let (pp, qp) = (self.points[p as usize], self.points[q as usize]);
         // 1. FOLLOWSEGMENT: the trapezoids d0, ..., dk crossed by s.
         b.ds.clear();
-        b.ds.push(self.find_start(pp, qp)?);
+        b.ds.push(self.find_start(p, q)?);
         loop {
             let t = self.traps[*b.ds.last().unwrap_or(&0) as usize];
-            if t.rightp == NONE || lex(qp, self.points[t.rightp as usize]) != Ordering::Greater {
+            if t.rightp == NONE || self.cmp(q, t.rightp) != Ordering::Greater {
                 break;
             }
             let r = self.points[t.rightp as usize];
-            let next = match orient(pp, qp, r) {
+            let next = match self.side(p, q, t.rightp) {
                 Ordering::Greater => t.lr,
                 Ordering::Less => t.ur,
                 Ordering::Equal => {
@@ -338,7 +375,7 @@ impl Core {
             let (prev, cur) = (b.old[i - 1], b.old[i]);
             let (iprev, icur) = (b.ds[i - 1], b.ds[i]);
             let r = prev.rightp;
-            if orient(pp, qp, self.points[r as usize]) == Ordering::Greater {
+            if self.side(p, q, r) == Ordering::Greater {
                 // r above s: its extension now stops at s, splitting the part above s;
                 // the parts below s merge.
                 let u2 = self.new_trap(Trap::new(cur.top, s, r, NONE), b);
@@ -470,6 +507,9 @@ const LEAF_REF: u32 = 1 << 31;
 /// Flag in a node's `a`: the node is an x-node.
 const X_FLAG: u32 = 1 << 30;
 const REF_MASK: u32 = !X_FLAG;
+/// Flag in a node's `b`: the node's point or segment has a constructed point, so the
+/// node is decided by the exact predicates on [`ExactPoint`]s (its `c` is rounded).
+const EXACT_FLAG: u32 = 1 << 30;
 
 /// A node of the query layout: two child references (a leaf is folded into its
 /// parent's reference, so a query never loads it) and the coordinates it tests inline:
@@ -490,6 +530,9 @@ pub(crate) struct Frozen {
     /// The point (x-node) or segment (y-node) of each node, for reporting hits.
     item: Vec<u32>,
     root: u32,
+    /// The exact points and the segments, kept only when some points are constructed.
+    exact: Vec<ExactPoint>,
+    segs: Vec<[u32; 2]>,
     /// Where to start the search, per cell of a uniform grid over the points.
     grid: Grid,
     pub x_nodes: usize,
@@ -544,6 +587,12 @@ impl Frozen {
             nodes: Vec::with_capacity(order.len()),
             item: Vec::with_capacity(order.len()),
             root: reference(0),
+            exact: core.exact.clone(),
+            segs: if core.exact.is_empty() {
+                Vec::new()
+            } else {
+                core.segs.clone()
+            },
             grid: Grid::default(),
             x_nodes: 0,
             y_nodes: 0,
@@ -551,7 +600,17 @@ impl Frozen {
         };
         for &n in &order {
             let node = old[n as usize];
-            let (a, b) = (reference(node.a), reference(node.b));
+            let (a, mut b) = (reference(node.a), reference(node.b));
+            let constructed =
+                |p: u32| matches!(core.exact.get(p as usize), Some(ExactPoint::Crossing(_)));
+            let flagged = if node.kind == XNODE {
+                constructed(node.idx)
+            } else {
+                core.segs[node.idx as usize].into_iter().any(constructed)
+            };
+            if flagged {
+                b |= EXACT_FLAG;
+            }
             let q = if node.kind == XNODE {
                 f.x_nodes += 1;
                 let p = core.points[node.idx as usize];
@@ -574,18 +633,80 @@ impl Frozen {
             f.item.push(node.idx);
         }
         f.grid = Grid::new(&f, &core.points, core.segs.len());
+        f.relayout();
         f
     }
 
-    /// The deepest node on the common search path of every point of the closed box
-    /// `[x0, x1] × [y0, y1]`: below it, points of the box part ways. Exact: an x-node
-    /// is passed when the box is strictly on one side of its vertical line, a y-node
-    /// when all four corners are strictly on one side of its segment's line (then, by
+    /// Renumber the nodes for the queries' memory traffic: a query starts at its grid
+    /// cell's node, so the nodes below each cell's start (in preorder) are stored
+    /// together, cell after cell, and the nodes above every start come last.
+    fn relayout(&mut self) {
+        let n = self.nodes.len();
+        if self.grid.start.is_empty() || n == 0 {
+            return;
+        }
+        let mut id = vec![NONE; n];
+        let mut order: Vec<u32> = Vec::with_capacity(n);
+        let mut stack = Vec::new();
+        let mut place = |from: u32, id: &mut Vec<u32>, order: &mut Vec<u32>| {
+            stack.push(from);
+            while let Some(r) = stack.pop() {
+                if r & LEAF_REF != 0 || id[r as usize] != NONE {
+                    continue;
+                }
+                id[r as usize] = order.len() as u32;
+                order.push(r);
+                let node = &self.nodes[r as usize];
+                stack.push(node.b & !EXACT_FLAG);
+                stack.push(node.a & REF_MASK);
+            }
+        };
+        let mut last = NONE;
+        for &s in &self.grid.start {
+            if s != last {
+                place(s, &mut id, &mut order);
+                last = s;
+            }
+        }
+        place(self.root, &mut id, &mut order);
+        let re = |r: u32| if r & LEAF_REF != 0 { r } else { id[r as usize] };
+        let nodes = order
+            .iter()
+            .map(|&o| {
+                let q = self.nodes[o as usize];
+                QNode {
+                    a: re(q.a & REF_MASK) | (q.a & X_FLAG),
+                    b: re(q.b & !EXACT_FLAG) | (q.b & EXACT_FLAG),
+                    c: q.c,
+                }
+            })
+            .collect();
+        self.item = order.iter().map(|&o| self.item[o as usize]).collect();
+        self.nodes = nodes;
+        self.root = re(self.root);
+        for s in &mut self.grid.start {
+            *s = re(*s);
+        }
+    }
+
+    /// The deepest node on the common search path, below `from`, of every point of the
+    /// closed box `[x0, x1] × [y0, y1]` (whose points all reach `from`), and the number
+    /// of nodes passed: below it, points of the box part ways. Exact: an x-node is
+    /// passed when the box is strictly on one side of its vertical line, a y-node when
+    /// all four corners are strictly on one side of its segment's line (then, by
     /// convexity, so is the whole box).
-    fn common_start(&self, x0: f64, x1: f64, y0: f64, y1: f64) -> u32 {
-        let mut r = self.root;
+    fn common_start(&self, from: u32, x0: f64, x1: f64, y0: f64, y1: f64) -> (u32, usize) {
+        let (mut r, mut steps) = (from, 0);
         while r & LEAF_REF == 0 {
             let n = &self.nodes[r as usize];
+            if n.b & EXACT_FLAG != 0 {
+                match self.exact_box_step(r, x0, x1, y0, y1) {
+                    Some(next) => r = next,
+                    None => break,
+                }
+                steps += 1;
+                continue;
+            }
             r = if n.a & X_FLAG != 0 {
                 if x1 < n.c[0] {
                     n.a & REF_MASK
@@ -607,8 +728,70 @@ impl Frozen {
                     _ => break,
                 }
             };
+            steps += 1;
         }
-        r
+        (r, steps)
+    }
+
+    /// [`Frozen::common_start`]'s step at a node with constructed points: the child
+    /// every point of the box goes to, if they all go the same way.
+    #[cold]
+    fn exact_box_step(&self, r: u32, x0: f64, x1: f64, y0: f64, y1: f64) -> Option<u32> {
+        let n = &self.nodes[r as usize];
+        let item = self.item[r as usize] as usize;
+        let corners = [(x0, y0), (x1, y0), (x0, y1), (x1, y1)];
+        let sides: Vec<Ordering> = if n.a & X_FLAG != 0 {
+            let p = &self.exact[item];
+            corners
+                .iter()
+                .map(|&(x, y)| ExactPoint::Input(Point2::new(x, y)).compare_x(p))
+                .collect()
+        } else {
+            let [l, rp] = self.segs[item];
+            let (l, rp) = (&self.exact[l as usize], &self.exact[rp as usize]);
+            corners
+                .iter()
+                .map(|&(x, y)| {
+                    // Above the segment is the first child, like "left of" an x-node.
+                    ordering(orient_exact(l, rp, &ExactPoint::Input(Point2::new(x, y)))).reverse()
+                })
+                .collect()
+        };
+        match sides[0] {
+            Ordering::Equal => None,
+            o if sides.iter().any(|&x| x != o) => None,
+            Ordering::Less => Some(n.a & REF_MASK),
+            _ => Some(n.b & !EXACT_FLAG),
+        }
+    }
+
+    /// A query's step at a node with constructed points: the child it goes to, or what
+    /// it hit.
+    #[cold]
+    fn exact_step(&self, r: u32, q: Point2) -> std::result::Result<u32, CoreHit> {
+        let n = &self.nodes[r as usize];
+        let item = self.item[r as usize];
+        let qe = ExactPoint::Input(q);
+        if n.a & X_FLAG != 0 {
+            return match qe.compare_xy(&self.exact[item as usize]) {
+                Ordering::Less => Ok(n.a & REF_MASK),
+                Ordering::Greater => Ok(n.b & !EXACT_FLAG),
+                Ordering::Equal => Err(CoreHit::Point(item)),
+            };
+        }
+        let [li, ri] = self.segs[item as usize];
+        let (l, rp) = (&self.exact[li as usize], &self.exact[ri as usize]);
+        match ordering(orient_exact(l, rp, &qe)) {
+            Ordering::Greater => Ok(n.a),
+            Ordering::Less => Ok(n.b & !EXACT_FLAG),
+            Ordering::Equal => Err(if qe.compare_xy(l) == Ordering::Equal {
+                CoreHit::Point(li)
+            } else if qe.compare_xy(rp) == Ordering::Equal {
+                CoreHit::Point(ri)
+            } else {
+                CoreHit::Seg(item)
+            }),
+        }
     }
 
     /// Every trapezoid referenced by a leaf, with repetitions (for validation).
@@ -616,7 +799,7 @@ impl Frozen {
         let mut out: Vec<u32> = self
             .nodes
             .iter()
-            .flat_map(|n| [n.a & REF_MASK, n.b])
+            .flat_map(|n| [n.a & REF_MASK, n.b & !EXACT_FLAG])
             .filter(|r| r & LEAF_REF != 0)
             .map(|r| r & !LEAF_REF)
             .collect();
@@ -632,6 +815,13 @@ impl Frozen {
         let mut r = self.grid.start(q).unwrap_or(self.root);
         while r & LEAF_REF == 0 {
             let n = &nodes[r as usize];
+            if n.b & EXACT_FLAG != 0 {
+                match self.exact_step(r, q) {
+                    Ok(next) => r = next,
+                    Err(hit) => return hit,
+                }
+                continue;
+            }
             let next = if n.a & X_FLAG != 0 {
                 match lex(q, Point2::new(n.c[0], n.c[1])) {
                     Ordering::Less => n.a & REF_MASK,
@@ -677,6 +867,12 @@ struct Grid {
 }
 
 impl Grid {
+    /// The grid of a search structure over `points` (the segments' endpoints). The
+    /// early levels of D are dominated by the long vertical extensions of the first
+    /// endpoints, so square cells are split early; cells taller than wide start
+    /// deeper. The aspect ratio is chosen by trying a few on a coarse grid and keeping
+    /// the one whose cells start deepest on average; the final grid has about eight
+    /// cells per segment (4 bytes each).
     fn new(f: &Frozen, points: &[Point2], segments: usize) -> Grid {
         if segments < 64 || points.is_empty() {
             return Grid::default();
@@ -690,29 +886,59 @@ impl Grid {
         if !(w > 0.0 && h > 0.0 && w.is_finite() && h.is_finite()) {
             return Grid::default();
         }
-        // About one cell per two segments, square cells.
-        let cells = (segments / 2) as f64;
-        let nx = ((cells * w / h).sqrt().ceil() as usize).clamp(1, 1 << 12);
-        let ny = ((cells * h / w).sqrt().ceil() as usize).clamp(1, 1 << 12);
+        let n = segments as f64;
+        let mut best = (f64::MIN, 1.0);
+        for aspect in [1.0, 4.0, 16.0, 64.0, 256.0, 1024.0] {
+            let (_, mean) = Self::build(f, lo, w, h, n, aspect);
+            if mean > best.0 {
+                best = (mean, aspect);
+            }
+        }
+        Self::build(f, lo, w, h, 8.0 * n, best.1).0
+    }
+
+    /// A grid of about `cells` cells over the box at `lo` of size `w × h`, cells
+    /// `aspect` times taller than wide (relative to the box), and the mean depth of
+    /// its cells' start nodes.
+    fn build(f: &Frozen, lo: Point2, w: f64, h: f64, cells: f64, aspect: f64) -> (Grid, f64) {
+        let nx = ((cells * aspect * w / h).sqrt().ceil() as usize).clamp(1, 1 << 16);
+        let ny = ((cells / aspect * h / w).sqrt().ceil() as usize).clamp(1, 1 << 16);
         let xs: Vec<f64> = (0..=nx)
             .map(|i| lo.x + w * (i as f64 / nx as f64))
             .collect();
         let ys: Vec<f64> = (0..=ny)
             .map(|j| lo.y + h * (j as f64 / ny as f64))
             .collect();
-        let mut start = Vec::with_capacity(nx * ny);
-        for j in 0..ny {
-            for i in 0..nx {
-                start.push(f.common_start(xs[i], xs[i + 1], ys[j], ys[j + 1]));
+        let mut start = vec![NONE; nx * ny];
+        let mut total = 0usize;
+        // Coarse to fine: a block's common path is a prefix of each of its cells' paths.
+        let mut stack = vec![(0usize, nx, 0usize, ny, f.root, 0usize)];
+        while let Some((i0, i1, j0, j1, from, depth)) = stack.pop() {
+            let (r, steps) = f.common_start(from, xs[i0], xs[i1], ys[j0], ys[j1]);
+            let depth = depth + steps;
+            if (i1 - i0 == 1 && j1 - j0 == 1) || r & LEAF_REF != 0 {
+                for j in j0..j1 {
+                    start[j * nx + i0..j * nx + i1].fill(r);
+                }
+                total += depth * (i1 - i0) * (j1 - j0);
+            } else if i1 - i0 >= j1 - j0 {
+                let m = (i0 + i1) / 2;
+                stack.push((i0, m, j0, j1, r, depth));
+                stack.push((m, i1, j0, j1, r, depth));
+            } else {
+                let m = (j0 + j1) / 2;
+                stack.push((i0, i1, j0, m, r, depth));
+                stack.push((i0, i1, m, j1, r, depth));
             }
         }
-        Grid {
+        let grid = Grid {
             inv_w: nx as f64 / w,
             inv_h: ny as f64 / h,
             xs,
             ys,
             start,
-        }
+        };
+        (grid, total as f64 / (nx * ny) as f64)
     }
 
     /// The start node for `q`, if `q` is (exactly) inside the cell its coordinates round to.
