@@ -9,6 +9,10 @@
 //! * [`triangulate`]: both together for simple polygons and polygons with holes
 //!   (Theorem 3.8), O(n log n); a polygon that is already monotone skips the sweep (O(n)).
 //!   [`triangulate_multipolygon`] does each polygon of a multipolygon.
+//! * [`triangulate_subdivision`] (and [`triangulate_segments`]): every face of a planar
+//!   subdivision inside its bounding box (Theorem 3.9), one MAKEMONOTONE sweep over the
+//!   whole plane graph, O(n log n); each triangle knows its face. Verifier:
+//!   [`verify_subdivision_triangulation`].
 //! * [`art_gallery`]: the dual graph, a 3-colouring by depth-first search and the
 //!   smallest colour class as guards (§3.1, Theorem 3.3): at most ⌊n/3⌋ guards for a
 //!   simple polygon; see [`guards`](art_gallery) for holes.
@@ -55,6 +59,8 @@ mod geometry;
 mod guards;
 mod make_monotone;
 mod monotone;
+mod planar;
+mod planar_verify;
 mod status;
 mod subdivision;
 mod touching;
@@ -62,6 +68,8 @@ mod verify;
 
 pub use classify::VertexType;
 pub use guards::{art_gallery, verify_art_gallery, ArtGallery};
+pub use planar::{triangulate_segments, triangulate_subdivision, SubdivisionTriangulation};
+pub use planar_verify::verify_subdivision_triangulation;
 pub use verify::verify_triangulation;
 
 use crate::dcel::{Dcel, Source};
