@@ -197,6 +197,14 @@ pub fn verify_subdivision_triangulation<V, E, F>(
     if t.edges.len() != dcel.edge_count() {
         return fail("not one entry per subdivision edge".into());
     }
+    // Triangle edges in both directions (a subdivision edge on the box has a triangle on
+    // one side only).
+    let mut both: Vec<u64> = edges
+        .iter()
+        .flat_map(|&(e, _)| [e, e.rotate_right(32)])
+        .collect();
+    both.sort_unstable();
+    both.dedup();
     for (i, &[a, z]) in t.edges.iter().enumerate() {
         let h = HalfEdgeId(2 * i);
         if [a, z] != [dcel.half_edge(h).origin.0, dcel.destination(h).0] {
@@ -206,11 +214,11 @@ pub fn verify_subdivision_triangulation<V, E, F>(
         let mut cur = a;
         while cur != z {
             // The triangle edge leaving `cur` along a → z, towards z.
-            let lo = edges.partition_point(|x| x.0 < code(cur, 0));
-            let hi = edges.partition_point(|x| x.0 <= code(cur, u32::MAX as usize));
-            let step = edges[lo..hi]
+            let lo = both.partition_point(|&x| x < code(cur, 0));
+            let hi = both.partition_point(|&x| x <= code(cur, u32::MAX as usize));
+            let step = both[lo..hi]
                 .iter()
-                .map(|x| (x.0 & 0xffff_ffff) as usize)
+                .map(|&x| (x & 0xffff_ffff) as usize)
                 .find(|&w| {
                     let pw = pts[w];
                     orient2d(pa, pz, pw) == Orientation::Collinear && between(pts[cur], pw, pz)
