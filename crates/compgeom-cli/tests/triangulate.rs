@@ -122,3 +122,66 @@ fn self_intersecting_polygon_is_bad_input_naming_edges() {
         .assert()
         .code(2);
 }
+
+#[test]
+fn triangulate_subdivision_of_a_layer_and_of_segments() {
+    // Two squares sharing an edge, the left one with a square hole, in a box grown by 1.
+    let layer = "MULTIPOLYGON (((0 0, 2 0, 2 2, 0 2, 0 0), (0.5 0.5, 1.5 0.5, 1.5 1.5, 0.5 1.5, 0.5 0.5)), ((2 0, 4 0, 4 2, 2 2, 2 0)))\n";
+    let v = run_json(
+        &[
+            "triangulate",
+            "-",
+            "--input-format",
+            "wkt",
+            "--subdivision",
+            "--box",
+            "1",
+            "--verify",
+        ],
+        layer,
+    );
+    assert_eq!(v["verified"], true);
+    let (verts, tris) = (&v["vertices"], v["triangles"].as_array().unwrap());
+    // 10 vertices + 4 box corners, 4 on the box: 2·14 − 4 − 2 triangles.
+    assert_eq!(verts.as_array().unwrap().len(), 14);
+    assert_eq!(tris.len(), 22);
+    let total: f64 = tris.iter().map(|t| area2(verts, t)).sum();
+    assert_eq!(total, 2.0 * 6.0 * 4.0);
+    // Area per polygon label: 4 − 1 inside polygon 0, 4 inside polygon 1.
+    let labels = v["labels"].as_array().unwrap();
+    let mut per = [0.0f64; 2];
+    for (t, l) in tris.iter().zip(labels) {
+        for k in l.as_array().unwrap() {
+            per[k.as_u64().unwrap() as usize] += area2(verts, t);
+        }
+    }
+    assert_eq!(per, [6.0, 8.0]);
+    // Segments: one diagonal of the box, margin 0: two triangles, both unbounded.
+    let v = run_json(
+        &[
+            "triangulate",
+            "-",
+            "--input-format",
+            "wkt",
+            "--subdivision",
+            "--verify",
+        ],
+        "LINESTRING (0 0, 4 4)\n",
+    );
+    assert_eq!(v["triangles"].as_array().unwrap().len(), 2);
+    assert_eq!(v["faces"], serde_json::json!([0, 0]));
+    // Bad margin: bad input (exit 2) with a message.
+    compgeom()
+        .args([
+            "triangulate",
+            "-",
+            "--input-format",
+            "wkt",
+            "--subdivision",
+            "--box=-1",
+        ])
+        .write_stdin(layer)
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains("margin"));
+}

@@ -7,11 +7,11 @@ use crate::commands::boolean::read_layer;
 use crate::error::CliError;
 use crate::output;
 use clap::Args;
-use compgeom::io::{write_shape, Shape};
+use compgeom::io::{read_polygons, read_segments, write_shape, Shape};
 use compgeom::render::{Layer, Picture, Style};
 use compgeom::triangulate::{
-    monotone_partition, triangulate, verify_triangulation, MonotonePartition, Triangulation,
-    VertexType,
+    monotone_partition, triangulate, triangulate_subdivision, verify_subdivision_triangulation,
+    verify_triangulation, MonotonePartition, Triangulation, VertexType,
 };
 use compgeom::{MultiPolygon, Point2, Polygon, Segment2};
 use serde_json::{json, Value};
@@ -33,9 +33,18 @@ JSON output (--format json, the default) is one object:
 --format geojson / wkt prints the triangles as a MultiPolygon. A self-intersecting
 polygon is an error naming the two edges and the point.
 
+With --subdivision, INPUT is a polygon layer (polygons may share edges and overlap) or
+segments (touching, not crossing), and every face of the subdivision they form is
+triangulated inside its bounding box grown by --box MARGIN (default 0), the unbounded
+face too (book Theorem 3.9). JSON: vertices (the subdivision's, then box corners),
+triangles (counter-clockwise), faces (per triangle, the face of the subdivision, 0 =
+unbounded), labels (polygon input only: per triangle the polygons containing it),
+boundary (the box's vertices, counter-clockwise), verified (with --verify).
+
 Examples:
   compgeom triangulate gallery.wkt --svg gallery.svg --verify
-  compgeom triangulate map.geojson --monotone-pieces --svg pieces.svg";
+  compgeom triangulate map.geojson --monotone-pieces --svg pieces.svg
+  compgeom triangulate parcels.geojson --subdivision --box 10 --svg parcels.svg";
 
 /// Arguments of `compgeom triangulate`.
 #[derive(Debug, Clone, Args)]
@@ -47,6 +56,15 @@ pub struct TriangulateArgs {
     /// Also report (and draw) the monotone pieces of the MAKEMONOTONE sweep.
     #[arg(long)]
     pub monotone_pieces: bool,
+
+    /// Triangulate every face of the subdivision formed by the input (a polygon layer or
+    /// segments) inside its bounding box, the unbounded face included.
+    #[arg(long)]
+    pub subdivision: bool,
+
+    /// With --subdivision: grow the bounding box by MARGIN on every side (default 0).
+    #[arg(long = "box", value_name = "MARGIN", requires = "subdivision")]
+    pub box_margin: Option<f64>,
 
     /// Output, picture and verification.
     #[command(flatten)]
@@ -119,6 +137,9 @@ pub fn pieces_of(
 
 /// Run `compgeom triangulate`.
 pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
+    if args.subdivision {
+        return run_subdivision(args);
+    }
     let polygons = read_layer(&args.input)?;
     let t = triangulate_all(polygons, args.output.verify)?;
     let pieces = if args.monotone_pieces {
@@ -252,4 +273,109 @@ pub fn picture(t: &Triangulated, parts: Option<&[MonotonePartition]>, title: Str
 /// JSON of a point list.
 pub fn points_json(points: &[Point2]) -> Value {
     json!(points.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>())
+}
+
+/// `--subdivision`: every face of the subdivision formed by a polygon layer or segments,
+/// inside the (grown) bounding box.
+fn run_subdivision(args: &TriangulateArgs) -> Result<(), CliError> {
+    if args.monotone_pieces {
+        return Err(CliError::bad_input(
+            "--monotone-pieces is not available with --subdivision",
+        ));
+    }
+    let margin = args.box_margin.unwrap_or(0.0);
+    let src = args.input.read()?;
+    let (t, labels) = match read_polygons(&src.text, src.format, &src.name) {
+        Ok(layer) => {
+            let dcel = compgeom::dcel::Dcel::from_polygons(&layer)?;
+            let t = triangulate_subdivision(&dcel, margin)?;
+            if args.output.verify {
+                verify_subdivision_triangulation(&dcel, &t)?;
+            }
+            let labels: Vec<Vec<usize>> =
+                t.faces.iter().map(|&f| dcel.face(f).data.clone()).collect();
+            (t, Some(labels))
+        }
+        Err(pe) => {
+            let segs = read_segments(&src.text, src.format, &src.name).map_err(|_| pe)?;
+            let dcel = compgeom::dcel::Dcel::from_segments(&segs)?;
+            let t = triangulate_subdivision(&dcel, margin)?;
+            if args.output.verify {
+                verify_subdivision_triangulation(&dcel, &t)?;
+            }
+            (t, None)
+        }
+    };
+    let text = match args.output.format {
+        OutputFormat::Json => {
+            let mut v = json!({
+                "vertices": t.vertices.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>(),
+                "triangles": t.triangles,
+                "faces": t.faces.iter().map(|f| f.0).collect::<Vec<_>>(),
+                "boundary": t.boundary,
+            });
+            if let Some(labels) = &labels {
+                v["labels"] = json!(labels);
+            }
+            if args.output.verify {
+                v["verified"] = json!(true);
+            }
+            serde_json::to_string(&v)
+                .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?
+        }
+        OutputFormat::Csv => {
+            return Err(CliError::bad_input(
+                "triangulate writes json, geojson or wkt, not csv",
+            ))
+        }
+        other => {
+            let tris = MultiPolygon(
+                t.triangles
+                    .iter()
+                    .map(|tri| Polygon::new(tri.iter().map(|&v| t.vertices[v]).collect(), vec![]))
+                    .collect(),
+            );
+            let format = other.geometry_format().unwrap_or(compgeom::io::Format::Wkt);
+            write_shape(&Shape::MultiPolygon(tris), format)?
+        }
+    };
+    if let Some(svg) = &args.output.svg {
+        let title = format!(
+            "triangulate --subdivision: {} vertices, {} triangles",
+            t.vertices.len(),
+            t.triangles.len()
+        );
+        let mut pic = Picture::new(800, 640).with_title(title);
+        // Triangles coloured by face (the unbounded face grey), subdivision edges on top.
+        let mut layers: Vec<Option<Layer>> = Vec::new();
+        for (tri, f) in t.triangles.iter().zip(&t.faces) {
+            let k = f.0;
+            if layers.len() <= k {
+                layers.resize_with(k + 1, || None);
+            }
+            let layer = layers[k].take().unwrap_or_else(|| {
+                let colour = if k == 0 {
+                    "#dddddd"
+                } else {
+                    PALETTE[k % PALETTE.len()]
+                };
+                Layer::new(
+                    format!("face {k}"),
+                    Style::area(colour).with_fill_opacity(0.45),
+                )
+            });
+            let ring: Vec<Point2> = tri.iter().map(|&v| t.vertices[v]).collect();
+            layers[k] = Some(layer.ring(&ring));
+        }
+        for layer in layers.into_iter().flatten() {
+            pic.add(layer);
+        }
+        let mut edges = Layer::new("subdivision edges", Style::lines("#000000"));
+        for &[a, b] in &t.edges {
+            edges = edges.segment(Segment2::new(t.vertices[a], t.vertices[b]));
+        }
+        pic.add(edges);
+        output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
+    }
+    output::emit(args.output.output.as_deref(), &output::with_newline(text))
 }

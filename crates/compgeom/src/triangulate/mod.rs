@@ -9,6 +9,10 @@
 //! * [`triangulate`]: both together for simple polygons and polygons with holes
 //!   (Theorem 3.8), O(n log n); a polygon that is already monotone skips the sweep (O(n)).
 //!   [`triangulate_multipolygon`] does each polygon of a multipolygon.
+//! * [`triangulate_subdivision`] (and [`triangulate_segments`]): every face of a planar
+//!   subdivision inside its bounding box (Theorem 3.9), one MAKEMONOTONE sweep over the
+//!   whole plane graph, O(n log n); each triangle knows its face. Verifier:
+//!   [`verify_subdivision_triangulation`].
 //! * [`art_gallery`]: the dual graph, a 3-colouring by depth-first search and the
 //!   smallest colour class as guards (§3.1, Theorem 3.3): at most ⌊n/3⌋ guards for a
 //!   simple polygon; see [`guards`](art_gallery) for holes.
@@ -24,6 +28,10 @@
 //! * Collinear vertices (angles of exactly π) stay vertices and the diagonal set is
 //!   maximal: no triangle is flat and no vertex lies inside a triangle edge.
 //! * Repeated consecutive vertices (and a closing copy of the first) are dropped.
+//! * A vertex of one ring lying inside an edge of another ring (or a non-adjacent edge of
+//!   its own ring), exactly by [`crate::kernel::orient2d`]: that edge is split there, so
+//!   the point becomes a vertex of both rings (touching at a vertex, below) and appears in
+//!   [`Triangulation::vertices`] once more, inside the split edge's ring.
 //! * Rings touching at a vertex — a hole touching the outer ring, holes touching each
 //!   other, a ring touching itself — are allowed: such a point is one vertex per visit
 //!   (it appears twice in [`Triangulation::vertices`]); the rings are relinked there so
@@ -51,12 +59,17 @@ mod geometry;
 mod guards;
 mod make_monotone;
 mod monotone;
+mod planar;
+mod planar_verify;
 mod status;
 mod subdivision;
+mod touching;
 mod verify;
 
 pub use classify::VertexType;
 pub use guards::{art_gallery, verify_art_gallery, ArtGallery};
+pub use planar::{triangulate_segments, triangulate_subdivision, SubdivisionTriangulation};
+pub use planar_verify::verify_subdivision_triangulation;
 pub use verify::verify_triangulation;
 
 use crate::dcel::{Dcel, Source};
@@ -68,7 +81,9 @@ use geometry::Geometry;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Triangulation {
     /// The polygon's vertices, ring by ring (outer ring first, then each hole), each ring
-    /// in input order with repeated consecutive vertices (and a closing copy) dropped.
+    /// in input order with repeated consecutive vertices (and a closing copy) dropped, and
+    /// with a copy of every vertex of another ring lying inside one of its edges inserted
+    /// into that edge (module docs).
     pub vertices: Vec<Point2>,
     /// Ring `r` is `vertices[ring_starts[r]..ring_starts[r + 1]]`.
     pub ring_starts: Vec<usize>,
@@ -207,7 +222,10 @@ fn monotone_without_sweep(g: &Geometry) -> bool {
 /// MAKEMONOTONE (§3.2): the diagonals that cut the polygon into y-monotone pieces, and
 /// the pieces. O(n log n).
 pub fn monotone_partition(polygon: &Polygon) -> Result<MonotonePartition> {
-    let g = Geometry::new(polygon)?;
+    prepared(polygon, monotone_partition_of)
+}
+
+fn monotone_partition_of(g: Geometry) -> Result<MonotonePartition> {
     let part = make_monotone::make_monotone(&g).map_err(|e| g.contact_error().unwrap_or(e))?;
     let pieces = subdivision::faces(&g, &part.diagonals);
     Ok(MonotonePartition {
@@ -228,7 +246,10 @@ pub fn monotone_partition(polygon: &Polygon) -> Result<MonotonePartition> {
 /// TRIANGULATEMONOTONEPOLYGON (§3.3) alone: an error if the polygon is not y-monotone
 /// (see [`is_y_monotone`]). Linear time after the O(n log n) input check.
 pub fn triangulate_monotone_polygon(polygon: &Polygon) -> Result<Triangulation> {
-    let g = Geometry::new(polygon)?;
+    prepared(polygon, triangulate_monotone_of)
+}
+
+fn triangulate_monotone_of(g: Geometry) -> Result<Triangulation> {
     if !monotone_without_sweep(&g) {
         return Err(Error::InvalidInput(
             "the polygon is not y-monotone (it has a split or merge vertex, or holes)".into(),
@@ -246,7 +267,25 @@ pub fn triangulate_monotone_polygon(polygon: &Polygon) -> Result<Triangulation> 
 /// to the second step. n − 2 + 2h counter-clockwise triangles (module docs for touching
 /// rings), O(n log n) time. Errors: see the module docs.
 pub fn triangulate(polygon: &Polygon) -> Result<Triangulation> {
-    let g = Geometry::new(polygon)?;
+    prepared(polygon, triangulate_of)
+}
+
+/// Run `f` on the prepared polygon; if that fails and some vertex lies inside another
+/// ring's edge (or a non-adjacent edge of its own ring), once more with those edges split
+/// there (see [`touching`]). If the second attempt fails too, the first error stands (it
+/// names the input's own edges).
+fn prepared<T>(polygon: &Polygon, f: impl Fn(Geometry) -> Result<T>) -> Result<T> {
+    let first = match Geometry::new(polygon).and_then(&f) {
+        Ok(t) => return Ok(t),
+        Err(e) => e,
+    };
+    match touching::split_touching(polygon) {
+        Ok(Some(split)) => Geometry::new(&split).and_then(&f).map_err(|_| first),
+        _ => Err(first),
+    }
+}
+
+fn triangulate_of(g: Geometry) -> Result<Triangulation> {
     let mut triangles = Vec::with_capacity(g.len() + 2 * g.holes());
     if monotone_without_sweep(&g) {
         let cycle: Vec<u32> = subdivision::boundary_cycles(&g).swap_remove(0);

@@ -15,6 +15,36 @@ use super::geometry::Geometry;
 use crate::{Error, Result};
 use std::cmp::Ordering;
 
+/// What the monotone triangulation asks of the vertices it works on: the sweep order,
+/// exact orientation, and the errors to report when a piece is not monotone after all.
+pub(crate) trait Pieces {
+    /// `a` comes before `b` in the sweep order (top to bottom, equal y left to right).
+    fn above(&self, a: u32, b: u32) -> bool;
+    /// Exact orientation: `Greater` for a left turn.
+    fn orient(&self, a: u32, b: u32, c: u32) -> Ordering;
+    /// The two chains meet: edge `a → b` (or `b → a`) and the edge leaving `c`.
+    fn chains_meet(&self, a: u32, b: u32, c: u32) -> Error;
+    /// The piece `cycle` is not monotone.
+    fn not_monotone(&self, cycle: &[u32]) -> Error;
+}
+
+impl Pieces for Geometry {
+    #[inline]
+    fn above(&self, a: u32, b: u32) -> bool {
+        Geometry::above(self, a, b)
+    }
+    #[inline]
+    fn orient(&self, a: u32, b: u32, c: u32) -> Ordering {
+        Geometry::orient(self, a, b, c)
+    }
+    fn chains_meet(&self, a: u32, b: u32, c: u32) -> Error {
+        chains_meet(self, a, b, c)
+    }
+    fn not_monotone(&self, cycle: &[u32]) -> Error {
+        not_monotone(self, cycle)
+    }
+}
+
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Chain {
     Left,
@@ -23,14 +53,14 @@ enum Chain {
 
 /// Triangulate the monotone piece `cycle` (counter-clockwise, interior on the left),
 /// appending counter-clockwise triangles to `out`. An error if the piece is not monotone.
-pub(crate) fn triangulate_monotone(
-    g: &Geometry,
+pub(crate) fn triangulate_monotone<G: Pieces>(
+    g: &G,
     cycle: &[u32],
     out: &mut Vec<[u32; 3]>,
 ) -> Result<()> {
     let k = cycle.len();
     if k < 3 {
-        return Err(not_monotone(g, cycle));
+        return Err(g.not_monotone(cycle));
     }
     if k == 3 {
         out.push([cycle[0], cycle[1], cycle[2]]);
@@ -64,7 +94,7 @@ pub(crate) fn triangulate_monotone(
             let v = cycle[l];
             // The chains must not meet: v lies strictly left of the right chain's edge.
             if g.orient(cycle[r_last], cycle[r], v) != Ordering::Less {
-                return Err(chains_meet(g, cycle[l_last], v, cycle[r]));
+                return Err(g.chains_meet(cycle[l_last], v, cycle[r]));
             }
             l_last = l;
             l = (l + 1) % k;
@@ -72,7 +102,7 @@ pub(crate) fn triangulate_monotone(
         } else {
             let v = cycle[r];
             if g.orient(cycle[l_last], cycle[l], v) != Ordering::Greater {
-                return Err(chains_meet(g, v, cycle[r_last], cycle[l_last]));
+                return Err(g.chains_meet(v, cycle[r_last], cycle[l_last]));
             }
             r_last = r;
             r = (r + k - 1) % k;
@@ -82,7 +112,7 @@ pub(crate) fn triangulate_monotone(
     }
     let b = cycle[bottom];
     if !g.above(merged[merged.len() - 1].0, b) {
-        return Err(not_monotone(g, cycle));
+        return Err(g.not_monotone(cycle));
     }
     let mut stack: Vec<(u32, Chain)> = vec![merged[0], merged[1]];
     for &(u, c) in &merged[2..] {
