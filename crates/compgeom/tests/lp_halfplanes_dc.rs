@@ -7,7 +7,8 @@ mod lp_oracle;
 
 use compgeom::lp::{
     intersect_halfplanes, intersect_halfplanes_dc, intersect_halfplanes_dc_leaf,
-    intersect_halfplanes_incremental, verify_region, HalfPlane, RegionKind,
+    intersect_halfplanes_incremental, intersect_halfplanes_scan, verify_region, HalfPlane,
+    RegionKind,
 };
 use lp_oracle::*;
 use num_traits::Zero;
@@ -57,6 +58,15 @@ fn check(hs: &[HalfPlane], seed: u64) -> Result<RegionKind, TestCaseError> {
         }
         verify_region(hs, &other).map_err(|e| TestCaseError::fail(e.to_string()))?;
     }
+    // One exact slope sort and one sweep: the same region.
+    let scan = intersect_halfplanes_scan(hs).expect("valid input");
+    prop_assert_eq!(scan.kind, dc.kind);
+    prop_assert_eq!(&scan.vertices, &dc.vertices);
+    prop_assert_eq!(&scan.outline, &dc.outline);
+    if matches!(dc.kind, RegionKind::Polygon | RegionKind::Unbounded) {
+        prop_assert_eq!(&scan.constraints, &dc.constraints);
+    }
+    verify_region(hs, &scan).map_err(|e| TestCaseError::fail(e.to_string()))?;
     // The default entry point is the divide-and-conquer one.
     prop_assert_eq!(
         intersect_halfplanes(hs, seed).expect("valid input"),

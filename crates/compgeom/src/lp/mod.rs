@@ -35,17 +35,22 @@
 mod casting;
 mod enclosing_disc;
 mod exact;
+mod filter;
 mod halfplanes;
 mod halfplanes_dc;
+mod halfplanes_scan;
 mod lp2d;
 mod lpd;
 mod read;
+mod round_meet;
+mod slope_sort;
 mod verify;
 
 pub use casting::{castability, Castability, TopFacet};
 pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, intersect_halfplanes_incremental, Region, RegionKind};
 pub use halfplanes_dc::{intersect_halfplanes_dc, intersect_halfplanes_dc_leaf};
+pub use halfplanes_scan::intersect_halfplanes_scan;
 pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
 pub use lpd::{lp_d, LpSolution};
 pub use read::{read_constraints, read_halfplanes};
