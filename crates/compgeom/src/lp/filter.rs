@@ -17,6 +17,7 @@
 //! compare the computed bound with a strict inequality, after rounding the bound up.
 
 use super::exact::{cmp_meet_y, cross_sign, side, Line};
+use super::round_meet::{minor as minor_dd, prod_err, two_sum};
 use std::cmp::Ordering;
 
 const U: f64 = 1.0 / 9_007_199_254_740_992.0;
@@ -83,12 +84,46 @@ pub(super) fn side_of(i: &Line, j: &Line, k: &Line) -> Ordering {
         if let Some(ds) = decide(d, 3.0 * U * pd) {
             let v = k.a * x + k.b * y - k.c * d;
             let perm = k.a.abs() * px + k.b.abs() * py + k.c.abs() * pd;
-            if let Some(s) = decide(v, 6.0 * U * perm) {
+            let s = decide(v, 6.0 * U * perm).or_else(|| side_dd(i, j, k));
+            if let Some(s) = s {
                 return if ds == Ordering::Less { s.reverse() } else { s };
             }
         }
     }
     side(i, j, k)
+}
+
+/// The sign of `ka·X + kb·Y - kc·D` (as in [`side_of`], before the sign of `D`) in
+/// double-double arithmetic, for the near-degenerate cases the `f64` bound cannot settle
+/// (e.g. tangents of a circle a millionth of a radian apart). Each minor is `hi + lo`
+/// within its bound `e`; `k·hi` is split exactly into `p + pe`, `k·lo` is rounded; the
+/// large parts are summed exactly (`two_sum`), the small ones in `f64`.
+#[inline(never)]
+fn side_dd(i: &Line, j: &Line, k: &Line) -> Option<Ordering> {
+    let (xh, xl, ex) = minor_dd(i.c, j.b, j.c, i.b)?;
+    let (yh, yl, ey) = minor_dd(i.a, j.c, j.a, i.c)?;
+    let (dh, dl, ed) = minor_dd(i.a, j.b, j.a, i.b)?;
+    let (p1, p2, p3) = (k.a * xh, k.b * yh, k.c * dh);
+    let (e1, e2, e3) = (
+        prod_err(k.a, xh, p1)?,
+        prod_err(k.b, yh, p2)?,
+        prod_err(k.c, dh, p3)?,
+    );
+    let (l1, l2, l3) = (k.a * xl, k.b * yl, k.c * dl);
+    let (s1, r1) = two_sum(p1, p2);
+    let (s2, r2) = two_sum(s1, -p3);
+    let small = [r1, r2, e1, e2, -e3, l1, l2, -l3];
+    let rest: f64 = small.iter().sum();
+    let mag: f64 = small.iter().map(|v| v.abs()).sum();
+    let v = s2 + rest;
+    let e = k.a.abs() * ex
+        + k.b.abs() * ey
+        + k.c.abs() * ed
+        + U * (l1.abs() + l2.abs() + l3.abs())
+        + 8.0 * U * mag
+        + U * v.abs()
+        + ETA2;
+    decide(v, e)
 }
 
 /// As `exact::cmp_meet_y`: compare the heights of the meeting point of `i`, `j` and that of

@@ -125,7 +125,7 @@ pub(super) struct Corner {
 /// ```
 pub fn intersect_halfplanes(halfplanes: &[HalfPlane], seed: u64) -> Result<Region> {
     let _ = seed;
-    super::intersect_halfplanes_dc(halfplanes)
+    super::intersect_halfplanes_scan(halfplanes)
 }
 
 /// Intersect the half-planes by randomized incremental clipping of the symbolic box

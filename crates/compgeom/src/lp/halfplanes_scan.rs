@@ -22,7 +22,8 @@ use super::exact::Line;
 use super::halfplanes::{describe, empty};
 use super::halfplanes_dc::{corners, intersect_regions, tighter, Conv, BOX_BOTTOM, BOX_TOP};
 use super::slope_sort::sort_chain;
-use super::{check_finite, HalfPlane, Region};
+use super::{check_finite, HalfPlane, Region, RegionKind};
+use crate::kernel::Point2;
 use crate::Result;
 
 /// Intersect the half-planes (every `a·x + b·y <= c`) by one exact slope sort and one
@@ -51,32 +52,112 @@ use crate::Result;
 /// ```
 pub fn intersect_halfplanes_scan(halfplanes: &[HalfPlane]) -> Result<Region> {
     check_finite(halfplanes)?;
-    let input: Vec<Line> = halfplanes
-        .iter()
-        .map(|h| Line::input(h.a, h.b, h.c))
-        .collect();
+    let n = halfplanes.len();
+    if n < PRUNE_MIN {
+        return Ok(sweep(halfplanes, 0..n));
+    }
+    // The region of an evenly spread sample contains the answer: if it is empty, so is the
+    // answer; if it is a bounded polygon, every constraint whose half-plane strictly
+    // contains the polygon's bounding box cannot touch the answer and is left out.
+    let m = ((4.0 * (n as f64).sqrt()) as usize).clamp(64, n / 4);
+    let sample: Vec<HalfPlane> = (0..m).map(|t| halfplanes[t * n / m]).collect();
+    let r = sweep(&sample, 0..m);
+    match r.kind {
+        RegionKind::Empty => Ok(r),
+        RegionKind::Polygon => {
+            let b = Bounds::around(&r.vertices);
+            Ok(sweep(
+                halfplanes,
+                (0..n).filter(|&k| !b.strictly_inside(&halfplanes[k])),
+            ))
+        }
+        _ => Ok(sweep(halfplanes, 0..n)),
+    }
+}
+
+/// Inputs with at least this many constraints are pruned with a sample's region first.
+const PRUNE_MIN: usize = 512;
+
+/// A box `[x0, x1] × [y0, y1]` containing a set of exact points of which we know the
+/// nearest `f64`s.
+struct Bounds {
+    x0: f64,
+    x1: f64,
+    y0: f64,
+    y1: f64,
+}
+
+impl Bounds {
+    /// Each exact point lies within half a gap of its rounded value, and a gap is at most
+    /// `2^-52·|v|` (or `2^-1074` near zero): widening by `2^-50·|v| + 1e-300` covers it with
+    /// room for the rounding of the widening itself.
+    fn around(ps: &[Point2]) -> Bounds {
+        let lo = |v: f64| v - (v.abs() * (1.0 / 1_125_899_906_842_624.0) + 1e-300);
+        let hi = |v: f64| v + (v.abs() * (1.0 / 1_125_899_906_842_624.0) + 1e-300);
+        let mut b = Bounds {
+            x0: f64::INFINITY,
+            x1: f64::NEG_INFINITY,
+            y0: f64::INFINITY,
+            y1: f64::NEG_INFINITY,
+        };
+        for p in ps {
+            b.x0 = b.x0.min(lo(p.x));
+            b.x1 = b.x1.max(hi(p.x));
+            b.y0 = b.y0.min(lo(p.y));
+            b.y1 = b.y1.max(hi(p.y));
+        }
+        b
+    }
+
+    /// True when the box lies in the open half-plane `a·x + b·y < c`: the box corner
+    /// furthest along `(a, b)` satisfies it by more than the rounding error of the `f64`
+    /// evaluation (four operations, `4u` times the sum of absolute values, plus underflow).
+    /// False when unsure.
+    #[inline]
+    fn strictly_inside(&self, h: &HalfPlane) -> bool {
+        let x = if h.a > 0.0 { self.x1 } else { self.x0 };
+        let y = if h.b > 0.0 { self.y1 } else { self.y0 };
+        let (px, py) = (h.a * x, h.b * y);
+        let v = px + py - h.c;
+        let e = (px.abs() + py.abs() + h.c.abs()) * (4.0 / 9_007_199_254_740_992.0) + 1e-300;
+        v < -e
+    }
+}
+
+/// The intersection of the half-planes `ids` (increasing) of `halfplanes` (all finite):
+/// sort the chains, then one INTERSECTCONVEXREGIONS with the box.
+fn sweep(halfplanes: &[HalfPlane], ids: impl Iterator<Item = usize>) -> Region {
+    let mut input: Vec<Line> = Vec::with_capacity(halfplanes.len());
+    let mut at: Vec<usize> = Vec::with_capacity(halfplanes.len());
     let (mut left, mut right, mut flat) = (Vec::new(), Vec::new(), Vec::new());
-    for (k, h) in halfplanes.iter().enumerate() {
+    for k in ids {
+        let h = &halfplanes[k];
+        let slot = input.len();
         if h.a < 0.0 {
-            left.push(k);
+            left.push(slot);
         } else if h.a > 0.0 {
-            right.push(k);
+            right.push(slot);
         } else if h.b != 0.0 {
-            flat.push(k);
+            flat.push(slot);
         } else if h.c < 0.0 {
             // 0·x + 0·y <= c < 0: nothing satisfies it.
-            return Ok(empty());
+            return empty();
+        } else {
+            continue;
         }
+        input.push(Line::input(h.a, h.b, h.c));
+        at.push(k);
     }
     sort_chain(&input, &mut left);
     sort_chain(&input, &mut right);
     // Box sides first, then the left chain, the right chain and the horizontal constraints,
     // each in sorted (resp. input) order; `orig` maps back to the input.
     let mut lines = Line::bbox().to_vec();
-    let mut orig = Vec::with_capacity(halfplanes.len());
-    for &k in left.iter().chain(&right).chain(&flat) {
-        lines.push(input[k]);
-        orig.push(k);
+    lines.reserve(input.len());
+    let mut orig = Vec::with_capacity(input.len());
+    for &s in left.iter().chain(&right).chain(&flat) {
+        lines.push(input[s]);
+        orig.push(at[s]);
     }
     drop(input);
     let (nl, nr) = (left.len(), right.len());
@@ -95,8 +176,8 @@ pub fn intersect_halfplanes_scan(halfplanes: &[HalfPlane]) -> Result<Region> {
             c.top = tighter(&lines, c.top, i);
         }
     }
-    Ok(match intersect_regions(&lines, &Conv::whole(), &c) {
+    match intersect_regions(&lines, &Conv::whole(), &c) {
         None => empty(),
         Some(r) => describe(&lines, &orig, &corners(&lines, &r)),
-    })
+    }
 }

@@ -20,10 +20,36 @@ const LO: f64 = 1.178_389_470_208_022_3e-271;
 const HI: f64 = 8.486_248_724_898_15e270;
 
 #[inline]
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(super) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `a·b - p` exactly, where `p = fl(a·b)` is normal: a fused multiply-add where the target
+/// has one, else Dekker's splitting (no library call), which is exact when both factors are
+/// zero or inside `[2^-450, 2^450]` (`None` outside).
+#[inline]
+pub(super) fn prod_err(a: f64, b: f64, p: f64) -> Option<f64> {
+    if cfg!(target_feature = "fma") {
+        return Some(a.mul_add(b, -p));
+    }
+    let (lo, hi) = (
+        f64::from_bits((1023 - 450) << 52),
+        f64::from_bits((1023 + 450) << 52),
+    );
+    let ok = |v: f64| v == 0.0 || (v.abs() > lo && v.abs() < hi);
+    if !ok(a) || !ok(b) {
+        return None;
+    }
+    // 2^27 + 1 splits a 53-bit significand into two halves of at most 26 bits.
+    let split = |v: f64| {
+        let c = 134_217_729.0 * v;
+        let h = c - (c - v);
+        (h, v - h)
+    };
+    let ((ah, al), (bh, bl)) = (split(a), split(b));
+    Some(((ah * bh - p) + ah * bl + al * bh) + al * bl)
 }
 
 /// In `[2^-900, 2^900]` in magnitude (or zero when `zero_ok`).
@@ -36,12 +62,12 @@ fn fine(v: f64, zero_ok: bool) -> bool {
 /// `x·y - z·w` as `hi + lo` and a bound on `|hi + lo - exact|`, or `None` near
 /// underflow/overflow. `(0, 0, 0)` means exactly zero.
 #[inline]
-fn minor(x: f64, y: f64, z: f64, w: f64) -> Option<(f64, f64, f64)> {
+pub(super) fn minor(x: f64, y: f64, z: f64, w: f64) -> Option<(f64, f64, f64)> {
     let (p, q) = (x * y, z * w);
     if !fine(p, true) || !fine(q, true) {
         return None;
     }
-    let (pe, qe) = (x.mul_add(y, -p), z.mul_add(w, -q));
+    let (pe, qe) = (prod_err(x, y, p)?, prod_err(z, w, q)?);
     let (s, se) = two_sum(p, -q);
     let t = se + (pe - qe);
     let (hi, lo) = two_sum(s, t);
@@ -69,7 +95,7 @@ fn quotient(xh: f64, xl: f64, ex: f64, dh: f64, dl: f64, ed: f64) -> Option<f64>
         return None;
     }
     let m = q1 * dh;
-    let me = q1.mul_add(dh, -m);
+    let me = prod_err(q1, dh, m)?;
     let a = xh - m;
     let b = q1 * dl;
     let r = ((a - me) + xl) - b;
