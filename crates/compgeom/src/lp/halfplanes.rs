@@ -97,10 +97,12 @@ pub(super) struct Corner {
     pub(super) edge: usize,
 }
 
-/// Intersect the half-planes (every `a·x + b·y <= c`): exact, O(n log n), by divide and
-/// conquer ([`intersect_halfplanes_dc`](super::intersect_halfplanes_dc)). `seed` is kept for
-/// compatibility and does not change anything; the randomized incremental method is
-/// [`intersect_halfplanes_incremental`].
+/// Intersect the half-planes (every `a·x + b·y <= c`): exact, O(n log n), by one exact
+/// slope sort and one sweep ([`intersect_halfplanes_scan`](super::intersect_halfplanes_scan),
+/// several times faster than the book's divide and conquer
+/// [`intersect_halfplanes_dc`](super::intersect_halfplanes_dc), whose answer it equals).
+/// `seed` is kept for compatibility and does not change anything; the randomized
+/// incremental method is [`intersect_halfplanes_incremental`].
 ///
 /// Errors: a non-finite coefficient ([`Error::NonFinite`](crate::Error::NonFinite)).
 ///

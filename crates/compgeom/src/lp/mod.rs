@@ -3,7 +3,8 @@
 //! | function | book | method | time |
 //! |---|---|---|---|
 //! | [`lp2d`] | §4.3–4.4 2DRANDOMIZEDBOUNDEDLP + unbounded case | randomized incremental, symbolic bounding box | expected O(n) |
-//! | [`intersect_halfplanes`] = [`intersect_halfplanes_dc`] | §4.2 INTERSECTHALFPLANES | divide and conquer, linear merge of left/right boundary chains | O(n log n) |
+//! | [`intersect_halfplanes`] = [`intersect_halfplanes_scan`] | §4.2 half-plane intersection | prune by a sample's region, exact slope sort (radix on the correctly rounded slope), one INTERSECTCONVEXREGIONS sweep | O(n log n) |
+//! | [`intersect_halfplanes_dc`] | §4.2 INTERSECTHALFPLANES | the book's divide and conquer, linear merge of left/right boundary chains | O(n log n) |
 //! | [`intersect_halfplanes_incremental`] | §4.2 half-plane intersection | randomized incremental clipping of a symbolic box | expected O(n·h), h the size of the intermediate regions (worst case O(n²)) |
 //! | [`lp_d`] | §4.5 RANDOMIZEDLP | recursive randomized incremental, exact rationals | expected O(d!·n) |
 //! | [`smallest_enclosing_disc`] | §4.7 MINIDISC | randomized incremental; `f64` disc filter, exact `incircle`/`orient2d` near the circle | expected O(n) |
