@@ -16,11 +16,10 @@
 //! of `cmp_meet_y` is within `6u·perm·(1 + 4u)`. The tests below use `6u` and `7u`, and
 //! compare the computed bound with a strict inequality, after rounding the bound up.
 
-use super::exact::{cmp_meet_y, cross_sign, side, Line};
-use super::round_meet::{minor as minor_dd, prod_err, two_sum};
+use super::exact::{cmp_meet_y, cross_sign, side, two_sum, Line, U};
+use super::round_meet::{minor as minor_dd, prod_err};
 use std::cmp::Ordering;
 
-const U: f64 = 1.0 / 9_007_199_254_740_992.0;
 /// 2^250 and 2^-250: the coefficient range in which the static bounds are proved.
 const BIG: f64 = 1.809_251_394_333_065_6e75;
 const SMALL: f64 = 5.527_147_875_260_444e-76;

@@ -12,19 +12,11 @@
 //! between the midpoints from `h` to its two neighbours. The tests compare every answer with
 //! the rational rounding, also at exact midpoints (where the fast path must decline).
 
-use super::exact::{meet_exact, meet_f64, to_f64, Line};
+use super::exact::{meet_exact, meet_f64, to_f64, two_sum, Line, U};
 
-const U: f64 = 1.0 / 9_007_199_254_740_992.0;
 /// Magnitudes of every product and quotient on the fast path: inside `[2^-900, 2^900]`.
 const LO: f64 = 1.178_389_470_208_022_3e-271;
 const HI: f64 = 8.486_248_724_898_15e270;
-
-#[inline]
-pub(super) fn two_sum(a: f64, b: f64) -> (f64, f64) {
-    let s = a + b;
-    let bb = s - a;
-    (s, (a - (s - bb)) + (b - bb))
-}
 
 /// `a·b - p` exactly, where `p = fl(a·b)` is normal: a fused multiply-add where the target
 /// has one, else Dekker's splitting (no library call), which is exact when both factors are
