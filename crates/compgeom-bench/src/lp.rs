@@ -4,7 +4,9 @@
 //! - `lp2d` (exact, randomized incremental, expected O(n)) against microlp (a general
 //!   simplex solver, f64) and against a scan-based O(n log n) half-plane intersection
 //!   (sort by angle + deque, plain f64, written here) followed by a pass over its corners.
-//! - `intersect_halfplanes` (exact, incremental clipping) against the same scan.
+//! - `intersect_halfplanes` (exact: one exact slope sort and one sweep) against the same f64
+//!   scan and geo's convex hull of the dual points; the book's divide and conquer
+//!   (`intersect_halfplanes_dc`, exact) is timed beside it.
 //! - `smallest_enclosing_disc` (exact MINIDISC): geo 0.33 has no minimum bounding circle,
 //!   so the peer is the same MINIDISC in plain f64 (written here): the price of exactness.
 //!
@@ -18,8 +20,8 @@
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::lp::{
-    intersect_halfplanes, intersect_halfplanes_incremental, lp2d, smallest_enclosing_disc,
-    HalfPlane, Lp2Options, Lp2Solution,
+    intersect_halfplanes, intersect_halfplanes_dc, intersect_halfplanes_incremental, lp2d,
+    smallest_enclosing_disc, HalfPlane, Lp2Options, Lp2Solution,
 };
 use compgeom::{Point2, Vector2};
 use geo::algorithm::convex_hull::quick_hull;
@@ -71,8 +73,9 @@ fn dual_hull_hpi(hs: &[HalfPlane]) -> usize {
     quick_hull(&mut pts).0.len().saturating_sub(1)
 }
 
-/// Half-plane intersection: divide and conquer (the default) against the angular scan,
-/// the dual hull through geo, and (small n) the incremental clipping.
+/// Half-plane intersection: the default (exact slope sort + sweep) against the angular f64
+/// scan and the dual hull through geo; the book's divide and conquer and (small n) the
+/// incremental clipping beside it.
 fn halfplanes(quick: bool) -> Result<(), String> {
     let sizes: &[usize] = if quick {
         &[10_000, 100_000]
@@ -81,11 +84,13 @@ fn halfplanes(quick: bool) -> Result<(), String> {
     };
     println!("half-plane intersection: ms (best of 3, 1 at 1e6), ratio = peer / compgeom (> 1 = compgeom faster)");
     println!(
-        "{:>9} {:>8} {:>8} {:>10} {:>10} {:>6} {:>10} {:>6} {:>11} {:>7}",
+        "{:>9} {:>8} {:>8} {:>10} {:>10} {:>6} {:>10} {:>6} {:>10} {:>6} {:>11} {:>7}",
         "input",
         "n",
         "corners",
         "compgeom",
+        "d&c",
+        "x",
         "scan f64",
         "ratio",
         "geo dual",
@@ -114,7 +119,11 @@ fn halfplanes(quick: bool) -> Result<(), String> {
                 );
             }
             let runs = if n >= 1_000_000 { 1 } else { 3 };
+            if intersect_halfplanes_dc(&hs).map_err(|e| e.to_string())? != region {
+                return Err(format!("{name} n={n}: divide and conquer differs"));
+            }
             let t_ours = best_of(runs, || intersect_halfplanes(&hs, 0));
+            let t_dc = best_of(runs, || intersect_halfplanes_dc(&hs));
             let t_scan = best_of(runs, || scan_hpi(&hs));
             let t_dual = best_of(runs, || dual_hull_hpi(&hs));
             // Incremental clipping is quadratic on tangent lines: only at the smallest size.
@@ -128,11 +137,13 @@ fn halfplanes(quick: bool) -> Result<(), String> {
                 None
             };
             println!(
-                "{:>9} {:>8} {:>8} {:>10.2} {:>10.2} {:>6.2} {:>10.2} {:>6.2} {:>11} {:>7}",
+                "{:>9} {:>8} {:>8} {:>10.2} {:>10.2} {:>6.2} {:>10.2} {:>6.2} {:>10.2} {:>6.2} {:>11} {:>7}",
                 name,
                 n,
                 region.vertices.len(),
                 ms(t_ours),
+                ms(t_dc),
+                ms(t_dc) / ms(t_ours),
                 ms(t_scan),
                 ms(t_scan) / ms(t_ours),
                 ms(t_dual),

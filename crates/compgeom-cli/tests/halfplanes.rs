@@ -1,5 +1,5 @@
-//! `compgeom halfplanes` end to end: the default divide and conquer and --incremental give
-//! the same region, verified.
+//! `compgeom halfplanes` end to end: the default (slope sort and sweep), `--algorithm dc`
+//! (the book's divide and conquer) and --incremental give the same region, verified.
 
 use assert_cmd::Command;
 use serde_json::Value;
@@ -32,6 +32,10 @@ fn default_and_incremental_agree() {
         serde_json::json!([[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [3.0, 4.0], [0.0, 4.0]])
     );
     assert_eq!(dc["vertices"], inc["vertices"]);
+    let book = run(&["--verify", "--algorithm", "dc"], square);
+    assert_eq!(book, dc);
+    let inc2 = run(&["--algorithm", "incremental", "--seed", "5"], square);
+    assert_eq!(inc2["vertices"], dc["vertices"]);
     assert_eq!(dc["constraints"], serde_json::json!([2, 1, 5, 3, 0]));
     // A strip and a point: the degenerate kinds.
     let strip = run(&[], "0 1 1\n0 -1 1\n");

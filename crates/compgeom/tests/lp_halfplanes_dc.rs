@@ -7,7 +7,8 @@ mod lp_oracle;
 
 use compgeom::lp::{
     intersect_halfplanes, intersect_halfplanes_dc, intersect_halfplanes_dc_leaf,
-    intersect_halfplanes_incremental, verify_region, HalfPlane, RegionKind,
+    intersect_halfplanes_incremental, intersect_halfplanes_scan, verify_region, HalfPlane,
+    RegionKind,
 };
 use lp_oracle::*;
 use num_traits::Zero;
@@ -57,11 +58,17 @@ fn check(hs: &[HalfPlane], seed: u64) -> Result<RegionKind, TestCaseError> {
         }
         verify_region(hs, &other).map_err(|e| TestCaseError::fail(e.to_string()))?;
     }
-    // The default entry point is the divide-and-conquer one.
-    prop_assert_eq!(
-        intersect_halfplanes(hs, seed).expect("valid input"),
-        dc.clone()
-    );
+    // One exact slope sort and one sweep: the same region.
+    let scan = intersect_halfplanes_scan(hs).expect("valid input");
+    prop_assert_eq!(scan.kind, dc.kind);
+    prop_assert_eq!(&scan.vertices, &dc.vertices);
+    prop_assert_eq!(&scan.outline, &dc.outline);
+    if matches!(dc.kind, RegionKind::Polygon | RegionKind::Unbounded) {
+        prop_assert_eq!(&scan.constraints, &dc.constraints);
+    }
+    verify_region(hs, &scan).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    // The default entry point is the slope sort and sweep.
+    prop_assert_eq!(intersect_halfplanes(hs, seed).expect("valid input"), scan);
     Ok(dc.kind)
 }
 
@@ -182,4 +189,94 @@ fn every_kind() {
     // A non-finite coefficient is an error naming the constraint.
     let e = intersect_halfplanes_dc(&[h(1.0, 0.0, 0.0), h(f64::NAN, 0.0, 0.0)]).unwrap_err();
     assert!(e.to_string().contains("constraint 1"), "{e}");
+}
+
+/// Large inputs (the slope-sort method first prunes with a sample's region from 512
+/// constraints on): the same region as divide and conquer, and it verifies.
+fn check_large(hs: &[HalfPlane]) -> Result<(), TestCaseError> {
+    let dc = intersect_halfplanes_dc(hs).expect("valid input");
+    let scan = intersect_halfplanes_scan(hs).expect("valid input");
+    prop_assert_eq!(scan.kind, dc.kind);
+    prop_assert_eq!(&scan.vertices, &dc.vertices);
+    prop_assert_eq!(&scan.outline, &dc.outline);
+    if matches!(dc.kind, RegionKind::Polygon | RegionKind::Unbounded) {
+        prop_assert_eq!(&scan.constraints, &dc.constraints);
+    }
+    verify_region(hs, &scan).map_err(|e| TestCaseError::fail(e.to_string()))?;
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(12))]
+
+    #[test]
+    fn large_random_with_a_few_that_matter(hs in prop::collection::vec((-1.0f64..1.0, -1.0f64..1.0, 0.2f64..1.5)
+        .prop_map(|(a, b, c)| HalfPlane::new(a, b, c)), 500..1500),
+        extra in prop::collection::vec((-3i8..=3, -3i8..=3, -2i8..=2), 0..6)) {
+        // Mostly redundant constraints around the origin, plus a few integer ones that may
+        // cut, touch, flatten or empty the region, or leave it unbounded.
+        let mut hs = hs;
+        hs.extend(extra.iter().map(|&(a, b, c)| HalfPlane::new(a as f64, b as f64, c as f64 / 4.0)));
+        check_large(&hs)?;
+    }
+
+    #[test]
+    fn large_integer_grid(hs in prop::collection::vec((-6i8..=6, -6i8..=6, -8i8..=8)
+        .prop_map(|(a, b, c)| HalfPlane::new(a as f64, b as f64, c as f64)), 520..900)) {
+        check_large(&hs)?;
+    }
+
+    #[test]
+    fn large_tangent_lines(angles in prop::collection::vec(0u32..256, 520..900), offsets in prop::collection::vec(-1i8..=1, 1..5)) {
+        check_large(&tangents(&angles, 256, &offsets))?;
+    }
+
+    #[test]
+    fn large_through_one_point(ns in prop::collection::vec((-5i8..=5, -5i8..=5), 520..800), p in (-3i8..=3, -3i8..=3), flat in any::<bool>()) {
+        // All through one point (a point or a cone); with `flat`, also both sides of one
+        // line through it (a ray or a segment).
+        let mut hs: Vec<HalfPlane> = ns.iter().map(|&(a, b)| {
+            let (a, b) = (a as f64, b as f64);
+            HalfPlane::new(a, b, a * p.0 as f64 + b * p.1 as f64)
+        }).collect();
+        if flat {
+            let (a, b) = (1.0, 2.0);
+            let c = a * p.0 as f64 + b * p.1 as f64;
+            hs.push(HalfPlane::new(a, b, c));
+            hs.push(HalfPlane::new(-a, -b, -c));
+        }
+        check_large(&hs)?;
+    }
+}
+
+#[test]
+fn large_degenerate_results() {
+    // 600 redundant constraints around the origin plus a pinch: a segment, a point, empty.
+    let mut base: Vec<HalfPlane> = (0..600)
+        .map(|k| {
+            let t = k as f64 * 0.37;
+            HalfPlane::new(t.cos(), t.sin(), 3.0 + (k % 7) as f64)
+        })
+        .collect();
+    let h = HalfPlane::new;
+    base.extend([h(0.0, 1.0, 0.5), h(0.0, -1.0, -0.5)]);
+    let r = intersect_halfplanes_scan(&base).unwrap();
+    assert_eq!(r.kind, RegionKind::Segment);
+    assert_eq!(r, intersect_halfplanes_dc(&base).unwrap());
+    base.extend([h(1.0, 0.0, 0.25), h(-1.0, 0.0, -0.25)]);
+    let r = intersect_halfplanes_scan(&base).unwrap();
+    assert_eq!(r.kind, RegionKind::Point);
+    assert_eq!(r.vertices, [compgeom::Point2::new(0.25, 0.5)]);
+    base.push(h(1.0, 1.0, 0.5));
+    assert_eq!(
+        intersect_halfplanes_scan(&base).unwrap().kind,
+        RegionKind::Empty
+    );
+    // Empty already in the sample's region.
+    let mut empty: Vec<HalfPlane> = vec![h(1.0, 0.0, -1.0); 300];
+    empty.extend(vec![h(-1.0, 0.0, -1.0); 300]);
+    assert_eq!(
+        intersect_halfplanes_scan(&empty).unwrap().kind,
+        RegionKind::Empty
+    );
 }

@@ -5,11 +5,11 @@
 use crate::cli::OutputArgs;
 use crate::error::CliError;
 use crate::output;
-use clap::Args;
+use clap::{Args, ValueEnum};
 use compgeom::io::{write_shape, Shape};
 use compgeom::lp::{
-    intersect_halfplanes, intersect_halfplanes_incremental, read_halfplanes, verify_region,
-    HalfPlane, Region, RegionKind,
+    intersect_halfplanes, intersect_halfplanes_dc, intersect_halfplanes_incremental,
+    read_halfplanes, verify_region, HalfPlane, Region, RegionKind,
 };
 use compgeom::render::{Layer, Picture, Style};
 use compgeom::{Point2, Polygon, Segment2};
@@ -38,6 +38,7 @@ nothing; unbounded regions, rays and lines have no such form (use JSON).
 Examples:
   compgeom halfplanes constraints.txt
   compgeom halfplanes constraints.txt --svg region.svg
+  compgeom halfplanes constraints.txt --algorithm dc
   compgeom halfplanes constraints.txt --incremental --seed 7";
 
 /// Arguments of `compgeom halfplanes`.
@@ -55,10 +56,26 @@ pub struct HalfplanesArgs {
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
 
-    /// Use randomized incremental clipping (expected O(n·h)) instead of the default divide
-    /// and conquer (O(n log n)); both are exact.
+    /// Use randomized incremental clipping (expected O(n·h)); the same as
+    /// `--algorithm incremental`.
     #[arg(long)]
     pub incremental: bool,
+
+    /// Which exact method computes the region (all give the same answer).
+    #[arg(long, value_enum, default_value_t = AlgorithmArg::Scan)]
+    pub algorithm: AlgorithmArg,
+}
+
+/// The `--algorithm` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum AlgorithmArg {
+    /// One exact slope sort and one linear sweep, pruned by a sample's region (the
+    /// fastest; O(n log n)).
+    Scan,
+    /// The book's divide and conquer, INTERSECTHALFPLANES (§4.2; O(n log n)).
+    Dc,
+    /// Randomized incremental clipping (expected O(n·h), O(n²) worst case).
+    Incremental,
 }
 
 /// The JSON result object (fields in [`JSON_HELP`]).
@@ -96,10 +113,15 @@ pub fn read_source(path: &Path) -> Result<(String, String), CliError> {
 pub fn run(args: &HalfplanesArgs) -> Result<(), CliError> {
     let (text, name) = read_source(&args.input)?;
     let hs = read_halfplanes(&text, &name)?;
-    let region = if args.incremental {
-        intersect_halfplanes_incremental(&hs, args.seed)?
+    let algorithm = if args.incremental {
+        AlgorithmArg::Incremental
     } else {
-        intersect_halfplanes(&hs, args.seed)?
+        args.algorithm
+    };
+    let region = match algorithm {
+        AlgorithmArg::Scan => intersect_halfplanes(&hs, args.seed)?,
+        AlgorithmArg::Dc => intersect_halfplanes_dc(&hs)?,
+        AlgorithmArg::Incremental => intersect_halfplanes_incremental(&hs, args.seed)?,
     };
     if args.output.verify {
         verify_region(&hs, &region)?;

@@ -219,8 +219,9 @@ pub(crate) struct Dd {
 
 const U2: f64 = 16.0 * U * U;
 
+/// `a + b` as the rounded sum and its exact rounding error (Knuth's two-sum).
 #[inline]
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(super) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))

@@ -17,7 +17,9 @@
 //! it in boundary order. Redundant, parallel and identical constraints are ordinary input;
 //! of identical boundary lines the one added first is reported.
 
-use super::exact::{meet_exact, meet_f64, side, to_f64, Line};
+use super::exact::{meet_exact, side, to_f64, Line};
+use super::filter::side_of;
+use super::round_meet::meet_rounded;
 use super::{check_finite, HalfPlane, Shuffler};
 use crate::kernel::{Point2, Vector2};
 use crate::Result;
@@ -95,10 +97,12 @@ pub(super) struct Corner {
     pub(super) edge: usize,
 }
 
-/// Intersect the half-planes (every `a·x + b·y <= c`): exact, O(n log n), by divide and
-/// conquer ([`intersect_halfplanes_dc`](super::intersect_halfplanes_dc)). `seed` is kept for
-/// compatibility and does not change anything; the randomized incremental method is
-/// [`intersect_halfplanes_incremental`].
+/// Intersect the half-planes (every `a·x + b·y <= c`): exact, O(n log n), by one exact
+/// slope sort and one sweep ([`intersect_halfplanes_scan`](super::intersect_halfplanes_scan),
+/// several times faster than the book's divide and conquer
+/// [`intersect_halfplanes_dc`](super::intersect_halfplanes_dc), whose answer it equals).
+/// `seed` is kept for compatibility and does not change anything; the randomized
+/// incremental method is [`intersect_halfplanes_incremental`].
 ///
 /// Errors: a non-finite coefficient ([`Error::NonFinite`](crate::Error::NonFinite)).
 ///
@@ -123,7 +127,7 @@ pub(super) struct Corner {
 /// ```
 pub fn intersect_halfplanes(halfplanes: &[HalfPlane], seed: u64) -> Result<Region> {
     let _ = seed;
-    super::intersect_halfplanes_dc(halfplanes)
+    super::intersect_halfplanes_scan(halfplanes)
 }
 
 /// Intersect the half-planes by randomized incremental clipping of the symbolic box
@@ -241,7 +245,7 @@ pub(super) fn merge_equal(lines: &[Line], out: Vec<Corner>) -> Vec<Corner> {
         [b.v.0, b.v.1].iter().all(|&k| {
             k == a.v.0
                 || k == a.v.1
-                || side(&lines[a.v.0], &lines[a.v.1], &lines[k]) == Ordering::Equal
+                || side_of(&lines[a.v.0], &lines[a.v.1], &lines[k]) == Ordering::Equal
         })
     };
     let mut merged: Vec<Corner> = Vec::with_capacity(out.len());
@@ -269,7 +273,7 @@ pub(super) fn describe(lines: &[Line], orig: &[usize], poly: &[Corner]) -> Regio
     // the scales allow, else (and for corners on the box) through exact rationals.
     let exact = |c: &Corner| meet_exact(&lines[c.v.0], &lines[c.v.1]);
     let outline_of = |c: &Corner| -> (Point2, Vector2) {
-        if let Some((x, y)) = meet_f64(&lines[c.v.0], &lines[c.v.1]) {
+        if let Some((x, y)) = meet_rounded(&lines[c.v.0], &lines[c.v.1]) {
             return (Point2::new(x, y), Vector2::new(0.0, 0.0));
         }
         let ((x0, y0), (x1, y1)) = exact(c);

@@ -38,34 +38,50 @@
 //! segment, ray, line, point or empty need no special case: a zero-length edge shows up
 //! as two equal neighbouring corners, merged exactly.
 
-use super::exact::{cmp_meet_y, cross_sign, parallel_side, side, Line};
+use super::exact::{parallel_side, Line};
+use super::filter::{cross as cross_sign, meet_y as cmp_meet_y, side_of as side};
 use super::halfplanes::{describe, empty, merge_equal, Corner};
+use super::slope_sort::sort_chain;
 use super::{check_finite, HalfPlane, Region};
 use crate::Result;
 use std::cmp::Ordering;
 
 /// Indices of the box sides in the line list (see `Line::bbox`).
-const BOX_RIGHT: usize = 0;
-const BOX_LEFT: usize = 1;
-const BOX_TOP: usize = 2;
-const BOX_BOTTOM: usize = 3;
+pub(super) const BOX_RIGHT: usize = 0;
+pub(super) const BOX_LEFT: usize = 1;
+pub(super) const BOX_TOP: usize = 2;
+pub(super) const BOX_BOTTOM: usize = 3;
 
 /// A non-empty convex region inside the symbolic box (see the module docs).
 #[derive(Debug, Clone)]
-struct Conv {
+pub(super) struct Conv {
     /// Left boundary lines (`a < 0`), bottom to top.
-    left: Vec<usize>,
+    pub(super) left: Vec<usize>,
     /// Right boundary lines (`a > 0`), bottom to top.
-    right: Vec<usize>,
+    pub(super) right: Vec<usize>,
     /// The highest bottom constraint (`a = 0`, `b < 0`).
-    bot: usize,
+    pub(super) bot: usize,
     /// The lowest top constraint (`a = 0`, `b > 0`).
-    top: usize,
+    pub(super) top: usize,
     /// True when the region's lowest point(s) lie on `bot`; false when the bottom is a
     /// vertex where `left[0]` and `right[0]` cross above `bot`.
-    bot_edge: bool,
+    pub(super) bot_edge: bool,
     /// As `bot_edge`, at the top.
-    top_edge: bool,
+    pub(super) top_edge: bool,
+}
+
+impl Conv {
+    /// The whole symbolic box.
+    pub(super) fn whole() -> Conv {
+        Conv {
+            left: vec![BOX_LEFT],
+            right: vec![BOX_RIGHT],
+            bot: BOX_BOTTOM,
+            top: BOX_TOP,
+            bot_edge: true,
+            top_edge: true,
+        }
+    }
 }
 
 /// Intersect the half-planes by divide and conquer (book §4.2): exact, O(n log n).
@@ -113,14 +129,7 @@ pub fn intersect_halfplanes_dc_leaf(halfplanes: &[HalfPlane], leaf: usize) -> Re
         orig.push(k);
     }
     let ids: Vec<usize> = (4..lines.len()).collect();
-    let whole = Conv {
-        left: vec![BOX_LEFT],
-        right: vec![BOX_RIGHT],
-        bot: BOX_BOTTOM,
-        top: BOX_TOP,
-        bot_edge: true,
-        top_edge: true,
-    };
+    let whole = Conv::whole();
     let region = if ids.is_empty() {
         Some(whole)
     } else {
@@ -171,23 +180,15 @@ fn small(lines: &[Line], ids: &[usize]) -> Conv {
             c.top = tighter(lines, c.top, i);
         }
     }
-    // Normals of one side lie in one open half-plane of directions: the cross product
-    // orders them (ties are parallel lines, kept next to each other).
-    let by = |turn: Ordering| {
-        move |&i: &usize, &j: &usize| match cross_sign(&lines[i], &lines[j]) {
-            Ordering::Equal => Ordering::Equal,
-            s if s == turn => Ordering::Less,
-            _ => Ordering::Greater,
-        }
-    };
-    c.left.sort_by(by(Ordering::Less));
-    c.right.sort_by(by(Ordering::Greater));
+    // Bottom-to-top order of each chain: exact, by slope (see `slope_sort`).
+    sort_chain(lines, &mut c.left);
+    sort_chain(lines, &mut c.right);
     c
 }
 
 /// Of two parallel constraints with the same direction, the tighter one (on ties the
 /// smaller index, which is the earlier input constraint).
-fn tighter(lines: &[Line], i: usize, j: usize) -> usize {
+pub(super) fn tighter(lines: &[Line], i: usize, j: usize) -> usize {
     if i == j {
         return i;
     }
@@ -199,7 +200,7 @@ fn tighter(lines: &[Line], i: usize, j: usize) -> usize {
 }
 
 /// INTERSECTCONVEXREGIONS: the intersection of two regions, or `None` if it is empty.
-fn intersect_regions(lines: &[Line], c1: &Conv, c2: &Conv) -> Option<Conv> {
+pub(super) fn intersect_regions(lines: &[Line], c1: &Conv, c2: &Conv) -> Option<Conv> {
     let bot = tighter(lines, c1.bot, c2.bot);
     let top = tighter(lines, c1.top, c2.top);
     // The top line below the bottom line: nothing in between.
@@ -368,7 +369,7 @@ fn cut(lines: &[Line], l: Vec<usize>, r: Vec<usize>, bot: usize, top: usize) -> 
 
 /// The region's corners counter-clockwise (bottom edge, right boundary upwards, top edge,
 /// left boundary downwards), zero-length edges merged away.
-fn corners(lines: &[Line], c: &Conv) -> Vec<Corner> {
+pub(super) fn corners(lines: &[Line], c: &Conv) -> Vec<Corner> {
     let mut edges = Vec::with_capacity(c.left.len() + c.right.len() + 2);
     if c.bot_edge {
         edges.push(c.bot);

@@ -3,7 +3,8 @@
 //! | function | book | method | time |
 //! |---|---|---|---|
 //! | [`lp2d`] | §4.3–4.4 2DRANDOMIZEDBOUNDEDLP + unbounded case | randomized incremental, symbolic bounding box | expected O(n) |
-//! | [`intersect_halfplanes`] = [`intersect_halfplanes_dc`] | §4.2 INTERSECTHALFPLANES | divide and conquer, linear merge of left/right boundary chains | O(n log n) |
+//! | [`intersect_halfplanes`] = [`intersect_halfplanes_scan`] | §4.2 half-plane intersection | prune by a sample's region, exact slope sort (radix on the correctly rounded slope), one INTERSECTCONVEXREGIONS sweep | O(n log n) |
+//! | [`intersect_halfplanes_dc`] | §4.2 INTERSECTHALFPLANES | the book's divide and conquer, linear merge of left/right boundary chains | O(n log n) |
 //! | [`intersect_halfplanes_incremental`] | §4.2 half-plane intersection | randomized incremental clipping of a symbolic box | expected O(n·h), h the size of the intermediate regions (worst case O(n²)) |
 //! | [`lp_d`] | §4.5 RANDOMIZEDLP | recursive randomized incremental; `f64` run with an exactly certified basis, else exact integers | expected O(d!·n) |
 //! | [`smallest_enclosing_disc`] | §4.7 MINIDISC | randomized incremental; `f64` disc filter, exact `incircle`/`orient2d` near the circle | expected O(n) |
@@ -38,18 +39,23 @@ mod casting;
 mod certify;
 mod enclosing_disc;
 mod exact;
+mod filter;
 mod halfplanes;
 mod halfplanes_dc;
+mod halfplanes_scan;
 mod lp2d;
 mod lpd;
 mod read;
+mod round_meet;
 mod seidel;
+mod slope_sort;
 mod verify;
 
 pub use casting::{castability, Castability, TopFacet};
 pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, intersect_halfplanes_incremental, Region, RegionKind};
 pub use halfplanes_dc::{intersect_halfplanes_dc, intersect_halfplanes_dc_leaf};
+pub use halfplanes_scan::intersect_halfplanes_scan;
 pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
 pub use lpd::{lp_d, lp_d_exact, lp_d_fast_hits, LpSolution};
 pub use read::{read_constraints, read_halfplanes};
