@@ -22,7 +22,7 @@
 //! | 2.3 | map overlay | [`overlay::overlay`], [`overlay::overlay_polygons`] |
 //! | 2.4 | boolean operations | [`overlay::boolean`], [`overlay::boolean_with`], [`overlay::union_all`], [`overlay::make_valid`] |
 //! | 3 | polygon triangulation, monotone partition, art gallery, subdivision in its bounding box | [`triangulate::triangulate`], [`triangulate::triangulate_subdivision`], [`triangulate::monotone_partition`], [`triangulate::triangulate_monotone_polygon`], [`triangulate::classify_vertices`], [`triangulate::art_gallery`], [`triangulate::verify_triangulation`] |
-//! | 4 | half-plane intersection, linear programming, smallest enclosing disc, casting | [`lp::intersect_halfplanes`], [`lp::lp2d`], [`lp::lp_d`], [`lp::smallest_enclosing_disc`], [`lp::castability`] |
+//! | 4 | half-plane intersection, linear programming, smallest enclosing disc, casting | [`lp::intersect_halfplanes`], [`lp::intersect_halfplanes_dc`], [`lp::lp2d`], [`lp::lp_d`], [`lp::smallest_enclosing_disc`], [`lp::castability`] |
 //! | 5 | orthogonal range searching | [`range::KdTree`], [`range::RangeTree`], [`range::LayeredRangeTree`], [`range::RangeTreeD`] |
 //! | 6 | point location: trapezoidal map, randomized incremental search structure, slab method | [`locate::PointLocator`], [`locate::TrapezoidalMap`], [`locate::SlabLocator`], [`locate::check_no_crossings`] |
 //! | 7 | Voronoi diagram (dual of Delaunay, Fortune), farthest-point diagram | [`voronoi::voronoi_diagram`], [`voronoi::dual_voronoi`], [`voronoi::voronoi_cells`], [`voronoi::fortune_voronoi`], [`voronoi::clip_cells`], [`voronoi::clip_cells_to_polygon`], [`voronoi::farthest_point_voronoi`], [`voronoi::verify_voronoi`], [`voronoi::NearestSite`] |
