@@ -283,3 +283,25 @@ proptest! {
         prop_assert!((area(&fixed) - exact).abs() < 1e-9);
     }
 }
+
+#[test]
+fn overlay_of_overlays_with_collinear_slivers_composes() {
+    // Shrunk from `three_layer_overlays_compose`: a is a degenerate triangle (three
+    // points on x = 0), b a thin triangle touching it, c two grid rings, one degenerate.
+    let tri = |v: [(f64, f64); 3]| Polygon::new(v.iter().map(|&(x, y)| pt(x, y)).collect(), vec![]);
+    let a = MultiPolygon(vec![tri([
+        (0., 0.),
+        (0., 4.5680605669815675),
+        (0., -4.2656810164975285),
+    ])]);
+    let b = MultiPolygon(vec![tri([
+        (0., 0.),
+        (1.268110028621112, 0.5676061104175983),
+        (0., -0.8410265872885284),
+    ])]);
+    let c = MultiPolygon(vec![
+        tri([(1., 4.), (1., 0.), (1., 1.)]),
+        tri([(0., 1.), (0., 2.), (2., 2.)]),
+    ]);
+    three_layers_agree(&a, &b, &c);
+}

@@ -110,10 +110,19 @@ fn along(seg: Segment2, p: &ExactPoint, q: &ExactPoint) -> Ordering {
 }
 
 /// The segments of a subdivision for the sweep: edges between input points as they are,
-/// and each input segment under edges with constructed ends once, whole.
+/// and the input segment under edges with constructed ends, cut at the input vertices of
+/// those edges.
+///
+/// The cuts matter: a vertex of the layer inside such a segment is not always where
+/// another fed segment crosses or ends (it may be the end of a collinear input segment
+/// merged into this one, with only collinear edges at it); fed whole, the segment would
+/// give a result piece spanning two of the layer's edges, and the overlay would lose the
+/// vertex. Every cut point is an input vertex on the segment, so each piece is an exact
+/// sub-segment running the same way.
 fn layer_segments<V, E, F>(d: &Dcel<V, E, F>) -> (Vec<Segment2>, Vec<Fed>) {
     let mut segs = Vec::new();
     let mut fed = Vec::new();
+    let mut carriers: Vec<(Segment2, Vec<HalfEdgeId>)> = Vec::new();
     let mut by_carrier: HashMap<[u64; 4], usize> = HashMap::new();
     for i in 0..d.edge_count() {
         let h = HalfEdgeId(2 * i);
@@ -128,18 +137,41 @@ fn layer_segments<V, E, F>(d: &Dcel<V, E, F>) -> (Vec<Segment2>, Vec<Fed>) {
         let way = if c.forward { h } else { d.twin(h) };
         let key = [c.seg.a.x, c.seg.a.y, c.seg.b.x, c.seg.b.y].map(|x| (x + 0.0).to_bits());
         let k = *by_carrier.entry(key).or_insert_with(|| {
-            segs.push(c.seg);
-            fed.push(Fed::Carrier(c.seg, Vec::new()));
-            fed.len() - 1
+            carriers.push((c.seg, Vec::new()));
+            carriers.len() - 1
         });
-        if let Fed::Carrier(_, list) = &mut fed[k] {
-            list.push(way);
-        }
+        carriers[k].1.push(way);
     }
-    for f in &mut fed {
-        if let Fed::Carrier(seg, list) = f {
-            let seg = *seg;
-            list.sort_by(|&x, &y| along(seg, d.origin_point(x), d.origin_point(y)));
+    for (seg, mut list) in carriers {
+        list.sort_by(|&x, &y| along(seg, d.origin_point(x), d.origin_point(y)));
+        // Cut at each input vertex of the sorted edges; a piece ends at an input point
+        // (the segment's far end for the last one) and keeps the edges it covers.
+        let mut start = seg.a;
+        let mut pending: Vec<HalfEdgeId> = Vec::new();
+        for e in list {
+            if let ExactPoint::Input(p) = d.origin_point(e) {
+                if !pending.is_empty() {
+                    segs.push(Segment2::new(start, *p));
+                    fed.push(Fed::Carrier(
+                        segs[segs.len() - 1],
+                        std::mem::take(&mut pending),
+                    ));
+                }
+                start = *p;
+            }
+            pending.push(e);
+            if let ExactPoint::Input(q) = d.origin_point(d.twin(e)) {
+                segs.push(Segment2::new(start, *q));
+                fed.push(Fed::Carrier(
+                    segs[segs.len() - 1],
+                    std::mem::take(&mut pending),
+                ));
+                start = *q;
+            }
+        }
+        if !pending.is_empty() {
+            segs.push(Segment2::new(start, seg.b));
+            fed.push(Fed::Carrier(segs[segs.len() - 1], pending));
         }
     }
     (segs, fed)
