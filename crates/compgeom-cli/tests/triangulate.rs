@@ -103,6 +103,67 @@ fn guard_json_bound_and_colours() {
 }
 
 #[test]
+fn guards_with_touching_holes_are_distinct_points_of_the_guard_colour() {
+    // Two holes touching at (7 5), one touching the outer ring at (0 5).
+    let wkt =
+        "POLYGON((0 0,10 0,10 10,0 10,0 0),(0 5,3 4,3 6,0 5),(5 5,7 5,6 7,5 5),(7 5,9 4,9 6,7 5))";
+    let dir = TempDir::new().unwrap();
+    let svg = dir.path().join("g.svg");
+    let svg_arg = svg.to_str().unwrap();
+    let v = run_json(
+        &[
+            "guard",
+            "-",
+            "--input-format",
+            "wkt",
+            "--verify",
+            "--svg",
+            svg_arg,
+        ],
+        wkt,
+    );
+    let point = |p: &Value| (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+    let guards: Vec<(f64, f64)> = v["guards"].as_array().unwrap().iter().map(point).collect();
+    let vertices: Vec<(f64, f64)> = v["vertices"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(point)
+        .collect();
+    let colors: Vec<u64> = v["colors"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c.as_u64().unwrap())
+        .collect();
+    for (k, g) in guards.iter().enumerate() {
+        assert!(!guards[..k].contains(g), "guard {g:?} listed twice: {v}");
+    }
+    // Every guard is a vertex of one colour class, and every vertex of that colour is a guard.
+    let guard_colors: Vec<u64> = guards
+        .iter()
+        .map(|g| colors[vertices.iter().position(|p| p == g).unwrap()])
+        .collect();
+    let c = guard_colors[0];
+    assert!(guard_colors.iter().all(|&k| k == c), "{v}");
+    for (p, &k) in vertices.iter().zip(&colors) {
+        if k == c {
+            assert!(guards.contains(p), "{p:?} has the guard colour: {v}");
+        }
+    }
+    // Every triangle has a guard at a corner; at most floor((n + 2h)/3) guards.
+    for t in v["triangles"].as_array().unwrap() {
+        assert!((0..3).any(|k| guards.contains(&vertices[t[k].as_u64().unwrap() as usize])));
+    }
+    assert!(guards.len() <= (vertices.len() + 2 * 3) / 3);
+    let picture = fs::read_to_string(&svg).unwrap();
+    assert!(
+        picture.contains("vertex of two colours"),
+        "the SVG rings two-coloured vertices"
+    );
+}
+
+#[test]
 fn self_intersecting_polygon_is_bad_input_naming_edges() {
     let out = compgeom()
         .args(["triangulate", "-", "--input-format", "wkt"])

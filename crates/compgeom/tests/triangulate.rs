@@ -6,10 +6,11 @@
 mod common;
 use common::exact_shoelace2;
 use compgeom::intersect::is_simple;
+use compgeom::kernel::{orient2d, Orientation};
 use compgeom::triangulate::{
     art_gallery, classify_vertices, is_y_monotone, monotone_partition, triangulate,
-    triangulate_monotone_polygon, verify_art_gallery, verify_triangulation, Triangulation,
-    VertexType,
+    triangulate_monotone_polygon, verify_art_gallery, verify_triangulation, ArtGallery,
+    Triangulation, VertexType,
 };
 use compgeom::{Error, Point2, Polygon};
 use num_rational::BigRational;
@@ -43,12 +44,12 @@ fn check(poly: &Polygon) -> Triangulation {
     let t = triangulate(poly).unwrap_or_else(|e| panic!("{e}: {poly:?}"));
     verify_triangulation(poly, &t).unwrap_or_else(|e| panic!("{e}: {poly:?}"));
     assert_eq!(triangles_area2(&t), polygon_area2(poly), "{poly:?}");
+    if t.triangles.len() <= 120 {
+        assert_interiors_disjoint(&t);
+    }
     let g = art_gallery(&t);
     verify_art_gallery(&t, &g).unwrap_or_else(|e| panic!("{e}: {poly:?}"));
-    if poly.holes.is_empty() {
-        assert_eq!(g.cuts, 0);
-        assert!(g.guards.len() <= t.vertices.len() / 3);
-    }
+    check_guards(&t, &g, poly);
     // The partition's pieces are monotone and their triangulations agree in number.
     let part = monotone_partition(poly).unwrap();
     for piece in &part.pieces {
@@ -59,6 +60,68 @@ fn check(poly: &Polygon) -> Triangulation {
         }
     }
     t
+}
+
+/// Brute force, independent of the library's verifier: no two triangles share an interior
+/// point. Two convex polygons have disjoint interiors iff the line through some edge of
+/// one has the whole other polygon on its closed outer side (exact `orient2d`).
+fn assert_interiors_disjoint(t: &Triangulation) {
+    let tri = |i: usize| t.triangles[i].map(|v| t.vertices[v]);
+    let separates = |a: [Point2; 3], b: [Point2; 3]| {
+        (0..3).any(|s| {
+            b.iter()
+                .all(|&q| orient2d(a[s], a[(s + 1) % 3], q) != Orientation::CounterClockwise)
+        })
+    };
+    for i in 0..t.triangles.len() {
+        for j in i + 1..t.triangles.len() {
+            let (a, b) = (tri(i), tri(j));
+            assert!(
+                separates(a, b) || separates(b, a),
+                "triangles {i} {a:?} and {j} {b:?} overlap"
+            );
+        }
+    }
+}
+
+/// The art-gallery guarantees, checked from the outside: every triangle has a guard at one
+/// of its corners (so the guards see the polygon), guards stand at distinct points, the
+/// vertices coloured with the guard colour are guards, and their number is at most
+/// ⌊n/3⌋ without holes (with a proper colouring of every edge) or ⌊(n + 2h)/3⌋ with h holes.
+fn check_guards(t: &Triangulation, g: &ArtGallery, poly: &Polygon) {
+    let guard_points: Vec<Point2> = g.guards.iter().map(|&v| t.vertices[v]).collect();
+    for (i, tri) in t.triangles.iter().enumerate() {
+        assert!(
+            tri.iter().any(|&v| guard_points.contains(&t.vertices[v])),
+            "triangle {i} has no guard: {poly:?}"
+        );
+    }
+    for (k, q) in guard_points.iter().enumerate() {
+        assert!(!guard_points[..k].contains(q), "guard {q:?} twice");
+    }
+    for &v in &g.guards {
+        assert_eq!(g.colors[v], g.guard_color, "guard {v}");
+    }
+    for (v, &c) in g.colors.iter().enumerate() {
+        // (Of the visits of a point where rings touch, one may carry another colour.)
+        if c == g.guard_color {
+            assert!(
+                guard_points.contains(&t.vertices[v]),
+                "vertex {v} of the guard colour"
+            );
+        }
+    }
+    let h = t.holes();
+    if h == 0 {
+        assert_eq!(g.cuts, 0);
+        assert!(g.guards.len() <= t.vertices.len() / 3);
+        for tri in &t.triangles {
+            let c = tri.map(|v| g.colors[v]);
+            assert!(c[0] != c[1] && c[1] != c[2] && c[0] != c[2], "{c:?}");
+        }
+    } else {
+        assert!(g.guards.len() <= (t.vertices.len() + 2 * h) / 3);
+    }
 }
 
 /// A star-shaped polygon around the origin from angles (sorted) and radii.
@@ -449,4 +512,44 @@ proptest! {
         let t = check(&poly);
         prop_assert_eq!(triangles_area2(&t), BigRational::from_integer((2 * (36 - cells.len() as i64)).into()));
     }
+}
+
+#[test]
+fn guards_with_holes_show_the_guard_colour_and_stand_once_per_point() {
+    // Two triangular holes touching each other at (7, 5), one touching the outer ring at
+    // (0, 5): the dual graph has two independent cycles, so the colouring is cut open along
+    // two diagonals and some vertices carry two colours.
+    let outer = vec![p(0., 0.), p(10., 0.), p(10., 10.), p(0., 10.)];
+    let h1 = vec![p(0., 5.), p(3., 4.), p(3., 6.)];
+    let h2 = vec![p(5., 5.), p(7., 5.), p(6., 7.)];
+    let h3 = vec![p(7., 5.), p(9., 4.), p(9., 6.)];
+    let poly = Polygon::new(outer, vec![h1, h2, h3]);
+    let t = check(&poly);
+    let g = art_gallery(&t);
+    assert!(g.cuts > 0);
+    // A vertex carrying the guard colour on any corner shows it.
+    for (tri, c) in t.triangles.iter().zip(&g.corner_colors) {
+        for s in 0..3 {
+            if c[s] == g.guard_color {
+                assert_eq!(g.colors[tri[s]], g.guard_color);
+            }
+        }
+    }
+    // A corrupted answer is caught by the verifier: a guard of the wrong colour, the same
+    // point twice, a triangle without a guard.
+    let mut bad = g.clone();
+    bad.colors[bad.guards[0]] = (bad.guard_color + 1) % 3;
+    assert!(verify_art_gallery(&t, &bad).is_err());
+    let mut bad = g.clone();
+    let first = bad.guards[0];
+    if let Some(twin) =
+        (0..t.vertices.len()).find(|&v| v != first && t.vertices[v] == t.vertices[first])
+    {
+        bad.guards.push(twin);
+        bad.colors[twin] = bad.guard_color;
+        assert!(verify_art_gallery(&t, &bad).is_err());
+    }
+    let mut bad = g.clone();
+    bad.guards.clear();
+    assert!(verify_art_gallery(&t, &bad).is_err());
 }

@@ -26,10 +26,13 @@ JSON output (--format json, the default) is one object:
              guard; the guard bound holds)
 
 With holes the dual graph is not a tree: the colouring follows a spanning tree of it
-(cutting the polygon open along h diagonals), a vertex may carry a second colour on the
-other side of a cut (`colors` gives its first), every triangle still has a guard, and there
-are at most floor((n + 2h)/3) guards. --format geojson / wkt prints the guards as a
-MultiPoint.
+(cutting the polygon open along h diagonals), so every triangle still has three colours
+and a guard, and there are at most floor((n + 2h)/3) guards, but a vertex may carry a
+second colour on the other side of a cut (`colors` then gives the guard colour if it
+carries it, else its first; the SVG rings such vertices). A polygon with holes need not
+have a proper 3-colouring at all, and floor(n/3) guards need not suffice. Where rings
+touch, a guard at the touching point is listed once. --format geojson / wkt prints the
+guards as a MultiPoint.
 
 Examples:
   compgeom guard gallery.wkt --svg guards.svg --verify";
@@ -153,6 +156,36 @@ pub fn picture(t: &Triangulated, g: &Guarded, title: String) -> Picture {
                 Style::points(colour).with_radius(3.5),
             )
             .points(&pts),
+        );
+    }
+    // With holes: vertices whose corners carry more than one colour (the colouring is
+    // cut open along the diagonals left out of the dual spanning tree).
+    let mut several: Vec<Point2> = Vec::new();
+    for (part, gallery) in t.parts.iter().zip(&g.galleries) {
+        let mut carries = vec![0u8; part.vertices.len()];
+        for (tri, c) in part.triangles.iter().zip(&gallery.corner_colors) {
+            for s in 0..3 {
+                carries[tri[s]] |= 1 << c[s];
+            }
+        }
+        several.extend(
+            part.vertices
+                .iter()
+                .zip(&carries)
+                .filter(|(_, m)| m.count_ones() > 1)
+                .map(|(p, _)| *p),
+        );
+    }
+    if !several.is_empty() {
+        pic.add(
+            Layer::new(
+                "vertex of two colours",
+                Style::points("#ff7f0e")
+                    .with_radius(5.5)
+                    .without_fill()
+                    .with_stroke_width(1.5),
+            )
+            .points(&several),
         );
     }
     pic.add(

@@ -52,15 +52,26 @@ fn gallery_with_pillar() -> Polygon {
     p
 }
 
+/// The plan with two pillars in the hall, the second touching the first at a corner.
+fn gallery_with_pillars() -> Polygon {
+    let mut p = gallery_with_pillar();
+    p.holes
+        .push(ring(&[(3., 3.), (4., 4.), (5., 3.), (4., 3.5)]));
+    p
+}
+
 /// The section.
 pub fn section(demo: &Demo) -> Result<Section, CliError> {
     let mut section = Section::new(
-        "3 Polygon triangulation and the art gallery",
+        "Chapter 3 — polygon triangulation and the art gallery",
         "A gallery floor plan with a pillar, cut into y-monotone pieces by the MAKEMONOTONE \
          sweep (start, end, split, merge and regular vertices marked), each piece \
          triangulated in linear time; then the plan without the pillar, 3-coloured along \
-         the dual tree, with guards at the smallest colour class (at most ⌊n/3⌋). Every \
-         triangulation and colouring is checked exactly.",
+         the dual tree, with guards at the smallest colour class (at most ⌊n/3⌋). With \
+         pillars (holes) the dual graph has cycles: the colouring follows a spanning tree, \
+         so each triangle still has three colours and a guard, with at most ⌊(n + 2h)/3⌋ \
+         guards, but a vertex may carry two colours (ringed). Every triangulation and \
+         colouring is checked exactly.",
     );
     let pillar = MultiPolygon(vec![gallery_with_pillar()]);
     let (t, time) = timed(|| triangulate_all(pillar.clone(), true));
@@ -107,5 +118,20 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
         )?
         .with_fact("time", format_duration(time)),
     );
+    let pillars = MultiPolygon(vec![gallery_with_pillars()]);
+    let t = triangulate_all(pillars, true)?;
+    let g = guard_all(&t, true)?;
+    let h = t.parts[0].holes();
+    let title = format!(
+        "art gallery with {h} pillars: {} vertices, {} guards (bound {})",
+        t.vertices.len(),
+        g.guards.len(),
+        (t.vertices.len() + 2 * h) / 3
+    );
+    section.push(demo.figure(
+        "guard-gallery-pillars.svg",
+        "Guards with holes: the colouring is cut open along h diagonals",
+        &guard_picture(&t, &g, title),
+    )?);
     Ok(section)
 }

@@ -12,19 +12,39 @@
 //! colours, and a vertex may carry more than one colour (one per side of a cut). The
 //! guards of a colour are the vertices with a corner of that colour; every triangle has
 //! such a corner, so every triangle — and hence the whole polygon — is seen, and the
-//! smallest class has at most ⌊(n + 2h)/3⌋ guards. O(n log n) (sorting the diagonals).
+//! smallest class has at most ⌊(n + 2h)/3⌋ guards (the cut-open polygon has n + 2h
+//! corners on its boundary). What is *not* guaranteed with holes: one colour per vertex
+//! that is proper on every edge (a polygon with holes need not be 3-colourable at all),
+//! nor the ⌊n/3⌋ bound. O(n log n) (sorting the diagonals).
+//!
+//! Where rings touch, one point is several vertices (one per visit, see
+//! [`super::Triangulation::vertices`]); a guard there is listed once.
 use super::Triangulation;
+use crate::kernel::Point2;
 use crate::{Error, Result};
+use std::cmp::Ordering;
+
+/// Lexicographic order on points, consistent with `==` (so 0 and −0 are one
+/// coordinate); coordinates are finite (the triangulation rejected the rest).
+fn cmp_point(a: Point2, b: Point2) -> Ordering {
+    let c = |u: f64, v: f64| u.partial_cmp(&v).unwrap_or(Ordering::Equal);
+    c(a.x, b.x).then(c(a.y, b.y))
+}
 
 /// A 3-colouring of a triangulation and the guards it gives.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ArtGallery {
-    /// One colour (0, 1 or 2) per vertex: the colour of its first coloured corner. For a
-    /// polygon without holes every corner of a vertex has this colour.
+    /// One colour (0, 1 or 2) per vertex. For a polygon without holes every corner of a
+    /// vertex has this colour, so it is a proper 3-colouring. With holes a vertex may
+    /// carry several colours ([`corner_colors`](Self::corner_colors)): it is given the
+    /// guard colour if it has a corner of that colour, else its first corner's colour, so
+    /// that the guards are exactly the vertices whose colour is
+    /// [`guard_color`](Self::guard_color) (up to repeated points, see `guards`).
     pub colors: Vec<u8>,
     /// The colours of every triangle's corners, in the triangle's vertex order.
     pub corner_colors: Vec<[u8; 3]>,
-    /// The guards: vertex indices, ascending.
+    /// The guards: vertex indices, ascending, one per guard position (of the visits of
+    /// a point where rings touch, the first one of the guard colour).
     pub guards: Vec<usize>,
     /// The colour class the guards were taken from.
     pub guard_color: u8,
@@ -109,13 +129,6 @@ pub fn art_gallery(t: &Triangulation) -> ArtGallery {
             }
         }
     }
-    for (tri, c) in t.triangles.iter().zip(&corner) {
-        for s in 0..3 {
-            if colors[tri[s]] == UNSET {
-                colors[tri[s]] = c[s];
-            }
-        }
-    }
     let diagonals = adj.iter().flatten().filter(|&&x| x != u32::MAX).count() / 2;
     let components = t.triangles.len() - tree_edges;
     let cuts = diagonals - (t.triangles.len() - components);
@@ -129,13 +142,30 @@ pub fn art_gallery(t: &Triangulation) -> ArtGallery {
     let guard_color = (0..3u8)
         .min_by_key(|&c| has.iter().filter(|&&m| m & (1 << c) != 0).count())
         .unwrap_or(0);
-    let guards = (0..n)
-        .filter(|&v| has[v] & (1 << guard_color) != 0)
-        .collect();
+    // A vertex shows the guard colour when it carries it (only possible with holes to
+    // carry more than one), else its first corner's colour.
+    for (tri, c) in t.triangles.iter().zip(&corner) {
+        for s in 0..3 {
+            if colors[tri[s]] == UNSET || c[s] == guard_color {
+                colors[tri[s]] = c[s];
+            }
+        }
+    }
     for c in colors.iter_mut() {
         if *c == UNSET {
             *c = 0;
         }
+    }
+    // One guard per point: visits of a point where rings touch are equal points.
+    let mut guards: Vec<usize> = (0..n)
+        .filter(|&v| has[v] & (1 << guard_color) != 0)
+        .collect();
+    let mut by_point = guards.clone();
+    by_point.sort_by(|&a, &b| cmp_point(t.vertices[a], t.vertices[b]).then(a.cmp(&b)));
+    by_point.dedup_by(|b, a| t.vertices[*a] == t.vertices[*b]);
+    if by_point.len() < guards.len() {
+        by_point.sort_unstable();
+        guards = by_point;
     }
     ArtGallery {
         colors,
@@ -149,20 +179,51 @@ pub fn art_gallery(t: &Triangulation) -> ArtGallery {
 /// Check a colouring and its guards against a triangulation, exactly: every triangle's
 /// corners have three different colours; without cuts (no holes) every corner of a vertex
 /// has the vertex's colour, so the colouring is proper on every edge and diagonal; every
-/// triangle has a guard among its corners of the guard colour; and there are at most
-/// ⌊(n + 2·cuts)/3⌋ guards (⌊n/3⌋ for a simple polygon).
+/// vertex's colour is one of its corners' colours; every triangle has a corner of the
+/// guard colour at a guard's position; the guards are distinct points of the guard
+/// colour; and there are at most ⌊(n + 2·cuts)/3⌋ guards (⌊n/3⌋ for a simple polygon).
 pub fn verify_art_gallery(t: &Triangulation, g: &ArtGallery) -> Result<()> {
     let fail = |m: String| Err(Error::Verification(m));
     if g.corner_colors.len() != t.triangles.len() || g.colors.len() != t.vertices.len() {
         return fail("colouring does not match the triangulation".into());
     }
-    let mut is_guard = vec![false; t.vertices.len()];
+    if g.guard_color > 2 {
+        return fail(format!("guard colour {} is not 0, 1 or 2", g.guard_color));
+    }
+    let mut carries = vec![0u8; t.vertices.len()];
+    for (tri, c) in t.triangles.iter().zip(&g.corner_colors) {
+        for s in 0..3 {
+            if c[s] <= 2 {
+                carries[tri[s]] |= 1 << c[s];
+            }
+        }
+    }
+    let carried = |v: usize| g.colors[v] <= 2 && carries[v] & (1 << g.colors[v]) != 0;
+    if let Some(v) = (0..t.vertices.len()).find(|&v| carries[v] != 0 && !carried(v)) {
+        return fail(format!(
+            "vertex {v} has colour {} on none of its corners",
+            g.colors[v]
+        ));
+    }
+    let mut guard_points: Vec<Point2> = Vec::with_capacity(g.guards.len());
     for &v in &g.guards {
-        if v >= is_guard.len() {
+        if v >= t.vertices.len() {
             return fail(format!("guard {v} is not a vertex"));
         }
-        is_guard[v] = true;
+        if g.colors[v] != g.guard_color {
+            return fail(format!("guard {v} does not have the guard colour"));
+        }
+        guard_points.push(t.vertices[v]);
     }
+    guard_points.sort_by(|&a, &b| cmp_point(a, b));
+    if guard_points.windows(2).any(|w| w[0] == w[1]) {
+        return fail("two guards stand at the same point".into());
+    }
+    let is_guard = |v: usize| {
+        guard_points
+            .binary_search_by(|&q| cmp_point(q, t.vertices[v]))
+            .is_ok()
+    };
     for (i, (tri, c)) in t.triangles.iter().zip(&g.corner_colors).enumerate() {
         let mut seen = [false; 3];
         for s in 0..3 {
@@ -174,7 +235,7 @@ pub fn verify_art_gallery(t: &Triangulation, g: &ArtGallery) -> Result<()> {
                 return fail(format!("vertex {} has two colours", tri[s]));
             }
         }
-        if !(0..3).any(|s| c[s] == g.guard_color && is_guard[tri[s]]) {
+        if !(0..3).any(|s| c[s] == g.guard_color && is_guard(tri[s])) {
             return fail(format!("triangle {i} has no guard"));
         }
     }
