@@ -663,9 +663,51 @@ mod range_commands {
             .assert()
             .success()
             .stdout("MULTIPOINT ((0 0))\n");
-        assert!(fs::read_to_string(&ksvg)
+        // So few points make one leaf bucket: no splitting lines, and no empty legend entry.
+        assert!(!fs::read_to_string(&ksvg)
             .unwrap()
             .contains("kd-tree splitting lines"));
+        let many = dir.path().join("many.csv");
+        let grid: String = (0..64).map(|i| format!("{},{}\n", i % 8, i / 8)).collect();
+        fs::write(&many, grid).unwrap();
+        compgeom()
+            .args([
+                "range",
+                many.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+                "--structure",
+                "kdtree",
+                "--svg",
+                ksvg.to_str().unwrap(),
+            ])
+            .assert()
+            .success();
+        let picture = fs::read_to_string(&ksvg).unwrap();
+        let lines = picture
+            .split("kd-tree splitting lines")
+            .nth(1)
+            .and_then(|rest| rest.split("</g>").next())
+            .unwrap_or_default();
+        assert!(lines.contains("<line"), "splitting lines drawn: {picture}");
+        // --count prints numbers: a geometry format is refused, and nothing is written.
+        let out = dir.path().join("out.wkt");
+        compgeom()
+            .args([
+                "range",
+                many.to_str().unwrap(),
+                "--queries",
+                q.to_str().unwrap(),
+                "--count",
+                "-f",
+                "wkt",
+                "-o",
+                out.to_str().unwrap(),
+            ])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("--count"));
+        assert!(!out.exists());
     }
 
     #[test]

@@ -8,7 +8,7 @@ use clap::{Args, ValueEnum};
 use compgeom::io::{write_shape, Shape};
 use compgeom::range::{read_rects, verify_query, KdTree, LayeredRangeTree, RangeTree};
 use compgeom::render::{Layer, Picture, Style};
-use compgeom::{Bbox2, Point2};
+use compgeom::{Bbox2, Point2, Segment2};
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -27,7 +27,8 @@ JSON output (--format json, the default) is one object:
   queries       number of queries
   verified      true; present only with --verify (each answer checked against brute force)
 
-Other formats print the reported points (of all queries) as a multipoint.
+Other formats print the reported points (of all queries) as a multipoint (--count: json
+only).
 
 Examples:
   compgeom range points.csv --queries rects.csv
@@ -212,6 +213,11 @@ pub fn run(args: &RangeArgs) -> Result<(), CliError> {
             serde_json::to_string(&json)
                 .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?
         }
+        Some(_) if counts.is_some() => {
+            return Err(CliError::bad_input(
+                "--count prints numbers, not geometry: use --format json",
+            ))
+        }
         Some(format) => {
             let mut ids: Vec<usize> = results.iter().flatten().flatten().copied().collect();
             ids.sort_unstable();
@@ -223,7 +229,7 @@ pub fn run(args: &RangeArgs) -> Result<(), CliError> {
         }
     };
     if let Some(svg) = &args.output.svg {
-        let reported: Vec<usize> = results.iter().flatten().flatten().copied().collect();
+        let reported: &[Vec<usize>] = results.as_deref().unwrap_or_default();
         let splits = (structure == StructureArg::Kdtree)
             .then(|| KdTree::new(&points))
             .transpose()?;
@@ -233,35 +239,41 @@ pub fn run(args: &RangeArgs) -> Result<(), CliError> {
             points.len(),
             queries
         );
-        let picture = range_picture(&points, &rects, &probes, &reported, splits.as_ref(), &title);
+        let picture = range_picture(&points, &rects, &probes, reported, splits.as_ref(), &title);
         output::write_atomic(svg, picture.to_svg_string().as_bytes())?;
     }
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
 }
 
-/// Points, query rectangles (or k-NN probes), reported points highlighted, and for a
-/// kd-tree its splitting lines.
+/// Points, query rectangles (or k-NN probes, each joined to its neighbours), reported
+/// points highlighted (`results`: one list per query, may be empty with `--count`), and for
+/// a kd-tree its splitting lines.
 pub fn range_picture(
     points: &[Point2],
     rects: &[Bbox2],
     probes: &[Point2],
-    reported: &[usize],
+    results: &[Vec<usize>],
     kdtree: Option<&KdTree>,
     title: &str,
 ) -> Picture {
+    let mut reported: Vec<usize> = results.iter().flatten().copied().collect();
+    reported.sort_unstable();
+    reported.dedup();
     let mut pic = Picture::new(800, 640).with_title(title);
     let mut bounds = Bbox2::of_points(points);
     for r in rects.iter().filter(|r| !r.is_empty()) {
         bounds.extend(r.min);
         bounds.extend(r.max);
     }
-    if let Some(t) = kdtree {
+    // (A tree of at most one leaf bucket has no splitting lines: no empty legend entry.)
+    let splits = kdtree.map(|t| t.splits(bounds)).unwrap_or_default();
+    if !splits.is_empty() {
         pic.add(
             Layer::new(
                 "kd-tree splitting lines",
                 Style::lines("#bbbbbb").with_stroke_width(0.8),
             )
-            .segments(&t.splits(bounds)),
+            .segments(&splits),
         );
     }
     let radius = if points.len() > 10_000 { 1.0 } else { 2.0 };
@@ -278,22 +290,32 @@ pub fn range_picture(
             Style::area("#1f77b4").with_fill_opacity(0.08),
         );
         for r in rects.iter().filter(|r| !r.is_empty()) {
-            layer = layer.ring(&[
-                r.min,
-                Point2::new(r.max.x, r.min.y),
-                r.max,
-                Point2::new(r.min.x, r.max.y),
-            ]);
+            // A point rectangle would draw as nothing.
+            if r.min == r.max {
+                layer = layer.point(r.min);
+            } else {
+                layer = layer.ring(&[
+                    r.min,
+                    Point2::new(r.max.x, r.min.y),
+                    r.max,
+                    Point2::new(r.min.x, r.max.y),
+                ]);
+            }
         }
         pic.add(layer);
     }
     if !probes.is_empty() {
+        let links: Vec<Segment2> = probes
+            .iter()
+            .zip(results)
+            .flat_map(|(&q, r)| r.iter().map(move |&i| Segment2::new(q, points[i])))
+            .collect();
         pic.add(
             Layer::new(
-                "k-NN query points",
-                Style::points("#2ca02c").with_radius(4.0),
+                "query point to its neighbours",
+                Style::lines("#2ca02c").with_stroke_width(0.8),
             )
-            .points(probes),
+            .segments(&links),
         );
     }
     let hits: Vec<Point2> = reported.iter().map(|&i| points[i]).collect();
@@ -304,5 +326,18 @@ pub fn range_picture(
         )
         .points(&hits),
     );
+    // Query points last, so that a query point equal to an input point stays visible.
+    if !probes.is_empty() {
+        pic.add(
+            Layer::new(
+                "k-NN query points",
+                Style::points("#2ca02c")
+                    .with_radius(5.0)
+                    .without_fill()
+                    .with_stroke_width(2.0),
+            )
+            .points(probes),
+        );
+    }
     pic
 }

@@ -163,33 +163,47 @@ pub fn window_picture(
     title: &str,
 ) -> Picture {
     let mut pic = Picture::new(800, 640).with_title(title);
-    pic.add(
+    // Zero-length segments and point windows would draw as nothing: mark them as rings.
+    let with_points = |mut layer: Layer, segs: &[Segment2]| {
+        for s in segs.iter().filter(|s| s.a == s.b) {
+            layer = layer.point(s.a);
+        }
+        layer.segments(segs)
+    };
+    pic.add(with_points(
         Layer::new(
             format!("input segments ({})", segments.len()),
             Style::lines("#8c8c8c").with_stroke_width(1.0),
-        )
-        .segments(segments),
-    );
+        ),
+        segments,
+    ));
     let mut layer = Layer::new(
         format!("query windows ({})", rects.len()),
         Style::area("#1f77b4").with_fill_opacity(0.1),
     );
     for r in rects.iter().filter(|r| !r.is_empty()) {
-        layer = layer.ring(&[
-            r.min,
-            Point2::new(r.max.x, r.min.y),
-            r.max,
-            Point2::new(r.min.x, r.max.y),
-        ]);
+        if r.min == r.max {
+            layer = layer.point(r.min);
+        } else {
+            layer = layer.ring(&[
+                r.min,
+                Point2::new(r.max.x, r.min.y),
+                r.max,
+                Point2::new(r.min.x, r.max.y),
+            ]);
+        }
     }
     pic.add(layer);
-    let hits: Vec<Segment2> = reported.iter().map(|&i| segments[i]).collect();
-    pic.add(
+    let mut ids = reported.to_vec();
+    ids.sort_unstable();
+    ids.dedup();
+    let hits: Vec<Segment2> = ids.iter().map(|&i| segments[i]).collect();
+    pic.add(with_points(
         Layer::new(
-            format!("reported segments ({})", reported.len()),
+            format!("reported segments ({})", hits.len()),
             Style::lines("#d62728").with_stroke_width(2.5),
-        )
-        .segments(&hits),
-    );
+        ),
+        &hits,
+    ));
     pic
 }
