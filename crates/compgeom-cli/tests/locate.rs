@@ -97,6 +97,38 @@ fn geojson_layer_and_segments() {
 }
 
 #[test]
+fn a_multipolygon_feature_is_one_feature() {
+    // Feature 0 is two squares (a MultiPolygon), feature 1 one square between them; a
+    // feature with no geometry still takes its index.
+    let gj = r#"{"type":"FeatureCollection","features":[
+      {"type":"Feature","properties":{},"geometry":{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1],[0,1],[0,0]]],[[[5,0],[6,0],[6,1],[5,1],[5,0]]]]}},
+      {"type":"Feature","properties":{},"geometry":null},
+      {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[2,0],[3,0],[3,1],[2,1],[2,0]]]}}]}"#;
+    let (_d, m, q) = setup("map.geojson", gj, "0.5,0.5\n5.5,0.5\n2.5,0.5\n6,1\n9,9\n");
+    for locator in ["trap", "slab"] {
+        let v = run(&[
+            m.as_os_str(),
+            "--queries".as_ref(),
+            q.as_os_str(),
+            "--locator".as_ref(),
+            locator.as_ref(),
+            "--verify".as_ref(),
+        ]);
+        let feats: Vec<Value> = v["results"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r["feature"].clone())
+            .collect();
+        assert_eq!(
+            feats,
+            vec![json!(0), json!(0), json!(2), json!(0), Value::Null],
+            "{locator}"
+        );
+    }
+}
+
+#[test]
 fn svg_draws_the_trapezoidal_map() {
     let (d, m, q) = setup("map.wkt", LAYER, QUERIES);
     let svg = d.path().join("map.svg");

@@ -5,9 +5,9 @@
 use crate::cli::{InputArgs, InputFormat, OutputArgs, OutputFormat};
 use crate::error::CliError;
 use crate::output;
-use clap::Args;
+use clap::{Args, ValueEnum};
 use compgeom::dcel::{Dcel, FaceId, HalfEdgeId};
-use compgeom::io::{read_polygons, read_segments};
+use compgeom::io::{read_polygon_features, read_segments};
 use compgeom::kernel::{orient2d, orient_exact, ExactPoint, Orientation};
 use compgeom::locate::{
     polygons_at, polygons_dcel, segments_dcel, Location, PointLocator, SlabLocator, DEFAULT_SEED,
@@ -19,23 +19,24 @@ use std::path::PathBuf;
 
 /// `--help` text describing the JSON output.
 pub const JSON_HELP: &str = "\
-MAP is a polygon layer (WKT (MULTI)POLYGON, GeoJSON (Multi)Polygon features, CSV rings),
-each polygon a feature, or a set of segments (WKT (MULTI)LINESTRING, GeoJSON, CSV
+MAP is a polygon layer (GeoJSON (Multi)Polygon features; WKT (MULTI)POLYGON or CSV rings,
+each polygon a feature), or a set of segments (WKT (MULTI)LINESTRING, GeoJSON, CSV
 x1,y1,x2,y2 lines); polygons are tried first. Polygons may share edges and vertices,
 segments may touch and overlap, but boundaries must not cross (an error names the first
 crossing pair). POINTS holds the query points (any points format).
 
 JSON output (--format json, the default) is one object:
   results  [{\"feature\": i | null, \"on\": \"face\" | \"edge\" | \"vertex\"}, ...], one per query
-           in query order. For a polygon layer, feature is the index of the polygon
-           containing the point (the lowest, where several contain it; boundaries
-           included), null outside all; for segments, the index of the lowest segment
+           in query order. For a polygon layer, feature is the index of the input
+           feature containing the point (the lowest, where several contain it;
+           boundaries included), null outside all; for segments, the index of the lowest segment
            through the point, null when the point is on none, and then also
            \"face\": the index of the face of the segments' subdivision holding the point
            (0 = the unbounded face). `on` says whether the point is inside a face, on an
            edge, or at a vertex of the subdivision.
-Polygons are numbered in reading order (a MultiPolygon feature gives several). Every
-decision is exact. --seed picks the random insertion order (the answers do not depend on
+Features are numbered from 0 in reading order (a GeoJSON MultiPolygon feature is one
+feature: all its polygons answer with its index; in WKT and CSV every polygon is one
+feature, a MULTIPOLYGON giving several). Every decision is exact. --seed picks the random insertion order (the answers do not depend on
 it, only the search structure does). --locator picks the structure answering the queries:
 trap (the trapezoidal map and its randomized search structure, expected O(n log n) build,
 O(n) space) or slab (the slab method: O(n log n + S) build and O(n + S) space for S
@@ -46,9 +47,9 @@ input, if more; fewer for maps over 10^4 edges, about 2*10^7 / edges) against an
 brute force over all vertices and edges (the vertex equal to the point, else the edge
 holding it) and, in a polygon layer, exact point-in-polygon over every polygon for the
 features; every query (or 20000 spread) is also answered by the other locator, which
-must agree (skipped when the slab method would exceed its size limit). --svg draws the trapezoidal map
-with its vertical extensions and the query points coloured by answer (whatever the
-locator).
+must agree (skipped when the slab method would exceed its size limit). --svg draws the
+trapezoidal map with its vertical extensions and the query points coloured by answer
+(whatever the locator).
 
 Examples:
   compgeom locate districts.geojson --queries stops.csv
@@ -243,7 +244,8 @@ fn brute_polygons(polys: &compgeom::MultiPolygon, q: Point2) -> Vec<usize> {
 
 /// The map read: polygons, or segments.
 enum Map {
-    Polygons(compgeom::MultiPolygon),
+    /// The polygons and the input feature of each (ascending).
+    Polygons(compgeom::MultiPolygon, Vec<usize>),
     Segments(Vec<compgeom::Segment2>),
 }
 
@@ -253,8 +255,8 @@ fn read_map(args: &LocateArgs) -> Result<Map, CliError> {
         input_format: args.input_format,
     }
     .read()?;
-    match read_polygons(&src.text, src.format, &src.name) {
-        Ok(p) => Ok(Map::Polygons(p)),
+    match read_polygon_features(&src.text, src.format, &src.name) {
+        Ok((p, features)) => Ok(Map::Polygons(p, features)),
         Err(pe) => match read_segments(&src.text, src.format, &src.name) {
             Ok(s) => Ok(Map::Segments(s)),
             Err(_) => Err(pe.into()),
@@ -265,9 +267,14 @@ fn read_map(args: &LocateArgs) -> Result<Map, CliError> {
 /// Run `compgeom locate`.
 pub fn run(args: &LocateArgs) -> Result<(), CliError> {
     if args.output.format != OutputFormat::Json {
+        let name = args
+            .output
+            .format
+            .to_possible_value()
+            .map(|v| v.get_name().to_string())
+            .unwrap_or_default();
         return Err(CliError::bad_input(format!(
-            "locate writes json, not {:?}",
-            args.output.format
+            "locate writes json only, not {name}"
         )));
     }
     let map = read_map(args)?;
@@ -278,7 +285,7 @@ pub fn run(args: &LocateArgs) -> Result<(), CliError> {
     .read_points()?;
     // (locator, per-query JSON, per-query colour key for the picture)
     let (loc, results, faces) = match &map {
-        Map::Polygons(polys) => {
+        Map::Polygons(polys, features) => {
             let dcel = polygons_dcel(polys)?;
             let (found, loc) = answer(&dcel, args, &queries)?;
             let mut results = Vec::with_capacity(found.len());
@@ -299,7 +306,8 @@ pub fn run(args: &LocateArgs) -> Result<(), CliError> {
                 }
             }
             for l in found {
-                let feature = polygons_at(&dcel, l).first().copied();
+                // Features ascend with the polygons: the lowest polygon's is the lowest.
+                let feature = polygons_at(&dcel, l).first().map(|&p| features[p]);
                 results.push(json!({"feature": feature, "on": on(l)}));
                 keys.push((feature, l));
             }
@@ -335,7 +343,7 @@ pub fn run(args: &LocateArgs) -> Result<(), CliError> {
     };
     if let (Some(svg), Some(loc)) = (&args.output.svg, &loc) {
         let (segs, is_polygons) = match &map {
-            Map::Polygons(p) => (polygon_edges(p), true),
+            Map::Polygons(p, _) => (polygon_edges(p), true),
             Map::Segments(s) => (s.clone(), false),
         };
         let pic = locate_picture(loc, &segs, is_polygons, &queries, &faces);
@@ -418,32 +426,35 @@ pub fn locate_picture(
     }
     pic.add(traps);
     pic.add(Layer::new("map", Style::lines("#333333").with_stroke_width(1.6)).segments(segs));
-    let mut groups: Vec<(String, &str, Vec<Point2>)> = Vec::new();
-    let mut add = |name: String, colour: &'static str, q: Point2| {
-        if let Some(g) = groups.iter_mut().find(|g| g.0 == name) {
-            g.2.push(q);
+    // Legend order: features (faces) ascending, then edge, vertex, outside.
+    let mut groups: Vec<((u8, usize), String, &str, Vec<Point2>)> = Vec::new();
+    let mut add = |order: (u8, usize), name: String, colour: &'static str, q: Point2| {
+        if let Some(g) = groups.iter_mut().find(|g| g.0 == order) {
+            g.3.push(q);
         } else {
-            groups.push((name, colour, vec![q]));
+            groups.push((order, name, colour, vec![q]));
         }
     };
     for (&q, &(key, l)) in queries.iter().zip(keys) {
         match l {
-            Location::Vertex(_) => add("queries at a vertex".into(), "#000000", q),
-            Location::Edge(_) => add("queries on an edge".into(), "#d62728", q),
+            Location::Vertex(_) => add((2, 0), "queries at a vertex".into(), "#000000", q),
+            Location::Edge(_) => add((1, 0), "queries on an edge".into(), "#d62728", q),
             Location::Face(f) => match key {
                 Some(k) if f != FaceId::UNBOUNDED || is_polygons => {
                     let what = if is_polygons { "feature" } else { "face" };
                     add(
+                        (0, k),
                         format!("queries in {what} {k}"),
                         PALETTE[k % PALETTE.len()],
                         q,
                     )
                 }
-                _ => add("queries outside".into(), "#999999", q),
+                _ => add((3, 0), "queries outside".into(), "#999999", q),
             },
         }
     }
-    for (name, colour, pts) in groups {
+    groups.sort_by_key(|g| g.0);
+    for (_, name, colour, pts) in groups {
         pic.add(Layer::new(name, Style::points(colour).with_radius(3.5)).points(&pts));
     }
     pic

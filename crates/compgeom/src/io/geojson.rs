@@ -91,13 +91,20 @@ fn feature_lines(text: &str) -> Vec<usize> {
 }
 
 /// Flatten a geometry into parts (empty members contribute nothing).
-fn flatten(g: &Geometry, what: &str, line: Option<usize>, out: &mut Vec<Part>) {
+fn flatten(
+    g: &Geometry,
+    what: &str,
+    line: Option<usize>,
+    feature: Option<usize>,
+    out: &mut Vec<Part>,
+) {
     let mut push = |body: Body, kind: &str| {
         out.push(Part {
             body,
             kind: kind.to_string(),
             what: what.to_string(),
             line,
+            feature,
         })
     };
     match &g.value {
@@ -129,7 +136,7 @@ fn flatten(g: &Geometry, what: &str, line: Option<usize>, out: &mut Vec<Part>) {
         }
         GeometryValue::GeometryCollection { geometries } => {
             for member in geometries {
-                flatten(member, what, line, out);
+                flatten(member, what, line, feature, out);
             }
         }
     }
@@ -152,10 +159,10 @@ pub(crate) fn read(text: &str, source: &str) -> Result<Vec<Part>> {
     let leading = &text[..text.len() - trimmed.len()];
     let first_line = Some(1 + leading.matches('\n').count());
     match &doc {
-        GeoJson::Geometry(g) => flatten(g, "geometry", first_line, &mut parts),
+        GeoJson::Geometry(g) => flatten(g, "geometry", first_line, None, &mut parts),
         GeoJson::Feature(f) => {
             if let Some(g) = &f.geometry {
-                flatten(g, "feature 1", first_line, &mut parts);
+                flatten(g, "feature 1", first_line, Some(0), &mut parts);
             }
         }
         GeoJson::FeatureCollection(fc) => {
@@ -163,7 +170,7 @@ pub(crate) fn read(text: &str, source: &str) -> Result<Vec<Part>> {
             for (i, f) in fc.features.iter().enumerate() {
                 if let Some(g) = &f.geometry {
                     let what = format!("feature {}", i + 1);
-                    flatten(g, &what, lines.get(i).copied(), &mut parts);
+                    flatten(g, &what, lines.get(i).copied(), Some(i), &mut parts);
                 }
             }
         }
@@ -232,6 +239,7 @@ fn bare_arrays(v: &Value, source: &str) -> Result<Vec<Part>> {
         kind: kind.to_string(),
         what,
         line: None,
+        feature: None,
     };
     let items = v.as_array().map(Vec::as_slice).unwrap_or_default();
     Ok(match depth(v) {

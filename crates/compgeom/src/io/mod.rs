@@ -319,6 +319,39 @@ pub fn read_polygons(text: &str, format: Format, source: &str) -> Result<MultiPo
     }
 }
 
+/// Polygons as [`read_polygons`] reads them, with the input feature of each: the index of
+/// the GeoJSON Feature it belongs to (a MultiPolygon feature gives several polygons of one
+/// feature), or, for WKT, CSV and bare GeoJSON geometries, its own index (every polygon is
+/// a feature).
+///
+/// ```
+/// use compgeom::io::{read_polygon_features, Format};
+/// let fc = r#"{"type": "FeatureCollection", "features": [
+///   {"type": "Feature", "properties": {}, "geometry": {"type": "MultiPolygon", "coordinates":
+///     [[[[0, 0], [1, 0], [0, 1], [0, 0]]], [[[5, 0], [6, 0], [5, 1], [5, 0]]]]}},
+///   {"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates":
+///     [[[2, 0], [3, 0], [2, 1], [2, 0]]]}}]}"#;
+/// let (polygons, features) = read_polygon_features(fc, Format::GeoJson, "in").unwrap();
+/// assert_eq!(polygons.0.len(), 3);
+/// assert_eq!(features, vec![0, 0, 1]);
+/// ```
+pub fn read_polygon_features(
+    text: &str,
+    format: Format,
+    source: &str,
+) -> Result<(MultiPolygon, Vec<usize>)> {
+    let parts = match format {
+        Format::GeoJson | Format::Json => geojson::read(text, source)?,
+        _ => {
+            let polygons = read_polygons(text, format, source)?;
+            let features = (0..polygons.0.len()).collect();
+            return Ok((polygons, features));
+        }
+    };
+    let polygons = records::polygons(&parts, source)?;
+    Ok((polygons, records::polygon_features(&parts)))
+}
+
 /// The text of the file at `path`, or of standard input when `path` is `-`, ready for the
 /// readers. A failure to read is [`Error::Io`] naming the path; bytes
 /// that are not UTF-8 are a parse error at the line where they occur.

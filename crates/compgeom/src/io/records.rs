@@ -32,6 +32,8 @@ pub(crate) struct Part {
     pub what: String,
     /// 1-based line, when known.
     pub line: Option<usize>,
+    /// The 0-based index of the GeoJSON Feature it belongs to (`None` outside features).
+    pub feature: Option<usize>,
 }
 
 impl Part {
@@ -164,6 +166,17 @@ pub(crate) fn segments(parts: &[Part], source: &str) -> Result<Vec<Segment2>> {
 }
 
 /// Polygons with open rings of at least 3 vertices; anything else is an error.
+/// For every polygon [`polygons`] makes of `parts`, the index of its input feature: the
+/// GeoJSON Feature it came from, else the polygon's own index.
+pub(crate) fn polygon_features(parts: &[Part]) -> Vec<usize> {
+    parts
+        .iter()
+        .filter(|p| matches!(&p.body, Body::Polygon(rings) if !rings.is_empty()))
+        .enumerate()
+        .map(|(i, p)| p.feature.unwrap_or(i))
+        .collect()
+}
+
 pub(crate) fn polygons(parts: &[Part], source: &str) -> Result<MultiPolygon> {
     check_finite(parts, source)?;
     let mut out = Vec::new();

@@ -259,6 +259,7 @@ fn flatten(g: &Wkt<f64>, what: &str, line: usize, out: &mut Vec<Part>) {
             kind: kind.to_string(),
             what: what.to_string(),
             line: Some(line),
+            feature: None,
         })
     };
     match g {

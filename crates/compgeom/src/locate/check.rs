@@ -36,7 +36,7 @@ pub fn check_interior_disjoint_segments(segments: &[Segment2]) -> Result<()> {
         .filter(|&i| segments[i].a != segments[i].b)
         .collect();
     let segs: Vec<Segment2> = kept.iter().map(|&i| segments[i]).collect();
-    report(&segs, &kept, |p| !p.interior.is_empty(), false)
+    report(&segs, &kept, |p| !p.interior.is_empty())
 }
 
 /// As [`check_interior_disjoint_segments`] for the prepared segments of a map (distinct
@@ -50,7 +50,7 @@ pub(crate) fn check_interior_disjoint(
         .iter()
         .map(|&[a, b]| Segment2::new(points[a as usize], points[b as usize]))
         .collect();
-    report(&segments, seg_input, |p| !p.interior.is_empty(), false)
+    report(&segments, seg_input, |p| !p.interior.is_empty())
 }
 
 /// `Ok` when no two `segments` cross at a point interior to both (touching, shared
@@ -67,27 +67,36 @@ pub(crate) fn check_interior_disjoint(
 /// assert!(check_no_crossings(&[s((0., 0.), (2., 2.)), s((0., 2.), (2., 0.))]).is_err());
 /// ```
 pub fn check_no_crossings(segments: &[Segment2]) -> Result<()> {
-    let all: Vec<usize> = (0..segments.len()).collect();
-    report(
-        segments,
-        &all,
-        |p| matches!(p.exact, ExactPoint::Crossing(_)),
-        true,
-    )
+    match first_crossing(segments)? {
+        None => Ok(()),
+        Some((a, b, at)) => Err(Error::InvalidInput(format!(
+            "segments {a} and {b} cross at about ({}, {}); point location needs non-crossing segments",
+            at.x, at.y
+        ))),
+    }
+}
+
+/// The first pair of `segments` (by index, `a < b`) crossing at a point interior to
+/// both, and the crossing rounded; `None` when no two cross (as [`check_no_crossings`]).
+pub(crate) fn first_crossing(segments: &[Segment2]) -> Result<Option<(usize, usize, Point2)>> {
+    let p = any_intersection_where(segments, |p| matches!(p.exact, ExactPoint::Crossing(_)))?;
+    Ok(p.map(|p| {
+        let (a, b) = pair(&p);
+        (a, b, p.point)
+    }))
 }
 
 fn report(
     segments: &[Segment2],
     input: &[usize],
     counts: impl FnMut(&IntersectionPoint) -> bool,
-    crossing: bool,
 ) -> Result<()> {
     match any_intersection_where(segments, counts)? {
         None => Ok(()),
         Some(p) => {
             let (a, b) = pair(&p);
             let (a, b) = (input[a].min(input[b]), input[a].max(input[b]));
-            let what = if crossing || p.interior.len() >= 2 {
+            let what = if p.interior.len() >= 2 {
                 "cross at about"
             } else {
                 "share a point that is not a common endpoint:"

@@ -1,5 +1,5 @@
 //! [`PointLocator`]: point location in a DCEL subdivision through its trapezoidal map.
-use super::check::check_no_crossings;
+use super::check::{check_no_crossings, first_crossing};
 use super::map::{check_query, DagStats, MapHit, TrapezoidalMap, DEFAULT_SEED};
 use super::trapmap::{lex, NONE};
 use crate::dcel::{polygon_segments, Dcel, FaceId, HalfEdgeId, PolygonLabel, Source, VertexId};
@@ -238,25 +238,18 @@ pub fn segments_dcel(segments: &[Segment2]) -> Result<SegmentsDcel> {
 /// `from_polygons` build it (the first crossing is an `Err` naming the two polygons).
 pub fn polygons_dcel(polygons: &MultiPolygon) -> Result<PolygonsDcel> {
     let (segs, owner) = polygon_segments(polygons)?;
-    if let Err(e) = check_no_crossings(&segs) {
-        // Name polygons rather than ring edges.
-        let msg = e.to_string();
-        let nums: Vec<usize> = msg
-            .split(|c: char| !c.is_ascii_digit())
-            .filter_map(|w| w.parse().ok())
-            .take(2)
-            .collect();
-        if let [a, b] = nums[..] {
-            if a < owner.len() && b < owner.len() {
-                let at = msg.split_once("about ").map(|x| x.1).unwrap_or("");
-                let at = at.split(';').next().unwrap_or("");
-                return Err(Error::InvalidInput(format!(
-                    "the boundaries of polygons {} and {} cross at about {at} (edges {a} and {b}); point location needs non-crossing polygons",
-                    owner[a], owner[b]
-                )));
-            }
-        }
-        return Err(e);
+    if let Some((a, b, at)) = first_crossing(&segs)? {
+        // Name polygons rather than segments.
+        let (pa, pb) = (owner[a], owner[b]);
+        let who = if pa == pb {
+            format!("the boundary of polygon {pa} crosses itself")
+        } else {
+            format!("the boundaries of polygons {pa} and {pb} cross")
+        };
+        return Err(Error::InvalidInput(format!(
+            "{who} at about ({}, {}) (edges {a} and {b}); point location needs non-crossing polygons",
+            at.x, at.y
+        )));
     }
     Dcel::from_polygons(polygons)
 }
