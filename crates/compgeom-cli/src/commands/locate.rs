@@ -29,27 +29,27 @@ JSON output (--format json, the default) is one object:
   results  [{\"feature\": i | null, \"on\": \"face\" | \"edge\" | \"vertex\"}, ...], one per query
            in query order. For a polygon layer, feature is the index of the input
            feature containing the point (the lowest, where several contain it;
-           boundaries included), null outside all; for segments, the index of the lowest segment
-           through the point, null when the point is on none, and then also
-           \"face\": the index of the face of the segments' subdivision holding the point
+           boundaries included), null outside all; for segments, the index of the
+           lowest segment through the point, null when the point is on none, and then
+           also \"face\": the index of the face of the segments' subdivision holding the point
            (0 = the unbounded face). `on` says whether the point is inside a face, on an
            edge, or at a vertex of the subdivision.
 Features are numbered from 0 in reading order (a GeoJSON MultiPolygon feature is one
 feature: all its polygons answer with its index; in WKT and CSV every polygon is one
-feature, a MULTIPOLYGON giving several). Every decision is exact. --seed picks the random insertion order (the answers do not depend on
-it, only the search structure does). --locator picks the structure answering the queries:
-trap (the trapezoidal map and its randomized search structure, expected O(n log n) build,
-O(n) space) or slab (the slab method: O(n log n + S) build and O(n + S) space for S
-(slab, edge) pairs, quadratic in the worst case; an error beyond 2^28 pairs); both give
-the same answers in O(log n) per query. --verify checks the subdivision's and the
-trapezoidal map's invariants, and the answers: every query (or 2000 spread over the
-input, if more; fewer for maps over 10^4 edges, about 2*10^7 / edges) against an exact
-brute force over all vertices and edges (the vertex equal to the point, else the edge
-holding it) and, in a polygon layer, exact point-in-polygon over every polygon for the
-features; every query (or 20000 spread) is also answered by the other locator, which
-must agree (skipped when the slab method would exceed its size limit). --svg draws the
-trapezoidal map with its vertical extensions and the query points coloured by answer
-(whatever the locator).
+feature, a MULTIPOLYGON giving several). Every decision is exact. --seed picks the
+random insertion order (the answers do not depend on it, only the search structure
+does). --locator picks the structure answering the queries: trap (the trapezoidal map
+and its randomized search structure, expected O(n log n) build, O(n) space) or slab (the
+slab method: O(n log n + S) build and O(n + S) space for S (slab, edge) pairs, quadratic
+in the worst case; an error beyond 2^28 pairs); both give the same answers in O(log n)
+per query. --verify checks the subdivision's and the trapezoidal map's invariants, and
+the answers: every query (or 2000 spread over the input, if more; fewer for maps over
+10^4 edges, about 2*10^7 / edges) against an exact brute force over all vertices and
+edges (the vertex equal to the point, else the edge holding it) and, in a polygon layer,
+exact point-in-polygon over every polygon for the features; every query (or 20000
+spread) is also answered by the other locator, which must agree (skipped when the slab
+method would exceed its size limit). --svg draws the trapezoidal map with its vertical
+extensions and the query points coloured by answer (whatever the locator).
 
 Examples:
   compgeom locate districts.geojson --queries stops.csv
