@@ -427,7 +427,8 @@ pub fn locate_picture(
     pic.add(traps);
     pic.add(Layer::new("map", Style::lines("#333333").with_stroke_width(1.6)).segments(segs));
     // Legend order: features (faces) ascending, then edge, vertex, outside.
-    let mut groups: Vec<((u8, usize), String, &str, Vec<Point2>)> = Vec::new();
+    type Group<'a> = ((u8, usize), String, &'a str, Vec<Point2>);
+    let mut groups: Vec<Group> = Vec::new();
     let mut add = |order: (u8, usize), name: String, colour: &'static str, q: Point2| {
         if let Some(g) = groups.iter_mut().find(|g| g.0 == order) {
             g.3.push(q);
