@@ -68,7 +68,9 @@
 //!   skipped. Points in a segment input are an error.
 //! - [`read_polygons`] collects polygons with rings stored open (the closing vertex
 //!   dropped); each ring must have at least 3 vertices. Other geometries are an error.
-//!   `EMPTY` geometries of any kind contribute nothing.
+//!   `EMPTY` geometries of any kind contribute nothing. [`read_polygon_features`] also
+//!   gives each polygon's input feature (its GeoJSON Feature; a MultiPolygon feature
+//!   gives several polygons of one feature).
 //!
 //! # Formats written
 //!
