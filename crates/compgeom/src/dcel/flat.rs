@@ -56,10 +56,10 @@ pub(super) fn okey(v: f64) -> u64 {
 }
 
 /// Edges with their sources, collected piece by piece.
-struct Pieces {
-    edges: Vec<[u32; 2]>,
+pub(super) struct Pieces {
+    pub(super) edges: Vec<[u32; 2]>,
     /// `(edge, source)` in any order.
-    pairs: Vec<(u32, Source)>,
+    pub(super) pairs: Vec<(u32, Source)>,
 }
 
 impl Pieces {
@@ -79,7 +79,7 @@ impl Pieces {
 
     /// The flat arrangement; vertices are renumbered in order of first use by the edges
     /// (edges follow the input segments, so boundary walks then touch nearby records).
-    fn finish(self, vertices: Vec<ExactPoint>) -> Flat {
+    pub(super) fn finish(self, vertices: Vec<ExactPoint>) -> Flat {
         let Pieces { mut edges, pairs } = self;
         let mut new_v = vec![u32::MAX; vertices.len()];
         let mut renumbered: Vec<ExactPoint> = Vec::with_capacity(vertices.len());
@@ -150,7 +150,7 @@ impl Flat {
         }
         match Flat::axis_parallel(segments) {
             Some(f) => Ok(f),
-            None => Flat::general(segments),
+            None => Flat::noded(segments),
         }
     }
 
@@ -636,7 +636,56 @@ mod tests {
             // Small integer coordinates: collinear overlaps, duplicates, shared and
             // repeated vertices, crossings at endpoints.
             let segs: Vec<Segment2> = v.into_iter().map(seg).collect();
-            check(&segs, &Flat::general(&segs).unwrap())?;
+            let general = Flat::general(&segs).unwrap();
+            check(&segs, &general)?;
+            let noded = Flat::noded(&segs).unwrap();
+            check(&segs, &noded)?;
+            prop_assert_eq!(canonical(&noded), canonical(&general));
+        }
+
+        #[test]
+        fn noded_path_is_the_arrangement_of_degenerate_rings(
+            rings in prop::collection::vec(prop::collection::vec((0..5i32, 0..5i32), 3..7), 1..4),
+            spokes in prop::collection::vec((0..5i32, 0..5i32), 0..4),
+        ) {
+            // Closed rings on a small grid (shared endpoints everywhere, self-touching,
+            // repeated edges, collinear overlaps) plus segments through the centre
+            // (2, 2) from opposite grid points: many segments through one crossing.
+            let mut segs: Vec<Segment2> = Vec::new();
+            for r in &rings {
+                for k in 0..r.len() {
+                    let (p, q) = (r[k], r[(k + 1) % r.len()]);
+                    segs.push(seg((p.0, p.1, q.0, q.1)));
+                }
+            }
+            for &(x, y) in &spokes {
+                segs.push(seg((x, y, 4 - x, 4 - y)));
+            }
+            let noded = Flat::noded(&segs).unwrap();
+            check(&segs, &noded)?;
+            prop_assert_eq!(canonical(&noded), canonical(&Flat::general(&segs).unwrap()));
+        }
+
+        #[test]
+        fn noded_path_agrees_on_near_degenerate_crossings(
+            v in prop::collection::vec((-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64), 1..10),
+            scale in prop::sample::select(vec![1.0, 1e-300, 1e300, 3.0e-10]),
+        ) {
+            // Random segments, each also copied through the midpoint of the first with
+            // an ulp-sized nudge: crossings whose rounded points tie or nearly tie.
+            let p = |x: f64, y: f64| Point2::new(x * scale, y * scale);
+            let mut segs: Vec<Segment2> =
+                v.iter().map(|c| Segment2::new(p(c.0, c.1), p(c.2, c.3))).collect();
+            let m = Point2::new((segs[0].a.x + segs[0].b.x) / 2.0, (segs[0].a.y + segs[0].b.y) / 2.0);
+            for c in &v {
+                let d = (c.2 - c.0, c.3 - c.1);
+                let q = Point2::new(m.x + d.0 * scale, m.y + d.1 * scale);
+                let r = Point2::new(m.x - d.0 * scale, f64::from_bits((m.y - d.1 * scale).to_bits() ^ 1));
+                segs.push(Segment2::new(q, r));
+            }
+            let noded = Flat::noded(&segs).unwrap();
+            check(&segs, &noded)?;
+            prop_assert_eq!(canonical(&noded), canonical(&Flat::general(&segs).unwrap()));
         }
 
         #[test]
@@ -654,6 +703,7 @@ mod tests {
                 segs.push(Segment2::new(s.b, s.a));
             }
             check(&segs, &Flat::general(&segs).unwrap())?;
+            check(&segs, &Flat::noded(&segs).unwrap())?;
         }
     }
 }

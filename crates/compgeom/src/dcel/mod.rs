@@ -40,6 +40,7 @@ mod build;
 mod export;
 mod flat;
 mod holes;
+mod noding;
 mod validate;
 
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
