@@ -26,6 +26,7 @@ use super::build::Source;
 use crate::intersect::find_intersections;
 use crate::kernel::{ExactPoint, Point2, Segment2};
 use crate::{Error, Result};
+use rayon::prelude::*;
 use std::collections::{BTreeSet, HashMap};
 
 /// The arrangement of `segments`: edge `i` runs `edges[i][0] → edges[i][1]` and is carried
@@ -363,9 +364,29 @@ impl Flat {
                 }
             }
         }
-        cuts.sort_unstable();
+        // Sorted by line, then position: a counting sort by line, then one small sort
+        // per line (a line holds few cuts).
+        let mut line_start = vec![0usize; lines.len() + 1];
+        for &(l, _) in &cuts {
+            line_start[l as usize + 1] += 1;
+        }
+        for l in 0..lines.len() {
+            line_start[l + 1] += line_start[l];
+        }
+        let mut by_line = vec![(0u32, 0u64); cuts.len()];
+        let mut fill = line_start.clone();
+        for &c in &cuts {
+            by_line[fill[c.0 as usize]] = c;
+            fill[c.0 as usize] += 1;
+        }
+        drop(fill);
+        for l in 0..lines.len() {
+            by_line[line_start[l]..line_start[l + 1]].sort_unstable_by_key(|c| c.1);
+        }
+        let mut cuts = by_line;
         cuts.dedup();
-        // Vertices: every cut as a point, each point once (sorted by x, then y).
+        // Vertices: every cut as a point, each point once (sorted by x, then y), from
+        // one sort of the cuts by point.
         let cut_point = |&(line, along): &(u32, u64)| {
             let s = &segs[order[lines[line as usize].0] as usize];
             (s.axis, s.across, along)
@@ -377,25 +398,29 @@ impl Flat {
                 f64::from_bits(!k)
             }
         };
-        let mut keys: Vec<(u64, u64)> = cuts
+        let mut keyed: Vec<(u64, u64, u32)> = cuts
             .iter()
-            .map(|c| {
+            .enumerate()
+            .map(|(i, c)| {
                 let (axis, across, along) = cut_point(c);
                 let p = point(axis, across, unkey(along));
-                (okey(p.x), okey(p.y))
+                (okey(p.x), okey(p.y), i as u32)
             })
             .collect();
-        let cut_keys = keys.clone();
-        keys.sort_unstable();
-        keys.dedup();
-        let vertices: Vec<ExactPoint> = keys
-            .iter()
-            .map(|&(x, y)| ExactPoint::Input(Point2::new(unkey(x), unkey(y))))
-            .collect();
-        let cut_vertex: Vec<u32> = cut_keys
-            .iter()
-            .map(|k| keys.binary_search(k).expect("every cut is a vertex") as u32)
-            .collect();
+        if keyed.len() >= 100_000 {
+            keyed.par_sort_unstable();
+        } else {
+            keyed.sort_unstable();
+        }
+        let mut vertices: Vec<ExactPoint> = Vec::new();
+        let mut cut_vertex = vec![0u32; cuts.len()];
+        for (r, &(x, y, i)) in keyed.iter().enumerate() {
+            if r == 0 || (x, y) != (keyed[r - 1].0, keyed[r - 1].1) {
+                vertices.push(ExactPoint::Input(Point2::new(unkey(x), unkey(y))));
+            }
+            cut_vertex[i as usize] = vertices.len() as u32 - 1;
+        }
+        drop(keyed);
         // Pieces, line by line: between consecutive cuts, the segments covering them.
         let mut pieces = Pieces {
             edges: Vec::with_capacity(cuts.len()),
