@@ -9,14 +9,14 @@
 //! are compared once, outside the clock, by area (relative difference reported).
 
 use crate::util::{ms, Rng};
-use std::hint::black_box;
-use std::time::{Duration, Instant};
 use compgeom::overlay::{boolean, union_all, BooleanOp};
 use compgeom::{MultiPolygon, Point2, Polygon};
 use geo::{Area, BooleanOps};
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
 use i_overlay::float::single::SingleFloatOverlay;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
 
 fn star(rng: &mut Rng, n: usize, cx: f64, cy: f64) -> Vec<Point2> {
     let mut angles: Vec<f64> = (0..n).map(|_| std::f64::consts::TAU * rng.unit()).collect();
@@ -92,7 +92,10 @@ fn alternating(
 ) -> [Duration; 3] {
     let mut best = [Duration::MAX; 3];
     for _ in 0..runs.max(1) {
-        for (k, f) in [&mut a as &mut dyn FnMut(), &mut b, &mut c].into_iter().enumerate() {
+        for (k, f) in [&mut a as &mut dyn FnMut(), &mut b, &mut c]
+            .into_iter()
+            .enumerate()
+        {
             let start = Instant::now();
             f();
             best[k] = best[k].min(start.elapsed());
@@ -198,7 +201,13 @@ pub fn run(quick: bool) -> Result<(), String> {
     let [t_ours, t_io, t_geo] = alternating(
         runs,
         || drop(black_box(union_all(&squares).unwrap())),
-        || drop(black_box(ps.overlay(&empty, OverlayRule::Subject, FillRule::NonZero))),
+        || {
+            drop(black_box(ps.overlay(
+                &empty,
+                OverlayRule::Subject,
+                FillRule::NonZero,
+            )))
+        },
         || drop(black_box(geo::unary_union(gs.iter()))),
     );
     row(

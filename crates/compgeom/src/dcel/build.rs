@@ -465,7 +465,9 @@ fn link<E>(
         }
         for v in 0..points.len() {
             let list = &mut out[out_start[v]..out_start[v + 1]];
-            if list.len() == 2 && carriers[list[0]].angle_cmp(&carriers[list[1]]) == Ordering::Greater {
+            if list.len() == 2
+                && carriers[list[0]].angle_cmp(&carriers[list[1]]) == Ordering::Greater
+            {
                 list.swap(0, 1);
             }
         }

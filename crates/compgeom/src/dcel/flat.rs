@@ -1,8 +1,12 @@
 //! The arrangement of a set of segments in flat arrays (no hash maps, no list per edge):
 //! what the DCEL builders link.
 //!
-//! Two ways to the same arrangement, both exact:
+//! Three ways to the same arrangement, all exact:
 //!
+//! * [`Flat::noded`] (`noding.rs`, the default for segments that are not all
+//!   axis-parallel): the cuts each segment needs, from the exact tests of the pairs the
+//!   intersection grid proposes, vertices joined by union–find; it falls back to the
+//!   sweep below when the grid would test too many pairs.
 //! * [`Flat::general`]: the exact intersection sweep ([`find_intersections`]) reports
 //!   every point lying on two or more segments, with U(p), L(p) and C(p). Each reported
 //!   point becomes one vertex (they are distinct exact points), so no point look-up is
@@ -20,8 +24,9 @@
 //!   input-precision point, so everything after (angular order, hole linking, output)
 //!   runs on plain `f64` comparisons.
 //!
-//! Both give the same vertices (as exact points), the same edges and the same sources
-//! per edge; they differ only in numbering (tested against each other).
+//! All give the same vertices (as exact points), the same edges and the same sources
+//! per edge; they differ only in numbering (tested against each other and against a
+//! brute-force oracle).
 use super::build::Source;
 use crate::intersect::find_intersections;
 use crate::kernel::{ExactPoint, Point2, Segment2};

@@ -125,10 +125,7 @@ pub(super) fn faces_left_of(
             && status[at..at + ending]
                 .iter()
                 .all(|&e| list.contains(&(e as usize ^ 1)) && ends_here(e as usize ^ 1));
-        let entering = list
-            .iter()
-            .filter(|&&h| starts_here(h))
-            .map(|&h| h as u32);
+        let entering = list.iter().filter(|&&h| starts_here(h)).map(|&h| h as u32);
         if run_ok {
             status.splice(at..at + ending, entering);
         } else {

@@ -322,7 +322,11 @@ fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
             vertex_of[r] = vertices.len() as u32;
             let e = rep[r] as usize;
             vertices.push(if e < 2 * m {
-                ExactPoint::Input(if e % 2 == 0 { sub[e / 2].a } else { sub[e / 2].b })
+                ExactPoint::Input(if e % 2 == 0 {
+                    sub[e / 2].a
+                } else {
+                    sub[e / 2].b
+                })
             } else {
                 exact[e - 2 * m]
             });
