@@ -366,12 +366,10 @@ fn link<E>(
     // Angular order and next/prev.
     for v in 0..points.len() {
         let list = &mut out[out_start[v]..out_start[v + 1]];
+        // With two half-edges either order gives the same `next` links: they are put
+        // in order only if the hole sweep below needs it.
         if list.len() > 2 {
             list.sort_unstable_by(|&a, &b| carriers[a].angle_cmp(&carriers[b]));
-        } else if list.len() == 2
-            && carriers[list[0]].angle_cmp(&carriers[list[1]]) == Ordering::Greater
-        {
-            list.swap(0, 1);
         }
         let k = list.len();
         for j in 0..k {
@@ -463,6 +461,14 @@ fn link<E>(
         for c in 0..cycles.len() {
             if !is_outer[c] {
                 query[origin[lowest[c]] as usize] = true;
+            }
+        }
+        for v in 0..points.len() {
+            let list = &mut out[out_start[v]..out_start[v + 1]];
+            if list.len() == 2
+                && carriers[list[0]].angle_cmp(&carriers[list[1]]) == Ordering::Greater
+            {
+                list.swap(0, 1);
             }
         }
         let left = super::holes::faces_left_of(

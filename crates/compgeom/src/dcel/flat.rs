@@ -1,8 +1,12 @@
 //! The arrangement of a set of segments in flat arrays (no hash maps, no list per edge):
 //! what the DCEL builders link.
 //!
-//! Two ways to the same arrangement, both exact:
+//! Three ways to the same arrangement, all exact:
 //!
+//! * [`Flat::noded`] (`noding.rs`, the default for segments that are not all
+//!   axis-parallel): the cuts each segment needs, from the exact tests of the pairs the
+//!   intersection grid proposes, vertices joined by union–find; it falls back to the
+//!   sweep below when the grid would test too many pairs.
 //! * [`Flat::general`]: the exact intersection sweep ([`find_intersections`]) reports
 //!   every point lying on two or more segments, with U(p), L(p) and C(p). Each reported
 //!   point becomes one vertex (they are distinct exact points), so no point look-up is
@@ -20,12 +24,14 @@
 //!   input-precision point, so everything after (angular order, hole linking, output)
 //!   runs on plain `f64` comparisons.
 //!
-//! Both give the same vertices (as exact points), the same edges and the same sources
-//! per edge; they differ only in numbering (tested against each other).
+//! All give the same vertices (as exact points), the same edges and the same sources
+//! per edge; they differ only in numbering (tested against each other and against a
+//! brute-force oracle).
 use super::build::Source;
 use crate::intersect::find_intersections;
 use crate::kernel::{ExactPoint, Point2, Segment2};
 use crate::{Error, Result};
+use rayon::prelude::*;
 use std::collections::{BTreeSet, HashMap};
 
 /// The arrangement of `segments`: edge `i` runs `edges[i][0] → edges[i][1]` and is carried
@@ -56,10 +62,10 @@ pub(super) fn okey(v: f64) -> u64 {
 }
 
 /// Edges with their sources, collected piece by piece.
-struct Pieces {
-    edges: Vec<[u32; 2]>,
+pub(super) struct Pieces {
+    pub(super) edges: Vec<[u32; 2]>,
     /// `(edge, source)` in any order.
-    pairs: Vec<(u32, Source)>,
+    pub(super) pairs: Vec<(u32, Source)>,
 }
 
 impl Pieces {
@@ -79,7 +85,7 @@ impl Pieces {
 
     /// The flat arrangement; vertices are renumbered in order of first use by the edges
     /// (edges follow the input segments, so boundary walks then touch nearby records).
-    fn finish(self, vertices: Vec<ExactPoint>) -> Flat {
+    pub(super) fn finish(self, vertices: Vec<ExactPoint>) -> Flat {
         let Pieces { mut edges, pairs } = self;
         let mut new_v = vec![u32::MAX; vertices.len()];
         let mut renumbered: Vec<ExactPoint> = Vec::with_capacity(vertices.len());
@@ -150,7 +156,7 @@ impl Flat {
         }
         match Flat::axis_parallel(segments) {
             Some(f) => Ok(f),
-            None => Flat::general(segments),
+            None => Flat::noded(segments),
         }
     }
 
@@ -363,9 +369,29 @@ impl Flat {
                 }
             }
         }
-        cuts.sort_unstable();
+        // Sorted by line, then position: a counting sort by line, then one small sort
+        // per line (a line holds few cuts).
+        let mut line_start = vec![0usize; lines.len() + 1];
+        for &(l, _) in &cuts {
+            line_start[l as usize + 1] += 1;
+        }
+        for l in 0..lines.len() {
+            line_start[l + 1] += line_start[l];
+        }
+        let mut by_line = vec![(0u32, 0u64); cuts.len()];
+        let mut fill = line_start.clone();
+        for &c in &cuts {
+            by_line[fill[c.0 as usize]] = c;
+            fill[c.0 as usize] += 1;
+        }
+        drop(fill);
+        for l in 0..lines.len() {
+            by_line[line_start[l]..line_start[l + 1]].sort_unstable_by_key(|c| c.1);
+        }
+        let mut cuts = by_line;
         cuts.dedup();
-        // Vertices: every cut as a point, each point once (sorted by x, then y).
+        // Vertices: every cut as a point, each point once (sorted by x, then y), from
+        // one sort of the cuts by point.
         let cut_point = |&(line, along): &(u32, u64)| {
             let s = &segs[order[lines[line as usize].0] as usize];
             (s.axis, s.across, along)
@@ -377,25 +403,29 @@ impl Flat {
                 f64::from_bits(!k)
             }
         };
-        let mut keys: Vec<(u64, u64)> = cuts
+        let mut keyed: Vec<(u64, u64, u32)> = cuts
             .iter()
-            .map(|c| {
+            .enumerate()
+            .map(|(i, c)| {
                 let (axis, across, along) = cut_point(c);
                 let p = point(axis, across, unkey(along));
-                (okey(p.x), okey(p.y))
+                (okey(p.x), okey(p.y), i as u32)
             })
             .collect();
-        let cut_keys = keys.clone();
-        keys.sort_unstable();
-        keys.dedup();
-        let vertices: Vec<ExactPoint> = keys
-            .iter()
-            .map(|&(x, y)| ExactPoint::Input(Point2::new(unkey(x), unkey(y))))
-            .collect();
-        let cut_vertex: Vec<u32> = cut_keys
-            .iter()
-            .map(|k| keys.binary_search(k).expect("every cut is a vertex") as u32)
-            .collect();
+        if keyed.len() >= 100_000 {
+            keyed.par_sort_unstable();
+        } else {
+            keyed.sort_unstable();
+        }
+        let mut vertices: Vec<ExactPoint> = Vec::new();
+        let mut cut_vertex = vec![0u32; cuts.len()];
+        for (r, &(x, y, i)) in keyed.iter().enumerate() {
+            if r == 0 || (x, y) != (keyed[r - 1].0, keyed[r - 1].1) {
+                vertices.push(ExactPoint::Input(Point2::new(unkey(x), unkey(y))));
+            }
+            cut_vertex[i as usize] = vertices.len() as u32 - 1;
+        }
+        drop(keyed);
         // Pieces, line by line: between consecutive cuts, the segments covering them.
         let mut pieces = Pieces {
             edges: Vec::with_capacity(cuts.len()),
@@ -636,7 +666,56 @@ mod tests {
             // Small integer coordinates: collinear overlaps, duplicates, shared and
             // repeated vertices, crossings at endpoints.
             let segs: Vec<Segment2> = v.into_iter().map(seg).collect();
-            check(&segs, &Flat::general(&segs).unwrap())?;
+            let general = Flat::general(&segs).unwrap();
+            check(&segs, &general)?;
+            let noded = Flat::noded(&segs).unwrap();
+            check(&segs, &noded)?;
+            prop_assert_eq!(canonical(&noded), canonical(&general));
+        }
+
+        #[test]
+        fn noded_path_is_the_arrangement_of_degenerate_rings(
+            rings in prop::collection::vec(prop::collection::vec((0..5i32, 0..5i32), 3..7), 1..4),
+            spokes in prop::collection::vec((0..5i32, 0..5i32), 0..4),
+        ) {
+            // Closed rings on a small grid (shared endpoints everywhere, self-touching,
+            // repeated edges, collinear overlaps) plus segments through the centre
+            // (2, 2) from opposite grid points: many segments through one crossing.
+            let mut segs: Vec<Segment2> = Vec::new();
+            for r in &rings {
+                for k in 0..r.len() {
+                    let (p, q) = (r[k], r[(k + 1) % r.len()]);
+                    segs.push(seg((p.0, p.1, q.0, q.1)));
+                }
+            }
+            for &(x, y) in &spokes {
+                segs.push(seg((x, y, 4 - x, 4 - y)));
+            }
+            let noded = Flat::noded(&segs).unwrap();
+            check(&segs, &noded)?;
+            prop_assert_eq!(canonical(&noded), canonical(&Flat::general(&segs).unwrap()));
+        }
+
+        #[test]
+        fn noded_path_agrees_on_near_degenerate_crossings(
+            v in prop::collection::vec((-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64), 1..10),
+            scale in prop::sample::select(vec![1.0, 1e-300, 1e300, 3.0e-10]),
+        ) {
+            // Random segments, each also copied through the midpoint of the first with
+            // an ulp-sized nudge: crossings whose rounded points tie or nearly tie.
+            let p = |x: f64, y: f64| Point2::new(x * scale, y * scale);
+            let mut segs: Vec<Segment2> =
+                v.iter().map(|c| Segment2::new(p(c.0, c.1), p(c.2, c.3))).collect();
+            let m = Point2::new((segs[0].a.x + segs[0].b.x) / 2.0, (segs[0].a.y + segs[0].b.y) / 2.0);
+            for c in &v {
+                let d = (c.2 - c.0, c.3 - c.1);
+                let q = Point2::new(m.x + d.0 * scale, m.y + d.1 * scale);
+                let r = Point2::new(m.x - d.0 * scale, f64::from_bits((m.y - d.1 * scale).to_bits() ^ 1));
+                segs.push(Segment2::new(q, r));
+            }
+            let noded = Flat::noded(&segs).unwrap();
+            check(&segs, &noded)?;
+            prop_assert_eq!(canonical(&noded), canonical(&Flat::general(&segs).unwrap()));
         }
 
         #[test]
@@ -654,6 +733,7 @@ mod tests {
                 segs.push(Segment2::new(s.b, s.a));
             }
             check(&segs, &Flat::general(&segs).unwrap())?;
+            check(&segs, &Flat::noded(&segs).unwrap())?;
         }
     }
 }

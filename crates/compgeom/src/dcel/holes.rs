@@ -15,7 +15,7 @@
 //! ordered by their rounded coordinates where they differ (rounding is monotone, so
 //! that is exact) and by exact comparisons where they tie.
 //!
-//! Cost: O(V log V) for the vertex order plus O(s) per status update for a status of
+//! Cost: O(V log V) for the vertex order plus O(s) per status update (4-byte entries) for a status of
 //! at most s edges (a vector: s is small for polygon data — the number of edges a
 //! horizontal line meets).
 use super::Carrier;
@@ -78,31 +78,33 @@ pub(super) fn faces_left_of(
             (s.b, s.a)
         }
     };
-    // True when vertex `q` lies east of (left of, going down) the edge `(up, low)`.
-    let east = |q: usize, e: &(usize, Point2, Point2)| {
-        side(&points[q], approx[q].p, e.1, e.2) == Orientation::CounterClockwise
+    // True when vertex `q` lies east of (left of, going down) the edge of half-edge `h`.
+    let east = |q: usize, h: u32| {
+        let (up, low) = down(h as usize);
+        side(&points[q], approx[q].p, up, low) == Orientation::CounterClockwise
     };
-    let west = |q: usize, e: &(usize, Point2, Point2)| {
-        side(&points[q], approx[q].p, e.1, e.2) == Orientation::Clockwise
+    let west = |q: usize, h: u32| {
+        let (up, low) = down(h as usize);
+        side(&points[q], approx[q].p, up, low) == Orientation::Clockwise
     };
     let mut answer = vec![None; n];
-    // Status entries: (half-edge running down, its carrier's upper and lower ends).
-    let mut status: Vec<(usize, Point2, Point2)> = Vec::new();
+    // Status entries: half-edges running down (4 bytes each: the updates move entries).
+    let mut status: Vec<u32> = Vec::new();
     let mut prev: Option<usize> = None;
     for &v in &order {
         let same_line = prev.filter(|&w| cmp_y(w, v) == Ordering::Equal);
+        let at = status.partition_point(|&e| east(v, e));
         if query[v] {
-            let idx = status.partition_point(|e| east(v, e));
-            let a = idx.checked_sub(1).map(|i| status[i]);
+            let a = at.checked_sub(1).map(|i| status[i]);
             answer[v] = match (a, same_line) {
                 // The status edge wins when it passes strictly between w and v.
-                (Some(e), Some(w)) if west(w, &e) => Some(e.0),
+                (Some(e), Some(w)) if west(w, e) => Some(e as usize),
                 (_, Some(w)) if out_start[w] < out_start[w + 1] => {
                     // The wedge at w holding direction +x lies left of its last
                     // (counter-clockwise) outgoing half-edge.
                     Some(out[out_start[w + 1] - 1])
                 }
-                (a, _) => a.map(|e| e.0),
+                (a, _) => a.map(|e| e as usize),
             };
         }
         let list = &out[out_start[v]..out_start[v + 1]];
@@ -118,27 +120,23 @@ pub(super) fn faces_left_of(
         // the downward directions) at the place of v, where the edges ending here leave
         // it: they are the run of status edges through v (edges of a subdivision do not
         // pass through vertices), checked before the run is replaced in one splice.
-        let at = status.partition_point(|e| east(v, e));
         let ending = list.iter().filter(|&&h| ends_here(h)).count();
         let run_ok = at + ending <= status.len()
             && status[at..at + ending]
                 .iter()
-                .all(|e| list.contains(&(e.0 ^ 1)) && ends_here(e.0 ^ 1));
-        let entering = list.iter().filter(|&&h| starts_here(h)).map(|&h| {
-            let (up, low) = down(h);
-            (h, up, low)
-        });
+                .all(|&e| list.contains(&(e as usize ^ 1)) && ends_here(e as usize ^ 1));
+        let entering = list.iter().filter(|&&h| starts_here(h)).map(|&h| h as u32);
         if run_ok {
             status.splice(at..at + ending, entering);
         } else {
             for &h in list {
                 if ends_here(h) {
-                    if let Some(i) = status.iter().position(|e| e.0 == h ^ 1) {
+                    if let Some(i) = status.iter().position(|&e| e as usize == h ^ 1) {
                         status.remove(i);
                     }
                 }
             }
-            let at = status.partition_point(|e| east(v, e));
+            let at = status.partition_point(|&e| east(v, e));
             let entering: Vec<_> = entering.collect();
             status.splice(at..at, entering);
         }

@@ -14,7 +14,10 @@
 //! hole lies in) is exact; the rounded coordinates are never consulted (DESIGN §2).
 //!
 //! Builders: [`Dcel::from_segments`] (the arrangement of arbitrary segments, split at
-//! crossings and with overlaps merged, via [`crate::intersect::find_intersections`], or,
+//! crossings and with overlaps merged: exact tests of the pairs of segments with
+//! overlapping boxes from the grid of [`crate::intersect`]'s pairwise method, or its
+//! sweep [`crate::intersect::find_intersections`] when that grid would test too many
+//! pairs, or,
 //! for horizontal and vertical segments only, by an exact sweep whose crossings are
 //! `f64` points) and
 //! [`Dcel::from_polygons`] (faces labelled with the polygons containing them). Cost:
@@ -40,6 +43,7 @@ mod build;
 mod export;
 mod flat;
 mod holes;
+mod noding;
 mod validate;
 
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};

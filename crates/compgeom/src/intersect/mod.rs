@@ -92,7 +92,10 @@ mod sweep;
 pub use brute_force::{brute_force_intersections, verify_intersections};
 pub use count::{count_intersections, count_intersections_with, IntersectionCount};
 pub use pairwise::pairwise_intersections;
+// For the overlay's own noding (crate::dcel), which needs the candidate pairs only.
+pub(crate) use pairwise::{prefer_pairwise, PARALLEL_SCAN_FROM};
 pub use red_blue::{red_blue_intersections, RedBlueIntersections, RedBlueOverlap, RedBluePoint};
+pub(crate) use round::round_crossing;
 pub(crate) use simple::clean_ring;
 pub use simple::{any_intersection, any_intersection_where, is_simple};
 pub use sweep::SweepStats;

@@ -23,7 +23,7 @@ use crate::Result;
 use rayon::prelude::*;
 
 /// From this many candidate pairs on, the scan runs on the rayon pool.
-pub(super) const PARALLEL_SCAN_FROM: u64 = 100_000;
+pub(crate) const PARALLEL_SCAN_FROM: u64 = 100_000;
 
 /// A segment in a cell: its bounding box `[min x, max x, min y, max y]`, its index and
 /// the cell coordinates of the box's lower-left corner.
@@ -196,13 +196,13 @@ impl Grid {
     }
 
     /// The number of (segment, cell) entries: [`Grid::scan_from`] takes `0..` this.
-    pub(super) fn entry_count(&self) -> usize {
+    pub(crate) fn entry_count(&self) -> usize {
         self.entries.len()
     }
 
     /// The number of pairs sharing a cell (pairs sharing several cells count once per
     /// cell): an upper bound on the pairs [`Grid::scan`] tests exactly.
-    pub(super) fn candidates(&self) -> u64 {
+    pub(crate) fn candidates(&self) -> u64 {
         self.start
             .windows(2)
             .map(|w| {
@@ -214,7 +214,7 @@ impl Grid {
 
     /// Call `f(i, j)` (`i < j`) for the pairs after entry `k` in its cell whose boxes
     /// overlap and whose test belongs to this cell.
-    pub(super) fn scan_from(&self, k: usize, mut f: impl FnMut(usize, usize)) {
+    pub(crate) fn scan_from(&self, k: usize, mut f: impl FnMut(usize, usize)) {
         let a = self.entries[k];
         let c = self.cell_of[k] as usize;
         let here = ((c % self.n[0]) as u32, (c / self.n[0]) as u32);
