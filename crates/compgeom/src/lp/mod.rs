@@ -56,7 +56,7 @@ pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, intersect_halfplanes_incremental, Region, RegionKind};
 pub use halfplanes_dc::{intersect_halfplanes_dc, intersect_halfplanes_dc_leaf};
 pub use halfplanes_scan::intersect_halfplanes_scan;
-pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
+pub use lp2d::{lp2d, lp2d_exact, Lp2Options, Lp2Solution};
 pub use lpd::{lp_d, lp_d_exact, lp_d_fast_hits, LpSolution};
 pub use read::{read_constraints, read_halfplanes};
 pub use verify::{verify_lp2d, verify_region};
