@@ -252,6 +252,7 @@ mod tests {
             (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
         };
         let bx = Line::bbox();
+        let mut decided = 0;
         for t in 0..20000 {
             let scale = [1.0, 1e-70, 1e70, 1e-200, 3.0][t % 5];
             let mut l = || Line::input(next(), next(), next() * scale);
@@ -277,7 +278,22 @@ mod tests {
                     assert_eq!(meet_y(&i, &j, &i, &j), Ordering::Equal);
                 }
             }
+            // The LP's precomputed vertex and cross product: never a wrong sign.
+            let t3 = |l: &Line| (l.a, l.b, l.c);
+            if let Some(s) = cross_in_range(i.a, i.b, j.a, j.b) {
+                assert_eq!(s, cross_sign(&i, &j));
+            }
+            if k.m == 0.0 && coefficients_in_range(k.a, k.b, k.c) {
+                if let Some(v) = Meet::new(t3(&i), t3(&j)) {
+                    if let Some(s) = v.side(k.a, k.b, k.c) {
+                        assert_eq!(s, side(&i, &j, &k), "{i:?} {j:?} {k:?}");
+                        decided += 1;
+                    }
+                }
+            }
         }
+        assert!(decided > 5000, "{decided}");
+
         // Integer lines through one point: exact zeros.
         let (i, j, k) = (
             Line::input(1.0, 2.0, 3.0),
