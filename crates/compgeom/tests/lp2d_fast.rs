@@ -69,6 +69,15 @@ proptest! {
     }
 
     #[test]
+    fn open_regions_keep_box_vertices(hs in prop::collection::vec((-3i8..=3, -3i8..=-1, -4i8..=4, scale()), 0..24), c in objective(), seed in any::<u64>()) {
+        // Every normal points downward: the region is open upward, so the optimum often
+        // stays on the symbolic box (box corners, rows meeting a box side) while rows are
+        // tested, and the answer is often unbounded.
+        let hs: Vec<HalfPlane> = hs.iter().map(|&(a, b, c, s)| HalfPlane::new(a as f64 * s, b as f64 * s, c as f64)).collect();
+        both(&hs, c, seed)?;
+    }
+
+    #[test]
     fn nearly_identical_tangents(t0 in 0.0f64..6.3, steps in prop::collection::vec((0u64..6, -2i64..=2), 2..30), c in (-1.0f64..1.0, -1.0f64..1.0), seed in any::<u64>()) {
         prop_assume!(c.0 != 0.0 || c.1 != 0.0);
         // Tangents of the unit circle whose angles and offsets differ by a few ulps: the

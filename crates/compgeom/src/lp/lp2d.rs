@@ -157,7 +157,79 @@ impl Solver {
 
     #[inline(never)]
     fn side_exact(&self, v: Vertex, k: usize) -> Ordering {
+        if self.fast && k >= 4 && (v.0 < 4 || v.1 < 4) {
+            return self.side_on_box(v, k);
+        }
         side(&self.line(v.0), &self.line(v.1), &self.line(k))
+    }
+
+    /// [`Solver::side`] for a vertex on the symbolic box and an input row `k`, by the
+    /// leading coefficient in `M` and then the constant term, each a sign decided exactly
+    /// (an unbounded LP keeps such a vertex while every row is tested).
+    ///
+    /// - A box corner `(σM, τM)`: `a_k·σM + b_k·τM - c_k`; the sign of the `f64` sum
+    ///   `σ·a_k + τ·b_k` is exact (rounding is monotone and keeps zero), then `-c_k`.
+    /// - The meeting point of row `i` and `x = σM` (`b_i != 0`): `x = σM`,
+    ///   `y = (c_i - a_i·σM) / b_i`, so the test is the sign of
+    ///   `σM·(a_k·b_i - b_k·a_i) + (b_k·c_i - c_k·b_i)` times the sign of `b_i`; with
+    ///   `y = τM` (`a_i != 0`) the roles of `a` and `b` swap. The two minors are exact signs.
+    fn side_on_box(&self, v: Vertex, k: usize) -> Ordering {
+        let h = &self.rows[k - 4];
+        // σ of box side 0, 1 (x <= M, -x <= M) and τ of 2, 3 (y <= M, -y <= M).
+        let sign_of = |b: usize| if b % 2 == 0 { 1.0 } else { -1.0 };
+        let then = |lead: Ordering, rest: Ordering| match lead {
+            Ordering::Equal => rest,
+            o => o,
+        };
+        let sgn = |x: f64| {
+            if x > 0.0 {
+                Ordering::Greater
+            } else if x < 0.0 {
+                Ordering::Less
+            } else {
+                Ordering::Equal
+            }
+        };
+        if v.0 < 4 && v.1 < 4 {
+            let (xs, ys) = if v.0 < 2 { (v.0, v.1) } else { (v.1, v.0) };
+            if xs >= 2 || ys < 2 {
+                // (Two parallel box sides meet nowhere; never asked.)
+                return side(&self.line(v.0), &self.line(v.1), &self.line(k));
+            }
+            let lead = sign_of(xs) * h.a + sign_of(ys) * h.b;
+            return then(sgn(lead), sgn(-h.c));
+        }
+        let (bx, i) = if v.0 < 4 { (v.0, v.1) } else { (v.1, v.0) };
+        let r = &self.rows[i - 4];
+        if (bx < 2 && r.b == 0.0) || (bx >= 2 && r.a == 0.0) {
+            // (Parallel to the box side: no meeting point; never asked.)
+            return side(&self.line(v.0), &self.line(v.1), &self.line(k));
+        }
+        let minor = |p: f64, q: f64, r2: f64, s2: f64| -> Ordering {
+            // The sign of p·q - r2·s2.
+            if self.all_in_range {
+                if let Some(o) = cross_in_range(p, s2, r2, q) {
+                    return o;
+                }
+            }
+            cross2_sign(p, s2, r2, q)
+        };
+        let (lead, rest, den) = if bx < 2 {
+            (minor(h.a, r.b, h.b, r.a), minor(h.b, r.c, h.c, r.b), r.b)
+        } else {
+            (minor(h.b, r.a, h.a, r.b), minor(h.a, r.c, h.c, r.a), r.a)
+        };
+        let lead = if sign_of(bx) < 0.0 {
+            lead.reverse()
+        } else {
+            lead
+        };
+        let s = then(lead, rest);
+        if den < 0.0 {
+            s.reverse()
+        } else {
+            s
+        }
     }
 
     /// The exact sign of the cross product of the normals of lines `i` and `j`.
