@@ -13,6 +13,19 @@
 //! grows with `M`, the LP is unbounded, and the box corner's direction is a ray along which
 //! the objective grows without bound.
 //!
+//! # Speed
+//!
+//! Every decision is exact, but almost all are made in plain `f64`: the current optimum
+//! is kept as its three 2×2 minors with static error bounds (`filter::Meet`), so the test
+//! "is the optimum inside the next constraint" is one three-term dot product and one
+//! three-term bound; each 1D re-solve runs the same test against the interval end it may
+//! replace, choosing that end without a branch (the side a constraint bounds is a coin
+//! flip, a mispredicted branch cost more than the arithmetic). Only undecided tests go to
+//! the filtered exact predicates of `exact`. Vertices on the symbolic box are tested by
+//! the exact sign of their leading `M` coefficient. Large inputs are shuffled bucket-wise
+//! (Rao–Sandelius) so that the random order is drawn in cache. Measured (bench `lp`): about
+//! 25 ns per constraint, linear from 1e5 to 1e6 constraints.
+//!
 //! # Which optimum
 //!
 //! When several points are optimal, the answer is the **lexicographically smallest

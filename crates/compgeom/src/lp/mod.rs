@@ -2,7 +2,7 @@
 //!
 //! | function | book | method | time |
 //! |---|---|---|---|
-//! | [`lp2d`] | §4.3–4.4 2DRANDOMIZEDBOUNDEDLP + unbounded case | randomized incremental, symbolic bounding box | expected O(n) |
+//! | [`lp2d`] | §4.3–4.4 2DRANDOMIZEDBOUNDEDLP + unbounded case | randomized incremental, symbolic bounding box; static `f64` filters, exact when undecided | expected O(n) |
 //! | [`intersect_halfplanes`] = [`intersect_halfplanes_scan`] | §4.2 half-plane intersection | prune by a sample's region, exact slope sort (radix on the correctly rounded slope), one INTERSECTCONVEXREGIONS sweep | O(n log n) |
 //! | [`intersect_halfplanes_dc`] | §4.2 INTERSECTHALFPLANES | the book's divide and conquer, linear merge of left/right boundary chains | O(n log n) |
 //! | [`intersect_halfplanes_incremental`] | §4.2 half-plane intersection | randomized incremental clipping of a symbolic box | expected O(n·h), h the size of the intermediate regions (worst case O(n²)) |
