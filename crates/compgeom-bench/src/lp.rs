@@ -17,6 +17,26 @@
 //! Input: constraints tangent to the unit circle at random angles, offset by up to 1e-3
 //! (every constraint can matter), random objective; points uniform in a disc.
 //! Answers are compared once, outside the clock.
+//!
+//! Measured (release, shared 2-core machine, load average 3.7–4.5, one full run; ms;
+//! ratio = peer / compgeom, > 1 = compgeom faster; lp2d alternates with the scan 7 times,
+//! "median" is the median of the per-round ratios):
+//!
+//! | part | n | compgeom | peer | ratio |
+//! |---|---|---|---|---|
+//! | lp2d | 1e5 | 2.33 | scan 9.60 / microlp 612 | 4.1 (median 3.1) / 262 |
+//! | lp2d | 1e6 | 18.0 | scan 95.5 | 5.3 (median 5.0); growth ×7.7 |
+//! | halfplanes tangent | 1e4 / 1e5 / 1e6 | 1.25 / 13.3 / 232 | scan 0.69 / 7.62 / 89.8 | 0.55 / 0.57 / 0.39 |
+//! | halfplanes tangent | 1e4 / 1e5 / 1e6 | | geo dual 1.69 / 21.4 / 254 | 1.35 / 1.61 / 1.10 |
+//! | halfplanes random | 1e4 / 1e5 / 1e6 | 0.13 / 1.23 / 10.5 | scan 0.77 / 8.55 / 95.9; geo 0.14 / 1.84 / 21.7 | 6.1 / 6.9 / 9.1; 1.09 / 1.49 / 2.06 |
+//! | disc | 1e5 / 1e6 | 1.44 / 13.8 | plain-f64 MINIDISC 13.7 / 66.1 | 9.5 / 4.8 |
+//! | lp_d d=3 | 1e3 / 1e4 / 1e5 | 0.11 / 1.34 / 13.0 | (exact path 2.39 / 70.1 / 983) | growth ×11.6 / ×9.7 |
+//! | cast | 102 / 302 / 1002 facets | 19.2 / 67.7 / 355 | — | |
+//!
+//! On the tangent inputs the f64 scan is wrong on many corners (901,458 of 999,990 at 1e6);
+//! there about a fifth (1e5) to most (1e6) of the exact side tests cannot be settled in
+//! `f64` and go to double-double arithmetic, and the correctly rounded corners cost
+//! ~800 instructions each (no FMA in the default target): the scan stays ahead.
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::lp::{
