@@ -33,10 +33,11 @@
 //! | lp_d d=3 | 1e3 / 1e4 / 1e5 | 0.11 / 1.34 / 13.0 | (exact path 2.39 / 70.1 / 983) | growth ×11.6 / ×9.7 |
 //! | cast | 102 / 302 / 1002 facets | 19.2 / 67.7 / 355 | — | |
 //!
-//! On the tangent inputs the f64 scan is wrong on many corners (901,458 of 999,990 at 1e6);
-//! there about a fifth (1e5) to most (1e6) of the exact side tests cannot be settled in
-//! `f64` and go to double-double arithmetic, and the correctly rounded corners cost
-//! ~800 instructions each (no FMA in the default target): the scan stays ahead.
+//! On the tangent inputs the f64 scan finds only 901,458 of the 999,990 corners at 1e6.
+//! There about a fifth of the exact side tests at 1e5, and most of the envelope tests at
+//! 1e6, cannot be settled in `f64` and go to double-double arithmetic (callgrind), and a
+//! correctly rounded corner costs ~800 instructions (no FMA in the default target): the
+//! scan stays ahead.
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::lp::{
