@@ -378,50 +378,6 @@ impl SignExpr for SideExpr<'_> {
     }
 }
 
-/// The meeting point of two input lines, pre-evaluated in the filter so that testing it
-/// against many half-planes costs one short expression each (the fast path of the LP).
-pub(crate) struct VertexFilter {
-    x: Filt,
-    y: Filt,
-    d: Filt,
-    flip: bool,
-}
-
-impl VertexFilter {
-    /// `None` when a line is a box side or the filter cannot fix the sign of `D`.
-    pub(crate) fn new(i: &Line, j: &Line) -> Option<VertexFilter> {
-        if i.m != 0.0 || j.m != 0.0 {
-            return None;
-        }
-        let x: Filt = det2(i.c, j.b, j.c, i.b);
-        let y: Filt = det2(i.a, j.c, j.a, i.c);
-        let d: Filt = det2(i.a, j.b, j.a, i.b);
-        match d.sign()? {
-            Ordering::Equal => None,
-            o => Some(VertexFilter {
-                x,
-                y,
-                d,
-                flip: o == Ordering::Less,
-            }),
-        }
-    }
-
-    /// As [`side`] for an input half-plane `k`, or `None` when the filter cannot tell.
-    #[inline]
-    pub(crate) fn side(&self, k: &Line) -> Option<Ordering> {
-        if k.m != 0.0 {
-            return None;
-        }
-        let s = Filt::val(k.a)
-            .mul(&self.x)
-            .add(&Filt::val(k.b).mul(&self.y))
-            .sub(&Filt::val(k.c).mul(&self.d))
-            .sign()?;
-        Some(if self.flip { s.reverse() } else { s })
-    }
-}
-
 /// `ai·bj - aj·bi`: the sign of the cross product of the two normals.
 struct CrossExpr(f64, f64, f64, f64);
 

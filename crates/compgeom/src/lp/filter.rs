@@ -41,7 +41,7 @@ fn in_range(l: &Line) -> bool {
 
 /// The sign of `v` when `|v|` exceeds the bound `e` (computed with rounding; enlarged a
 /// little to cover that), else `None`.
-#[inline]
+#[inline(always)]
 fn decide(v: f64, e: f64) -> Option<Ordering> {
     let e = e * (1.0 + 8.0 * U);
     if v > e {
@@ -54,7 +54,7 @@ fn decide(v: f64, e: f64) -> Option<Ordering> {
 }
 
 /// `ai·bj - aj·bi` in `f64` and its permanent.
-#[inline]
+#[inline(always)]
 fn minor(ai: f64, bj: f64, aj: f64, bi: f64) -> (f64, f64) {
     let (p, q) = (ai * bj, aj * bi);
     (p - q, p.abs() + q.abs())
@@ -147,6 +147,95 @@ pub(super) fn meet_y(i: &Line, j: &Line, k: &Line, l: &Line) -> Ordering {
     cmp_meet_y(i, j, k, l)
 }
 
+/// True when `a`, `b`, `c` are all zero or inside `[2^-250, 2^250]` in magnitude: the range
+/// in which [`Meet`] and [`cross_in_range`] are proved.
+#[inline(always)]
+pub(super) fn coefficients_in_range(a: f64, b: f64, c: f64) -> bool {
+    ok(a) && ok(b) && ok(c)
+}
+
+/// The sign of `ai·bj - aj·bi` for coefficients in range ([`coefficients_in_range`]), or
+/// `None` when the `f64` value is within its error bound `3u·(|ai·bj| + |aj·bi|)` of zero.
+#[inline(always)]
+pub(super) fn cross_in_range(ai: f64, bi: f64, aj: f64, bj: f64) -> Option<Ordering> {
+    let (d, p) = minor(ai, bj, aj, bi);
+    decide(d, 3.0 * U * p)
+}
+
+/// The meeting point `(X/D, Y/D)` of two input lines with coefficients in range, kept as
+/// its three `f64` minors (times the sign of `D`) and their permanents (pre-multiplied by
+/// the error constant of [`side_of`]), so that testing it against a half-plane costs one
+/// three-term dot product and one three-term bound: the vertex test of the 2D LP (book
+/// §4.3), made once per constraint and once per constraint of each 1D re-solve.
+///
+/// The bound is the one of [`side_of`]: `|computed - exact| <= 5u·perm·(1 + 4u)` for
+/// `perm = |ka|·PX + |kb|·PY + |kc|·PD` (`PX = |ci·bj| + |cj·bi|` as computed, etc.);
+/// the test uses `6u·(1 + 8u)·perm`, evaluated with four more roundings (each at most a
+/// factor `1 - u`), which still exceeds the error. Negating the minors when `D < 0` is
+/// exact. In range no product under- or overflows (see the module docs).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Meet {
+    x: f64,
+    y: f64,
+    d: f64,
+    px: f64,
+    py: f64,
+    pd: f64,
+}
+
+impl Meet {
+    /// The meeting point of `a_i·x + b_i·y = c_i` and `a_j·x + b_j·y = c_j`; `None` when a
+    /// coefficient is out of range or the sign of `D` is not certain in `f64` (parallel or
+    /// nearly parallel lines: the caller then decides exactly).
+    #[inline]
+    pub(super) fn new(i: (f64, f64, f64), j: (f64, f64, f64)) -> Option<Meet> {
+        if !(coefficients_in_range(i.0, i.1, i.2) && coefficients_in_range(j.0, j.1, j.2)) {
+            return None;
+        }
+        let (x, px) = minor(i.2, j.1, j.2, i.1);
+        let (y, py) = minor(i.0, j.2, j.0, i.2);
+        let (d, pd) = minor(i.0, j.1, j.0, i.1);
+        let s = match decide(d, 3.0 * U * pd)? {
+            Ordering::Less => -1.0,
+            _ => 1.0,
+        };
+        const K: f64 = 6.0 * U * (1.0 + 8.0 * U);
+        Some(Meet {
+            x: s * x,
+            y: s * y,
+            d: s * d,
+            px: px * K,
+            py: py * K,
+            pd: pd * K,
+        })
+    }
+
+    /// Where the point lies relative to the half-plane `a·x + b·y <= c` (coefficients in
+    /// range): `Less` strictly inside, `Greater` strictly outside, `None` when the filter
+    /// cannot tell (on or very near the line).
+    #[inline(always)]
+    pub(super) fn side(&self, a: f64, b: f64, c: f64) -> Option<Ordering> {
+        let (v, e) = self.value(a, b, c);
+        if v > e {
+            Some(Ordering::Greater)
+        } else if -v > e {
+            Some(Ordering::Less)
+        } else {
+            None
+        }
+    }
+
+    /// The computed `sign(D)·(a·X + b·Y - c·D)` and its error bound: strictly outside the
+    /// half-plane when the value exceeds the bound, strictly inside when it is below minus
+    /// the bound, else undecided.
+    #[inline(always)]
+    pub(super) fn value(&self, a: f64, b: f64, c: f64) -> (f64, f64) {
+        let v = a * self.x + b * self.y - c * self.d;
+        let e = a.abs() * self.px + b.abs() * self.py + c.abs() * self.pd;
+        (v, e)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -163,6 +252,7 @@ mod tests {
             (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
         };
         let bx = Line::bbox();
+        let mut decided = 0;
         for t in 0..20000 {
             let scale = [1.0, 1e-70, 1e70, 1e-200, 3.0][t % 5];
             let mut l = || Line::input(next(), next(), next() * scale);
@@ -188,7 +278,22 @@ mod tests {
                     assert_eq!(meet_y(&i, &j, &i, &j), Ordering::Equal);
                 }
             }
+            // The LP's precomputed vertex and cross product: never a wrong sign.
+            let t3 = |l: &Line| (l.a, l.b, l.c);
+            if let Some(s) = cross_in_range(i.a, i.b, j.a, j.b) {
+                assert_eq!(s, cross_sign(&i, &j));
+            }
+            if k.m == 0.0 && coefficients_in_range(k.a, k.b, k.c) {
+                if let Some(v) = Meet::new(t3(&i), t3(&j)) {
+                    if let Some(s) = v.side(k.a, k.b, k.c) {
+                        assert_eq!(s, side(&i, &j, &k), "{i:?} {j:?} {k:?}");
+                        decided += 1;
+                    }
+                }
+            }
         }
+        assert!(decided > 5000, "{decided}");
+
         // Integer lines through one point: exact zeros.
         let (i, j, k) = (
             Line::input(1.0, 2.0, 3.0),

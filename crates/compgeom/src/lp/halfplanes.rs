@@ -240,6 +240,16 @@ fn clip(lines: &[Line], poly: &mut Vec<Corner>, i: usize, sides: &mut Vec<Orderi
 /// Merge neighbouring corners at the same exact point (the edge between them has length
 /// zero): the first keeps its lines and takes the later outgoing edge.
 pub(super) fn merge_equal(lines: &[Line], out: Vec<Corner>) -> Vec<Corner> {
+    merge_equal_known(lines, out, |_| false)
+}
+
+/// As [`merge_equal`], where `distinct(k)` true means corners `k` and `k + 1` of `out` are
+/// known to be different points (then they are not tested).
+pub(super) fn merge_equal_known(
+    lines: &[Line],
+    out: Vec<Corner>,
+    distinct: impl Fn(usize) -> bool,
+) -> Vec<Corner> {
     // (A corner is trivially on its own lines; testing those would only cost exact zeros.)
     let same = |a: &Corner, b: &Corner| {
         [b.v.0, b.v.1].iter().all(|&k| {
@@ -249,9 +259,11 @@ pub(super) fn merge_equal(lines: &[Line], out: Vec<Corner>) -> Vec<Corner> {
         })
     };
     let mut merged: Vec<Corner> = Vec::with_capacity(out.len());
-    for c in out {
+    for (k, c) in out.into_iter().enumerate() {
+        // The last merged corner is at the point of corner k - 1 (only equal points are
+        // merged into it).
         match merged.last_mut() {
-            Some(last) if same(last, &c) => last.edge = c.edge,
+            Some(last) if !distinct(k - 1) && same(last, &c) => last.edge = c.edge,
             _ => merged.push(c),
         }
     }

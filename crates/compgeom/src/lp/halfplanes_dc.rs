@@ -40,7 +40,7 @@
 
 use super::exact::{parallel_side, Line};
 use super::filter::{cross as cross_sign, meet_y as cmp_meet_y, side_of as side};
-use super::halfplanes::{describe, empty, merge_equal, Corner};
+use super::halfplanes::{describe, empty, merge_equal_known, Corner};
 use super::slope_sort::sort_chain;
 use super::{check_finite, HalfPlane, Region};
 use crate::Result;
@@ -369,15 +369,23 @@ fn cut(lines: &[Line], l: Vec<usize>, r: Vec<usize>, bot: usize, top: usize) -> 
 
 /// The region's corners counter-clockwise (bottom edge, right boundary upwards, top edge,
 /// left boundary downwards), zero-length edges merged away.
+///
+/// Inside one chain no edge has length zero: `push_envelope` keeps a line `y` between its
+/// neighbours `x` and `z` only when the corner of `x` and `z` is strictly outside `y`,
+/// which `z` through the corner of `x` and `y` would contradict (that corner would then
+/// lie on `y`). Only corners where the chains meet the bottom, the top or each other are
+/// tested.
 pub(super) fn corners(lines: &[Line], c: &Conv) -> Vec<Corner> {
     let mut edges = Vec::with_capacity(c.left.len() + c.right.len() + 2);
     if c.bot_edge {
         edges.push(c.bot);
     }
+    let right = edges.len()..edges.len() + c.right.len();
     edges.extend_from_slice(&c.right);
     if c.top_edge {
         edges.push(c.top);
     }
+    let left = edges.len()..edges.len() + c.left.len();
     edges.extend(c.left.iter().rev());
     let n = edges.len();
     let out: Vec<Corner> = (0..n)
@@ -386,7 +394,9 @@ pub(super) fn corners(lines: &[Line], c: &Conv) -> Vec<Corner> {
             edge: edges[k],
         })
         .collect();
-    merge_equal(lines, out)
+    // Corners k and k + 1 are (edges[k - 1], edges[k]) and (edges[k], edges[k + 1]).
+    let inside = |r: &std::ops::Range<usize>, k: usize| k > r.start && k + 1 < r.end;
+    merge_equal_known(lines, out, |k| inside(&right, k) || inside(&left, k))
 }
 
 #[cfg(test)]

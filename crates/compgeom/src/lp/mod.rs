@@ -2,7 +2,7 @@
 //!
 //! | function | book | method | time |
 //! |---|---|---|---|
-//! | [`lp2d`] | §4.3–4.4 2DRANDOMIZEDBOUNDEDLP + unbounded case | randomized incremental, symbolic bounding box | expected O(n) |
+//! | [`lp2d`] | §4.3–4.4 2DRANDOMIZEDBOUNDEDLP + unbounded case | randomized incremental, symbolic bounding box; static `f64` filters, exact when undecided | expected O(n) |
 //! | [`intersect_halfplanes`] = [`intersect_halfplanes_scan`] | §4.2 half-plane intersection | prune by a sample's region, exact slope sort (radix on the correctly rounded slope), one INTERSECTCONVEXREGIONS sweep | O(n log n) |
 //! | [`intersect_halfplanes_dc`] | §4.2 INTERSECTHALFPLANES | the book's divide and conquer, linear merge of left/right boundary chains | O(n log n) |
 //! | [`intersect_halfplanes_incremental`] | §4.2 half-plane intersection | randomized incremental clipping of a symbolic box | expected O(n·h), h the size of the intermediate regions (worst case O(n²)) |
@@ -56,7 +56,7 @@ pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, intersect_halfplanes_incremental, Region, RegionKind};
 pub use halfplanes_dc::{intersect_halfplanes_dc, intersect_halfplanes_dc_leaf};
 pub use halfplanes_scan::intersect_halfplanes_scan;
-pub use lp2d::{lp2d, Lp2Options, Lp2Solution};
+pub use lp2d::{lp2d, lp2d_exact, Lp2Options, Lp2Solution};
 pub use lpd::{lp_d, lp_d_exact, lp_d_fast_hits, LpSolution};
 pub use read::{read_constraints, read_halfplanes};
 pub use verify::{verify_lp2d, verify_region};
