@@ -9,7 +9,7 @@ use super::order::{sweep_cmp_points, EventPoint, Oriented};
 use super::round::round_crossing;
 use super::small_int::{self, Hom};
 use super::sweep::check_finite;
-use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
+use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap, SegmentList};
 use crate::kernel::{
     segment_intersection, Crossing, ExactPoint, Point2, Segment2, SegmentIntersection,
 };
@@ -163,12 +163,8 @@ impl PairResults {
     pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
         let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
         let parallel = self.records.len() >= PARALLEL_ASSEMBLY_FROM;
+        sort_records(&mut self.records);
         let records = &mut self.records;
-        if parallel {
-            records.par_sort_unstable();
-        } else {
-            records.sort_unstable();
-        }
         // Sorted by rounded points, which is the exact sweep order except within a run
         // of equal rounded y that holds a crossing: there the exact y may differ. Such
         // runs are re-sorted exactly; elsewhere equal keys mean equal points.
@@ -212,6 +208,58 @@ impl PairResults {
     }
 }
 
+/// Sort records into their order: a counting sort into about one bucket per record over
+/// the range of the points' y (a monotone map, so buckets come in key order), then each
+/// bucket sorted. O(K) for spread-out points, O(K log K) at worst (one bucket).
+fn sort_records(records: &mut Vec<Record>) {
+    // (Bucket offsets are u32: beyond that, a plain sort.)
+    if records.len() < 64 || records.len() >= u32::MAX as usize {
+        records.sort_unstable();
+        return;
+    }
+    let y = |r: &Record| unkey(!r.ky);
+    let (lo, hi) = records
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+            (a.min(y(r)), b.max(y(r)))
+        });
+    let buckets = records.len();
+    // (An infinite scale, from a tiny range, makes NaN or huge products: `as usize`
+    // saturates, and NaN goes to 0; the map stays monotone.)
+    let scale = if hi > lo {
+        buckets as f64 / (hi - lo)
+    } else {
+        0.0
+    };
+    // Decreasing in y: the first bucket holds the highest points (ky ascending).
+    let bucket = |r: &Record| (((hi - y(r)) * scale) as usize).min(buckets - 1);
+    let mut start = vec![0u32; buckets + 1];
+    for r in records.iter() {
+        start[bucket(r) + 1] += 1;
+    }
+    for b in 0..buckets {
+        start[b + 1] += start[b];
+    }
+    let mut fill = start.clone();
+    let blank = Record {
+        ky: 0,
+        kx: 0,
+        pair: 0,
+    };
+    let mut sorted = vec![blank; records.len()];
+    for r in records.iter() {
+        let b = bucket(r);
+        sorted[fill[b] as usize] = *r;
+        fill[b] += 1;
+    }
+    for w in start.windows(2) {
+        if w[1] - w[0] > 1 {
+            sorted[w[0] as usize..w[1] as usize].sort_unstable();
+        }
+    }
+    *records = sorted;
+}
+
 /// Sort `run` exactly (sweep order, then pair) and return where its groups of equal
 /// points start.
 fn exact_groups(segments: &[Segment2], run: &mut [Record]) -> Vec<usize> {
@@ -243,50 +291,54 @@ fn exact_groups(segments: &[Segment2], run: &mut [Record]) -> Vec<usize> {
 /// One intersection point from the records of the pairs that meet there.
 fn point_of(segments: &[Segment2], segs: &[Oriented], group: &[Record]) -> IntersectionPoint {
     let first = group[0];
-    if group.len() == 1 && first.is_crossing() {
-        // The common case: two segments crossing properly.
-        let pair = vec![first.i(), first.j()];
-        return IntersectionPoint {
-            point: first.point(),
-            exact: first.exact(segments),
-            interior: pair.clone(),
-            segments: pair,
-            upper: Vec::new(),
-            lower: Vec::new(),
-        };
+    if group.len() == 1 {
+        // The common cases, without allocating: two segments crossing properly, or
+        // meeting at one input point.
+        let (i, j) = (first.i(), first.j());
+        let pair = SegmentList::pair(i, j);
+        if first.is_crossing() {
+            return IntersectionPoint {
+                point: first.point(),
+                exact: first.exact(segments),
+                interior: pair.clone(),
+                segments: pair,
+                upper: SegmentList::new(),
+                lower: SegmentList::new(),
+            };
+        }
     }
     // Prefer the input-point representation when the point is an endpoint.
-    let at = group.iter().find(|r| !r.is_crossing()).copied();
-    let exact = at.unwrap_or(first).exact(segments);
-    let mut all: Vec<usize> = group.iter().flat_map(|r| [r.i(), r.j()]).collect();
-    all.sort_unstable();
-    all.dedup();
-    let (mut upper, mut lower, mut interior) = (Vec::new(), Vec::new(), Vec::new());
-    for &s in &all {
-        let (is_upper, is_lower) = match at {
-            Some(r) => {
-                let q = r.point();
-                (segs[s].upper == q, segs[s].lower == q)
-            }
-            None => (false, false),
-        };
-        if is_upper {
-            upper.push(s);
-        }
-        if is_lower {
-            lower.push(s);
-        }
-        if !is_upper && !is_lower {
-            interior.push(s);
-        }
-    }
+    let at = group.iter().find(|r| !r.is_crossing()).map(Record::point);
+    let exact = match at {
+        Some(q) => ExactPoint::Input(q),
+        None => first.exact(segments),
+    };
+    let all: SegmentList = if group.len() == 1 {
+        SegmentList::pair(first.i(), first.j())
+    } else {
+        let mut all: Vec<usize> = group.iter().flat_map(|r| [r.i(), r.j()]).collect();
+        all.sort_unstable();
+        all.dedup();
+        all.into()
+    };
+    // A segment's role at the point: upper end, lower end (both for a zero-length
+    // segment), or interior. At a crossing that is no input point, every segment is
+    // interior.
+    let role = |s: usize| match at {
+        Some(q) => (segs[s].upper == q, segs[s].lower == q),
+        None => (false, false),
+    };
     IntersectionPoint {
         point: first.point(),
         exact,
+        upper: all.iter().copied().filter(|&s| role(s).0).collect(),
+        lower: all.iter().copied().filter(|&s| role(s).1).collect(),
+        interior: all
+            .iter()
+            .copied()
+            .filter(|&s| role(s) == (false, false))
+            .collect(),
         segments: all,
-        upper,
-        lower,
-        interior,
     }
 }
 

@@ -80,6 +80,7 @@
 //! ```
 mod brute_force;
 mod count;
+mod list;
 mod order;
 mod pairwise;
 mod red_blue;
@@ -91,6 +92,7 @@ mod sweep;
 
 pub use brute_force::{brute_force_intersections, verify_intersections};
 pub use count::{count_intersections, count_intersections_with, IntersectionCount};
+pub use list::SegmentList;
 pub use pairwise::pairwise_intersections;
 pub use red_blue::{red_blue_intersections, RedBlueIntersections, RedBlueOverlap, RedBluePoint};
 pub(crate) use simple::clean_ring;
@@ -103,6 +105,9 @@ use sweep::{Flow, Sink};
 
 /// A point where two or more segments meet, with the segments through it.
 ///
+/// The lists are [`SegmentList`]s: they read as slices and hold up to two entries
+/// without allocating (a crossing of two segments allocates nothing).
+///
 /// Two values are equal when they describe the same exact point (whatever segments
 /// define a crossing) with the same segment lists.
 #[derive(Debug, Clone)]
@@ -112,13 +117,13 @@ pub struct IntersectionPoint {
     /// The exact point: an input endpoint, or a crossing kept as two segments.
     pub exact: ExactPoint,
     /// Every segment containing the point, ascending.
-    pub segments: Vec<usize>,
+    pub segments: SegmentList,
     /// U(p): segments whose upper endpoint (first in sweep order) is the point, ascending.
-    pub upper: Vec<usize>,
+    pub upper: SegmentList,
     /// L(p): segments whose lower endpoint is the point, ascending.
-    pub lower: Vec<usize>,
+    pub lower: SegmentList,
     /// C(p): segments with the point in their interior, ascending.
-    pub interior: Vec<usize>,
+    pub interior: SegmentList,
 }
 
 impl PartialEq for IntersectionPoint {
