@@ -11,7 +11,8 @@ use super::small_int::{self, Hom};
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap, SegmentList};
 use crate::kernel::{
-    segment_intersection, Crossing, ExactPoint, Point2, Segment2, SegmentIntersection,
+    quick_crossing, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
+    SegmentIntersection,
 };
 use crate::{Error, Result};
 use rayon::prelude::*;
@@ -132,8 +133,21 @@ const PARALLEL_ASSEMBLY_FROM: usize = 50_000;
 
 impl PairResults {
     /// Test segments `i < j` exactly and record how they meet.
+    #[inline]
     pub(crate) fn test(&mut self, segments: &[Segment2], i: usize, j: usize) {
-        match segment_intersection(segments[i], segments[j]) {
+        let (s, t) = (segments[i], segments[j]);
+        // Most pairs are decided by the inlined filter; the rest by the exact test.
+        match quick_crossing(s, t) {
+            Some(false) => return,
+            Some(true) => {
+                let c = Crossing { s, t };
+                return self
+                    .records
+                    .push(Record::new(round_crossing(&c), i, j, true));
+            }
+            None => {}
+        }
+        match segment_intersection(s, t) {
             SegmentIntersection::None => {}
             SegmentIntersection::Endpoint(q) => self.records.push(Record::new(q, i, j, false)),
             SegmentIntersection::Crossing(c) => {
@@ -148,14 +162,22 @@ impl PairResults {
         }
     }
 
-    /// Both sets of results.
-    pub(crate) fn merge(mut self, mut other: PairResults) -> PairResults {
-        if self.records.len() < other.records.len() {
-            std::mem::swap(&mut self, &mut other);
+    /// Empty results with room for `records` records.
+    pub(crate) fn with_capacity(records: usize) -> PairResults {
+        PairResults {
+            records: Vec::with_capacity(records),
+            overlapping: Vec::new(),
         }
-        self.records.append(&mut other.records);
-        self.overlapping.append(&mut other.overlapping);
-        self
+    }
+
+    /// All parts in one, each copied once.
+    pub(crate) fn concat(parts: Vec<PairResults>) -> PairResults {
+        let mut all = PairResults::with_capacity(parts.iter().map(|p| p.records.len()).sum());
+        for p in parts {
+            all.records.extend_from_slice(&p.records);
+            all.overlapping.extend_from_slice(&p.overlapping);
+        }
+        all
     }
 
     /// Group equal points (exactly), split their segments into U/L/C, and build the

@@ -16,12 +16,13 @@
 //! O(n + m + K log K) time for m candidate pairs and K meeting pairs on the pairwise
 //! path, O(n + K) space (24 bytes per (point, pair)).
 
-use super::order::{EventPoint, Oriented};
+use super::order::{crossing_y_interval, EventPoint, Oriented};
 use super::pairwise::{self, Grid};
 use super::sweep::{self, Flow, Sink};
 use super::{brute_force, IntersectAlgorithm, IntersectionPoint, Overlap};
 use crate::kernel::{
-    segment_intersection, Crossing, ExactPoint, Point2, Segment2, SegmentIntersection,
+    quick_crossing, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
+    SegmentIntersection,
 };
 use crate::Result;
 use rayon::prelude::*;
@@ -104,26 +105,30 @@ impl Found {
         });
     }
 
+    /// A record for the proper crossing of segments `i < j`.
+    #[inline(always)]
+    fn crossing(&mut self, c: &Crossing, i: usize, j: usize) {
+        let (lo, hi) = crossing_y_interval(c);
+        self.recs.push(Rec {
+            lo,
+            hi,
+            pair: ((i as u64) << 32) | CROSSING | j as u64,
+        });
+    }
+
+    #[inline]
     fn test(&mut self, segments: &[Segment2], i: usize, j: usize) {
-        match segment_intersection(segments[i], segments[j]) {
+        let (s, t) = (segments[i], segments[j]);
+        // Most pairs are decided by the inlined filter; the rest by the exact test.
+        match quick_crossing(s, t) {
+            Some(false) => return,
+            Some(true) => return self.crossing(&Crossing { s, t }, i, j),
+            None => {}
+        }
+        match segment_intersection(s, t) {
             SegmentIntersection::None => {}
             SegmentIntersection::Endpoint(q) => self.input(segments, q, i, j),
-            SegmentIntersection::Crossing(c) => {
-                let e = EventPoint::new(ExactPoint::Crossing(c));
-                let (lo, hi) = (e.mid.y - e.rad.y, e.mid.y + e.rad.y);
-                // No usable box: an interval that meets every other.
-                let usable = lo.is_finite() && hi.is_finite();
-                let (lo, hi) = if usable {
-                    (lo, hi)
-                } else {
-                    (f64::NEG_INFINITY, f64::INFINITY)
-                };
-                self.recs.push(Rec {
-                    lo,
-                    hi,
-                    pair: ((i as u64) << 32) | CROSSING | j as u64,
-                });
-            }
+            SegmentIntersection::Crossing(c) => self.crossing(&c, i, j),
             SegmentIntersection::Overlap(a, b) => {
                 self.input(segments, a, i, j);
                 self.input(segments, b, i, j);
@@ -132,13 +137,16 @@ impl Found {
         }
     }
 
-    fn merge(mut self, mut other: Found) -> Found {
-        if self.recs.len() < other.recs.len() {
-            std::mem::swap(&mut self, &mut other);
+    /// All parts in one, each copied once.
+    fn concat(parts: Vec<Found>) -> Found {
+        let mut all = Found::default();
+        all.recs
+            .reserve_exact(parts.iter().map(|p| p.recs.len()).sum());
+        for p in parts {
+            all.recs.extend_from_slice(&p.recs);
+            all.overlapping.extend_from_slice(&p.overlapping);
         }
-        self.recs.append(&mut other.recs);
-        self.overlapping.append(&mut other.overlapping);
-        self
+        all
     }
 }
 
@@ -231,19 +239,22 @@ fn count_on(segments: &[Segment2], grid: &Grid) -> IntersectionCount {
     let scan = |k: usize, found: &mut Found| {
         grid.scan_from(k, |i, j| found.test(segments, i, j));
     };
-    let found = if grid.candidates() < pairwise::PARALLEL_SCAN_FROM {
+    let candidates = grid.candidates();
+    let found = if candidates < pairwise::PARALLEL_SCAN_FROM {
         let mut found = Found::default();
+        found.recs.reserve(pairwise::reserve_for(candidates));
         (0..grid.entry_count()).for_each(|k| scan(k, &mut found));
         found
     } else {
-        (0..grid.entry_count())
+        let parts: Vec<Found> = (0..grid.entry_count())
             .into_par_iter()
             .with_min_len(16)
             .fold(Found::default, |mut found, k| {
                 scan(k, &mut found);
                 found
             })
-            .reduce(Found::default, Found::merge)
+            .collect();
+        Found::concat(parts)
     };
     count_found(segments, found)
 }

@@ -231,6 +231,13 @@ impl Grid {
     }
 }
 
+/// The records to reserve for a scan of `candidates` pairs: at most one per pair (the
+/// few overlaps add a second; the vector grows then), capped so that a huge bound does
+/// not reserve much memory it will not use.
+pub(super) fn reserve_for(candidates: u64) -> usize {
+    candidates.min(1 << 22) as usize
+}
+
 /// Whether [`super::find_intersections`] should use the pairwise method: when the
 /// candidate pairs are at most [`super::PAIRWISE_LIMIT_PER_SEGMENT`] times `n + K`, with
 /// the number K of meeting pairs estimated from up to 64 segments spread over the input
@@ -292,21 +299,23 @@ pub(crate) fn intersections_on(segments: &[Segment2], grid: &Grid) -> Intersecti
     let scan = |k: usize, found: &mut PairResults| {
         grid.scan_from(k, |i, j| found.test(segments, i, j));
     };
-    let found = if grid.candidates() < PARALLEL_SCAN_FROM {
-        let mut found = PairResults::default();
+    let candidates = grid.candidates();
+    let found = if candidates < PARALLEL_SCAN_FROM {
+        let mut found = PairResults::with_capacity(reserve_for(candidates));
         (0..grid.entries.len()).for_each(|k| scan(k, &mut found));
         found
     } else {
         // Independent scans on the rayon pool; the grouping sorts everything, so the
         // result does not depend on how the work was split.
-        (0..grid.entries.len())
+        let parts: Vec<PairResults> = (0..grid.entries.len())
             .into_par_iter()
             .with_min_len(16)
             .fold(PairResults::default, |mut found, k| {
                 scan(k, &mut found);
                 found
             })
-            .reduce(PairResults::default, PairResults::merge)
+            .collect();
+        PairResults::concat(parts)
     };
     found.assemble(segments)
 }

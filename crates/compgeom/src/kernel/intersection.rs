@@ -51,7 +51,7 @@ const FILTER_FLOOR: f64 = 1e-290;
 
 /// The sign of the orientation of `(a, b, c)` (`1` counter-clockwise, `-1` clockwise) when
 /// plain `f64` arithmetic decides it, else `0` (collinear or too close to tell).
-#[inline]
+#[inline(always)]
 fn orient_filtered(a: Point2, b: Point2, c: Point2) -> i8 {
     let l = (b.x - a.x) * (c.y - a.y);
     let r = (b.y - a.y) * (c.x - a.x);
@@ -75,7 +75,7 @@ fn orient_filtered(a: Point2, b: Point2, c: Point2) -> i8 {
 /// The answer of [`segment_intersection`] when four filtered orientations decide it
 /// (no common point, or a proper crossing), `None` when some orientation is zero or
 /// too close to zero to tell (the exact code then decides).
-#[inline]
+#[inline(always)]
 fn straddle_filter(s: Segment2, t: Segment2) -> Option<SegmentIntersection> {
     let o1 = orient_filtered(s.a, s.b, t.a);
     let o2 = orient_filtered(s.a, s.b, t.b);
@@ -96,6 +96,17 @@ fn straddle_filter(s: Segment2, t: Segment2) -> Option<SegmentIntersection> {
     // Each segment's ends lie strictly on both sides of the other's line: the lines are
     // not parallel and meet in one point interior to both segments.
     Some(SegmentIntersection::Crossing(Crossing { s, t }))
+}
+
+/// How two segments meet when four filtered orientations decide it: `Some(false)` no
+/// common point, `Some(true)` a proper crossing (interior to both), `None` when the exact
+/// [`segment_intersection`] must decide. Cheap and inlined, for loops over many pairs.
+#[inline(always)]
+pub(crate) fn quick_crossing(s: Segment2, t: Segment2) -> Option<bool> {
+    match straddle_filter(s, t)? {
+        SegmentIntersection::None => Some(false),
+        _ => Some(true),
+    }
 }
 
 /// The exact intersection of the closed segments `s` and `t`.
