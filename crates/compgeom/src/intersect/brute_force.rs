@@ -11,7 +11,7 @@ use super::small_int::{self, Hom};
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap, SegmentList};
 use crate::kernel::{
-    quick_crossing, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
+    quick_crossing_static, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
     SegmentIntersection,
 };
 use crate::{Error, Result};
@@ -26,7 +26,7 @@ pub fn brute_force_intersections(segments: &[Segment2]) -> Result<Intersections>
     let mut found = PairResults::default();
     for i in 0..segments.len() {
         for j in i + 1..segments.len() {
-            found.test(segments, i, j);
+            found.test(segments, i, j, f64::INFINITY);
         }
     }
     Ok(found.assemble(segments))
@@ -132,12 +132,13 @@ pub(crate) struct PairResults {
 const PARALLEL_ASSEMBLY_FROM: usize = 50_000;
 
 impl PairResults {
-    /// Test segments `i < j` exactly and record how they meet.
+    /// Test segments `i < j` exactly and record how they meet (`bound`: a static
+    /// orientation bound for the input, or infinity).
     #[inline]
-    pub(crate) fn test(&mut self, segments: &[Segment2], i: usize, j: usize) {
+    pub(crate) fn test(&mut self, segments: &[Segment2], i: usize, j: usize, bound: f64) {
         let (s, t) = (segments[i], segments[j]);
-        // Most pairs are decided by the inlined filter; the rest by the exact test.
-        match quick_crossing(s, t) {
+        // Most pairs are decided by the inlined filters; the rest by the exact test.
+        match quick_crossing_static(s, t, bound) {
             Some(false) => return,
             Some(true) => {
                 let c = Crossing { s, t };

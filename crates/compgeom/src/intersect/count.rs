@@ -21,7 +21,7 @@ use super::pairwise::{self, Grid};
 use super::sweep::{self, Flow, Sink};
 use super::{brute_force, IntersectAlgorithm, IntersectionPoint, Overlap};
 use crate::kernel::{
-    quick_crossing, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
+    quick_crossing_static, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
     SegmentIntersection,
 };
 use crate::Result;
@@ -116,11 +116,13 @@ impl Found {
         });
     }
 
+    /// Test segments `i < j` (`bound`: a static orientation bound for the input, or
+    /// infinity) and record how they meet.
     #[inline]
-    fn test(&mut self, segments: &[Segment2], i: usize, j: usize) {
+    fn test(&mut self, segments: &[Segment2], i: usize, j: usize, bound: f64) {
         let (s, t) = (segments[i], segments[j]);
-        // Most pairs are decided by the inlined filter; the rest by the exact test.
-        match quick_crossing(s, t) {
+        // Most pairs are decided by the inlined filters; the rest by the exact test.
+        match quick_crossing_static(s, t, bound) {
             Some(false) => return,
             Some(true) => return self.crossing(&Crossing { s, t }, i, j),
             None => {}
@@ -237,7 +239,7 @@ fn count_found(segments: &[Segment2], mut found: Found) -> IntersectionCount {
 /// The pairwise scan over a bucketed input.
 fn count_on(segments: &[Segment2], grid: &Grid) -> IntersectionCount {
     let scan = |k: usize, found: &mut Found| {
-        grid.scan_from(k, |i, j| found.test(segments, i, j));
+        grid.scan_from(k, |i, j| found.test(segments, i, j, grid.orient_bound));
     };
     let candidates = grid.candidates();
     let found = if candidates < pairwise::PARALLEL_SCAN_FROM {

@@ -18,7 +18,7 @@
 use super::brute_force::{check_count, PairResults};
 use super::sweep::check_finite;
 use super::Intersections;
-use crate::kernel::{segment_intersection, Segment2, SegmentIntersection};
+use crate::kernel::{segment_intersection, static_orient_bound, Segment2, SegmentIntersection};
 use crate::Result;
 use rayon::prelude::*;
 
@@ -47,6 +47,9 @@ pub(crate) struct Grid {
     cell_of: Vec<u32>,
     /// The boxes, by segment.
     boxes: Vec<[f64; 4]>,
+    /// The static orientation bound for every coordinate of the input
+    /// ([`crate::kernel::static_orient_bound`]).
+    pub(super) orient_bound: f64,
 }
 
 impl Grid {
@@ -95,6 +98,7 @@ impl Grid {
             entries: Vec::new(),
             cell_of: Vec::new(),
             boxes: Vec::new(),
+            orient_bound: f64::INFINITY,
         }
     }
 
@@ -191,6 +195,13 @@ impl Grid {
         g.start = start;
         g.entries = entries;
         g.cell_of = cell_of;
+        let m = boxes.iter().fold(0.0f64, |m, b| {
+            m.max(b[0].abs())
+                .max(b[1].abs())
+                .max(b[2].abs())
+                .max(b[3].abs())
+        });
+        g.orient_bound = static_orient_bound(m);
         g.boxes = boxes;
         g
     }
@@ -297,7 +308,7 @@ pub fn pairwise_intersections(segments: &[Segment2]) -> Result<Intersections> {
 /// [`pairwise_intersections`] on finite segments (fewer than 2^31) already bucketed.
 pub(crate) fn intersections_on(segments: &[Segment2], grid: &Grid) -> Intersections {
     let scan = |k: usize, found: &mut PairResults| {
-        grid.scan_from(k, |i, j| found.test(segments, i, j));
+        grid.scan_from(k, |i, j| found.test(segments, i, j, grid.orient_bound));
     };
     let candidates = grid.candidates();
     let found = if candidates < PARALLEL_SCAN_FROM {
