@@ -5,6 +5,7 @@
 //!
 //! O(n² + K log K) time for K meeting pairs, O(n + K) space.
 
+use super::bucket;
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
 use super::round::round_crossing;
 use super::small_int::{self, Hom};
@@ -231,56 +232,10 @@ impl PairResults {
     }
 }
 
-/// Sort records into their order: a counting sort into about one bucket per record over
-/// the range of the points' y (a monotone map, so buckets come in key order), then each
-/// bucket sorted. O(K) for spread-out points, O(K log K) at worst (one bucket).
+/// Sort records into their order: a bucket sort by the points' y (descending, as the
+/// keys are), then by the full key within buckets. O(K) for spread-out points.
 fn sort_records(records: &mut Vec<Record>) {
-    // (Bucket offsets are u32: beyond that, a plain sort.)
-    if records.len() < 64 || records.len() >= u32::MAX as usize {
-        records.sort_unstable();
-        return;
-    }
-    let y = |r: &Record| unkey(!r.ky);
-    let (lo, hi) = records
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
-            (a.min(y(r)), b.max(y(r)))
-        });
-    let buckets = records.len();
-    // (An infinite scale, from a tiny range, makes NaN or huge products: `as usize`
-    // saturates, and NaN goes to 0; the map stays monotone.)
-    let scale = if hi > lo {
-        buckets as f64 / (hi - lo)
-    } else {
-        0.0
-    };
-    // Decreasing in y: the first bucket holds the highest points (ky ascending).
-    let bucket = |r: &Record| (((hi - y(r)) * scale) as usize).min(buckets - 1);
-    let mut start = vec![0u32; buckets + 1];
-    for r in records.iter() {
-        start[bucket(r) + 1] += 1;
-    }
-    for b in 0..buckets {
-        start[b + 1] += start[b];
-    }
-    let mut fill = start.clone();
-    let blank = Record {
-        ky: 0,
-        kx: 0,
-        pair: 0,
-    };
-    let mut sorted = vec![blank; records.len()];
-    for r in records.iter() {
-        let b = bucket(r);
-        sorted[fill[b] as usize] = *r;
-        fill[b] += 1;
-    }
-    for w in start.windows(2) {
-        if w[1] - w[0] > 1 {
-            sorted[w[0] as usize..w[1] as usize].sort_unstable();
-        }
-    }
-    *records = sorted;
+    bucket::sort_by_key_then(records, |r| -unkey(!r.ky), Record::cmp);
 }
 
 /// Sort `run` exactly (sweep order, then pair) and return where its groups of equal

@@ -16,6 +16,7 @@
 //! O(n + m + K log K) time for m candidate pairs and K meeting pairs on the pairwise
 //! path, O(n + K) space (24 bytes per (point, pair)).
 
+use super::bucket;
 use super::order::{crossing_y_interval, EventPoint, Oriented};
 use super::pairwise::{self, Grid};
 use super::sweep::{self, Flow, Sink};
@@ -152,47 +153,10 @@ impl Found {
     }
 }
 
-/// Sort records by their lower ends: a counting sort into about one bucket per record
-/// over the range of the (finite) lower ends, a monotone map, then each bucket sorted
-/// (`total_cmp`: an unbounded `-inf` comes first). O(K) for spread-out points.
+/// Sort records by their lower ends (`total_cmp`: an unbounded `-inf` comes first), by
+/// buckets: O(K) for spread-out points.
 fn sort_by_lower_end(recs: &mut Vec<Rec>) {
-    let finite = recs.iter().map(|r| r.lo).filter(|v| v.is_finite());
-    let (min, max) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-        (a.min(v), b.max(v))
-    });
-    let buckets = recs.len().max(1);
-    let scale = if max > min {
-        buckets as f64 / (max - min)
-    } else {
-        0.0
-    };
-    // `as usize` saturates (and maps NaN, from an infinite scale, to 0): monotone.
-    let bucket = |v: f64| (((v - min) * scale) as usize).min(buckets - 1);
-    let mut start = vec![0usize; buckets + 1];
-    for r in recs.iter() {
-        start[bucket(r.lo) + 1] += 1;
-    }
-    for b in 0..buckets {
-        start[b + 1] += start[b];
-    }
-    let mut fill = start.clone();
-    let blank = Rec {
-        lo: 0.0,
-        hi: 0.0,
-        pair: 0,
-    };
-    let mut sorted = vec![blank; recs.len()];
-    for r in recs.iter() {
-        let b = bucket(r.lo);
-        sorted[fill[b]] = *r;
-        fill[b] += 1;
-    }
-    for w in start.windows(2) {
-        if w[1] - w[0] > 1 {
-            sorted[w[0]..w[1]].sort_unstable_by(|a, b| a.lo.total_cmp(&b.lo));
-        }
-    }
-    *recs = sorted;
+    bucket::sort_by_key_then(recs, |r| r.lo, |a, b| a.lo.total_cmp(&b.lo));
 }
 
 /// The number of distinct exact points among the records.

@@ -48,10 +48,20 @@
 //! ([`crate::kernel::Crossing`]), behind cheaper exact shortcuts that only decide when
 //! they are sure: an error-bounded box around each crossing (disjoint boxes order two
 //! points), an orientation filter at a crossing, and `i128` arithmetic when every
-//! coordinate involved is an integer below 2^20 (grid data). Reported coordinates are the
-//! nearest `f64` to the exact point (the kernel's correctly rounded
-//! [`Crossing::approx`](crate::kernel::Crossing::approx); the pairwise method first tries
-//! a certified straight-line double-double evaluation that gives the same bits faster).
+//! coordinate involved is an integer below 2^20 (grid data). The pairwise method tests
+//! each candidate pair with four `f64` orientations against one static error bound for
+//! the whole input first (one comparison each; it decides only where the kernel's
+//! dynamic filter decides, and the same way), then the dynamic filter, then the exact
+//! test. Reported coordinates are the nearest `f64` to the exact point (the kernel's
+//! correctly rounded [`Crossing::approx`](crate::kernel::Crossing::approx); the pairwise
+//! method first tries a certified straight-line double-double evaluation that gives the
+//! same bits faster).
+//!
+//! ## Output size
+//!
+//! Each point's four lists are [`SegmentList`]s, which read as slices and keep up to two
+//! indices inline: a crossing of two segments (nearly every point of real input) is one
+//! record with no heap allocation.
 //!
 //! ## Also here
 //!
@@ -79,6 +89,7 @@
 //! assert_eq!(p.interior, vec![0, 1]);
 //! ```
 mod brute_force;
+mod bucket;
 mod count;
 mod list;
 mod order;
