@@ -234,7 +234,7 @@ impl PairResults {
 
 /// Sort records into their order: a bucket sort by the points' y (descending, as the
 /// keys are), then by the full key within buckets. O(K) for spread-out points.
-fn sort_records(records: &mut Vec<Record>) {
+fn sort_records(records: &mut [Record]) {
     bucket::sort_by_key_then(records, |r| -unkey(!r.ky), Record::cmp);
 }
 

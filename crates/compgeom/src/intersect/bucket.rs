@@ -17,7 +17,7 @@ const COARSE: usize = 2048;
 /// `key(a) < key(b)` implies `cmp(a, b) == Less` (`-inf` allowed, NaN not expected: it
 /// goes to the first bucket). O(K) for keys spread over their range, O(K log K) at worst.
 pub(super) fn sort_by_key_then<T: Copy>(
-    items: &mut Vec<T>,
+    items: &mut [T],
     key: impl Fn(&T) -> f64,
     cmp: impl Fn(&T, &T) -> Ordering + Copy,
 ) {
@@ -51,7 +51,7 @@ pub(super) fn sort_by_key_then<T: Copy>(
         start[c + 1] += start[c];
     }
     let mut fill = start.clone();
-    let mut parted = items.clone();
+    let mut parted = items.to_vec();
     for t in items.iter() {
         let c = fine(t) >> shift;
         parted[fill[c] as usize] = *t;

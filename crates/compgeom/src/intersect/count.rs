@@ -155,12 +155,12 @@ impl Found {
 
 /// Sort records by their lower ends (`total_cmp`: an unbounded `-inf` comes first), by
 /// buckets: O(K) for spread-out points.
-fn sort_by_lower_end(recs: &mut Vec<Rec>) {
+fn sort_by_lower_end(recs: &mut [Rec]) {
     bucket::sort_by_key_then(recs, |r| r.lo, |a, b| a.lo.total_cmp(&b.lo));
 }
 
 /// The number of distinct exact points among the records.
-fn distinct_points(segments: &[Segment2], recs: &mut Vec<Rec>) -> usize {
+fn distinct_points(segments: &[Segment2], recs: &mut [Rec]) -> usize {
     // By lower ends, so that any two records whose intervals meet end up in one cluster
     // (total_cmp orders -0.0 before 0.0: harmless, the running top still chains them).
     sort_by_lower_end(recs);
