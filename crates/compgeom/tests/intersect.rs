@@ -65,7 +65,22 @@ fn checked(segs: &[Segment2]) -> Intersections {
         let got = count_intersections_with(segs, how).unwrap();
         assert_eq!(got, want, "{how:?} count for {segs:?}");
     }
+    rounded_by_the_kernel(&expected);
     found
+}
+
+/// Every reported point is the kernel's correctly rounded point of its exact point
+/// (`ExactPoint::approx`, independent of the fast rounding the methods use), bit for bit.
+fn rounded_by_the_kernel(found: &Intersections) {
+    for p in &found.points {
+        let want = p.exact.approx();
+        assert_eq!(
+            (p.point.x.to_bits(), p.point.y.to_bits()),
+            (want.x.to_bits(), want.y.to_bits()),
+            "{:?}",
+            p.exact
+        );
+    }
 }
 
 // ------------------------------------------------------------------ hand-made cases
@@ -663,6 +678,7 @@ fn many_crossings_are_rounded_in_parallel_with_the_same_answer() {
     let segs: Vec<Segment2> = (0..1000).map(|_| s(0.0, unit(), 1.0, unit())).collect();
     let by_pairs = pairwise_intersections(&segs).unwrap();
     assert!(by_pairs.points.len() > 200_000);
+    rounded_by_the_kernel(&by_pairs);
     assert_eq!(by_pairs, sweep_intersections(&segs).unwrap());
     let count = count_intersections(&segs).unwrap();
     assert_eq!(

@@ -5,13 +5,15 @@
 //!
 //! O(n² + K log K) time for K meeting pairs, O(n + K) space.
 
+use super::bucket;
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
 use super::round::round_crossing;
 use super::small_int::{self, Hom};
 use super::sweep::check_finite;
-use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
+use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap, SegmentList};
 use crate::kernel::{
-    segment_intersection, Crossing, ExactPoint, Point2, Segment2, SegmentIntersection,
+    quick_crossing_static, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
+    SegmentIntersection,
 };
 use crate::{Error, Result};
 use rayon::prelude::*;
@@ -25,7 +27,7 @@ pub fn brute_force_intersections(segments: &[Segment2]) -> Result<Intersections>
     let mut found = PairResults::default();
     for i in 0..segments.len() {
         for j in i + 1..segments.len() {
-            found.test(segments, i, j);
+            found.test(segments, i, j, f64::INFINITY);
         }
     }
     Ok(found.assemble(segments))
@@ -131,9 +133,23 @@ pub(crate) struct PairResults {
 const PARALLEL_ASSEMBLY_FROM: usize = 50_000;
 
 impl PairResults {
-    /// Test segments `i < j` exactly and record how they meet.
-    pub(crate) fn test(&mut self, segments: &[Segment2], i: usize, j: usize) {
-        match segment_intersection(segments[i], segments[j]) {
+    /// Test segments `i < j` exactly and record how they meet (`bound`: a static
+    /// orientation bound for the input, or infinity).
+    #[inline]
+    pub(crate) fn test(&mut self, segments: &[Segment2], i: usize, j: usize, bound: f64) {
+        let (s, t) = (segments[i], segments[j]);
+        // Most pairs are decided by the inlined filters; the rest by the exact test.
+        match quick_crossing_static(s, t, bound) {
+            Some(false) => return,
+            Some(true) => {
+                let c = Crossing { s, t };
+                return self
+                    .records
+                    .push(Record::new(round_crossing(&c), i, j, true));
+            }
+            None => {}
+        }
+        match segment_intersection(s, t) {
             SegmentIntersection::None => {}
             SegmentIntersection::Endpoint(q) => self.records.push(Record::new(q, i, j, false)),
             SegmentIntersection::Crossing(c) => {
@@ -148,14 +164,22 @@ impl PairResults {
         }
     }
 
-    /// Both sets of results.
-    pub(crate) fn merge(mut self, mut other: PairResults) -> PairResults {
-        if self.records.len() < other.records.len() {
-            std::mem::swap(&mut self, &mut other);
+    /// Empty results with room for `records` records.
+    pub(crate) fn with_capacity(records: usize) -> PairResults {
+        PairResults {
+            records: Vec::with_capacity(records),
+            overlapping: Vec::new(),
         }
-        self.records.append(&mut other.records);
-        self.overlapping.append(&mut other.overlapping);
-        self
+    }
+
+    /// All parts in one, each copied once.
+    pub(crate) fn concat(parts: Vec<PairResults>) -> PairResults {
+        let mut all = PairResults::with_capacity(parts.iter().map(|p| p.records.len()).sum());
+        for p in parts {
+            all.records.extend_from_slice(&p.records);
+            all.overlapping.extend_from_slice(&p.overlapping);
+        }
+        all
     }
 
     /// Group equal points (exactly), split their segments into U/L/C, and build the
@@ -163,12 +187,8 @@ impl PairResults {
     pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
         let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
         let parallel = self.records.len() >= PARALLEL_ASSEMBLY_FROM;
+        sort_records(&mut self.records);
         let records = &mut self.records;
-        if parallel {
-            records.par_sort_unstable();
-        } else {
-            records.sort_unstable();
-        }
         // Sorted by rounded points, which is the exact sweep order except within a run
         // of equal rounded y that holds a crossing: there the exact y may differ. Such
         // runs are re-sorted exactly; elsewhere equal keys mean equal points.
@@ -212,6 +232,12 @@ impl PairResults {
     }
 }
 
+/// Sort records into their order: a bucket sort by the points' y (descending, as the
+/// keys are), then by the full key within buckets. O(K) for spread-out points.
+fn sort_records(records: &mut [Record]) {
+    bucket::sort_by_key_then(records, |r| -unkey(!r.ky), Record::cmp);
+}
+
 /// Sort `run` exactly (sweep order, then pair) and return where its groups of equal
 /// points start.
 fn exact_groups(segments: &[Segment2], run: &mut [Record]) -> Vec<usize> {
@@ -243,50 +269,54 @@ fn exact_groups(segments: &[Segment2], run: &mut [Record]) -> Vec<usize> {
 /// One intersection point from the records of the pairs that meet there.
 fn point_of(segments: &[Segment2], segs: &[Oriented], group: &[Record]) -> IntersectionPoint {
     let first = group[0];
-    if group.len() == 1 && first.is_crossing() {
-        // The common case: two segments crossing properly.
-        let pair = vec![first.i(), first.j()];
-        return IntersectionPoint {
-            point: first.point(),
-            exact: first.exact(segments),
-            interior: pair.clone(),
-            segments: pair,
-            upper: Vec::new(),
-            lower: Vec::new(),
-        };
+    if group.len() == 1 {
+        // The common cases, without allocating: two segments crossing properly, or
+        // meeting at one input point.
+        let (i, j) = (first.i(), first.j());
+        let pair = SegmentList::pair(i, j);
+        if first.is_crossing() {
+            return IntersectionPoint {
+                point: first.point(),
+                exact: first.exact(segments),
+                interior: pair.clone(),
+                segments: pair,
+                upper: SegmentList::new(),
+                lower: SegmentList::new(),
+            };
+        }
     }
     // Prefer the input-point representation when the point is an endpoint.
-    let at = group.iter().find(|r| !r.is_crossing()).copied();
-    let exact = at.unwrap_or(first).exact(segments);
-    let mut all: Vec<usize> = group.iter().flat_map(|r| [r.i(), r.j()]).collect();
-    all.sort_unstable();
-    all.dedup();
-    let (mut upper, mut lower, mut interior) = (Vec::new(), Vec::new(), Vec::new());
-    for &s in &all {
-        let (is_upper, is_lower) = match at {
-            Some(r) => {
-                let q = r.point();
-                (segs[s].upper == q, segs[s].lower == q)
-            }
-            None => (false, false),
-        };
-        if is_upper {
-            upper.push(s);
-        }
-        if is_lower {
-            lower.push(s);
-        }
-        if !is_upper && !is_lower {
-            interior.push(s);
-        }
-    }
+    let at = group.iter().find(|r| !r.is_crossing()).map(Record::point);
+    let exact = match at {
+        Some(q) => ExactPoint::Input(q),
+        None => first.exact(segments),
+    };
+    let all: SegmentList = if group.len() == 1 {
+        SegmentList::pair(first.i(), first.j())
+    } else {
+        let mut all: Vec<usize> = group.iter().flat_map(|r| [r.i(), r.j()]).collect();
+        all.sort_unstable();
+        all.dedup();
+        all.into()
+    };
+    // A segment's role at the point: upper end, lower end (both for a zero-length
+    // segment), or interior. At a crossing that is no input point, every segment is
+    // interior.
+    let role = |s: usize| match at {
+        Some(q) => (segs[s].upper == q, segs[s].lower == q),
+        None => (false, false),
+    };
     IntersectionPoint {
         point: first.point(),
         exact,
+        upper: all.iter().copied().filter(|&s| role(s).0).collect(),
+        lower: all.iter().copied().filter(|&s| role(s).1).collect(),
+        interior: all
+            .iter()
+            .copied()
+            .filter(|&s| role(s) == (false, false))
+            .collect(),
         segments: all,
-        upper,
-        lower,
-        interior,
     }
 }
 

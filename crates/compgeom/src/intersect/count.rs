@@ -16,12 +16,14 @@
 //! O(n + m + K log K) time for m candidate pairs and K meeting pairs on the pairwise
 //! path, O(n + K) space (24 bytes per (point, pair)).
 
-use super::order::{EventPoint, Oriented};
+use super::bucket;
+use super::order::{crossing_y_interval, EventPoint, Oriented};
 use super::pairwise::{self, Grid};
 use super::sweep::{self, Flow, Sink};
 use super::{brute_force, IntersectAlgorithm, IntersectionPoint, Overlap};
 use crate::kernel::{
-    segment_intersection, Crossing, ExactPoint, Point2, Segment2, SegmentIntersection,
+    quick_crossing_static, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
+    SegmentIntersection,
 };
 use crate::Result;
 use rayon::prelude::*;
@@ -104,26 +106,32 @@ impl Found {
         });
     }
 
-    fn test(&mut self, segments: &[Segment2], i: usize, j: usize) {
-        match segment_intersection(segments[i], segments[j]) {
+    /// A record for the proper crossing of segments `i < j`.
+    #[inline(always)]
+    fn crossing(&mut self, c: &Crossing, i: usize, j: usize) {
+        let (lo, hi) = crossing_y_interval(c);
+        self.recs.push(Rec {
+            lo,
+            hi,
+            pair: ((i as u64) << 32) | CROSSING | j as u64,
+        });
+    }
+
+    /// Test segments `i < j` (`bound`: a static orientation bound for the input, or
+    /// infinity) and record how they meet.
+    #[inline]
+    fn test(&mut self, segments: &[Segment2], i: usize, j: usize, bound: f64) {
+        let (s, t) = (segments[i], segments[j]);
+        // Most pairs are decided by the inlined filters; the rest by the exact test.
+        match quick_crossing_static(s, t, bound) {
+            Some(false) => return,
+            Some(true) => return self.crossing(&Crossing { s, t }, i, j),
+            None => {}
+        }
+        match segment_intersection(s, t) {
             SegmentIntersection::None => {}
             SegmentIntersection::Endpoint(q) => self.input(segments, q, i, j),
-            SegmentIntersection::Crossing(c) => {
-                let e = EventPoint::new(ExactPoint::Crossing(c));
-                let (lo, hi) = (e.mid.y - e.rad.y, e.mid.y + e.rad.y);
-                // No usable box: an interval that meets every other.
-                let usable = lo.is_finite() && hi.is_finite();
-                let (lo, hi) = if usable {
-                    (lo, hi)
-                } else {
-                    (f64::NEG_INFINITY, f64::INFINITY)
-                };
-                self.recs.push(Rec {
-                    lo,
-                    hi,
-                    pair: ((i as u64) << 32) | CROSSING | j as u64,
-                });
-            }
+            SegmentIntersection::Crossing(c) => self.crossing(&c, i, j),
             SegmentIntersection::Overlap(a, b) => {
                 self.input(segments, a, i, j);
                 self.input(segments, b, i, j);
@@ -132,61 +140,27 @@ impl Found {
         }
     }
 
-    fn merge(mut self, mut other: Found) -> Found {
-        if self.recs.len() < other.recs.len() {
-            std::mem::swap(&mut self, &mut other);
+    /// All parts in one, each copied once.
+    fn concat(parts: Vec<Found>) -> Found {
+        let mut all = Found::default();
+        all.recs
+            .reserve_exact(parts.iter().map(|p| p.recs.len()).sum());
+        for p in parts {
+            all.recs.extend_from_slice(&p.recs);
+            all.overlapping.extend_from_slice(&p.overlapping);
         }
-        self.recs.append(&mut other.recs);
-        self.overlapping.append(&mut other.overlapping);
-        self
+        all
     }
 }
 
-/// Sort records by their lower ends: a counting sort into about one bucket per record
-/// over the range of the (finite) lower ends, a monotone map, then each bucket sorted
-/// (`total_cmp`: an unbounded `-inf` comes first). O(K) for spread-out points.
-fn sort_by_lower_end(recs: &mut Vec<Rec>) {
-    let finite = recs.iter().map(|r| r.lo).filter(|v| v.is_finite());
-    let (min, max) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-        (a.min(v), b.max(v))
-    });
-    let buckets = recs.len().max(1);
-    let scale = if max > min {
-        buckets as f64 / (max - min)
-    } else {
-        0.0
-    };
-    // `as usize` saturates (and maps NaN, from an infinite scale, to 0): monotone.
-    let bucket = |v: f64| (((v - min) * scale) as usize).min(buckets - 1);
-    let mut start = vec![0usize; buckets + 1];
-    for r in recs.iter() {
-        start[bucket(r.lo) + 1] += 1;
-    }
-    for b in 0..buckets {
-        start[b + 1] += start[b];
-    }
-    let mut fill = start.clone();
-    let blank = Rec {
-        lo: 0.0,
-        hi: 0.0,
-        pair: 0,
-    };
-    let mut sorted = vec![blank; recs.len()];
-    for r in recs.iter() {
-        let b = bucket(r.lo);
-        sorted[fill[b]] = *r;
-        fill[b] += 1;
-    }
-    for w in start.windows(2) {
-        if w[1] - w[0] > 1 {
-            sorted[w[0]..w[1]].sort_unstable_by(|a, b| a.lo.total_cmp(&b.lo));
-        }
-    }
-    *recs = sorted;
+/// Sort records by their lower ends (`total_cmp`: an unbounded `-inf` comes first), by
+/// buckets: O(K) for spread-out points.
+fn sort_by_lower_end(recs: &mut [Rec]) {
+    bucket::sort_by_key_then(recs, |r| r.lo, |a, b| a.lo.total_cmp(&b.lo));
 }
 
 /// The number of distinct exact points among the records.
-fn distinct_points(segments: &[Segment2], recs: &mut Vec<Rec>) -> usize {
+fn distinct_points(segments: &[Segment2], recs: &mut [Rec]) -> usize {
     // By lower ends, so that any two records whose intervals meet end up in one cluster
     // (total_cmp orders -0.0 before 0.0: harmless, the running top still chains them).
     sort_by_lower_end(recs);
@@ -229,21 +203,24 @@ fn count_found(segments: &[Segment2], mut found: Found) -> IntersectionCount {
 /// The pairwise scan over a bucketed input.
 fn count_on(segments: &[Segment2], grid: &Grid) -> IntersectionCount {
     let scan = |k: usize, found: &mut Found| {
-        grid.scan_from(k, |i, j| found.test(segments, i, j));
+        grid.scan_from(k, |i, j| found.test(segments, i, j, grid.orient_bound));
     };
-    let found = if grid.candidates() < pairwise::PARALLEL_SCAN_FROM {
+    let candidates = grid.candidates();
+    let found = if candidates < pairwise::PARALLEL_SCAN_FROM {
         let mut found = Found::default();
+        found.recs.reserve(pairwise::reserve_for(candidates));
         (0..grid.entry_count()).for_each(|k| scan(k, &mut found));
         found
     } else {
-        (0..grid.entry_count())
+        let parts: Vec<Found> = (0..grid.entry_count())
             .into_par_iter()
             .with_min_len(16)
             .fold(Found::default, |mut found, k| {
                 scan(k, &mut found);
                 found
             })
-            .reduce(Found::default, Found::merge)
+            .collect();
+        Found::concat(parts)
     };
     count_found(segments, found)
 }

@@ -48,10 +48,20 @@
 //! ([`crate::kernel::Crossing`]), behind cheaper exact shortcuts that only decide when
 //! they are sure: an error-bounded box around each crossing (disjoint boxes order two
 //! points), an orientation filter at a crossing, and `i128` arithmetic when every
-//! coordinate involved is an integer below 2^20 (grid data). Reported coordinates are the
-//! nearest `f64` to the exact point (the kernel's correctly rounded
-//! [`Crossing::approx`](crate::kernel::Crossing::approx); the pairwise method first tries
-//! a certified straight-line double-double evaluation that gives the same bits faster).
+//! coordinate involved is an integer below 2^20 (grid data). The pairwise method tests
+//! each candidate pair with four `f64` orientations against one static error bound for
+//! the whole input first (one comparison each; it decides only where the kernel's
+//! dynamic filter decides, and the same way), then the dynamic filter, then the exact
+//! test. Reported coordinates are the nearest `f64` to the exact point (the kernel's
+//! correctly rounded [`Crossing::approx`](crate::kernel::Crossing::approx); the pairwise
+//! method first tries a certified straight-line double-double evaluation that gives the
+//! same bits faster).
+//!
+//! ## Output size
+//!
+//! Each point's four lists are [`SegmentList`]s, which read as slices and keep up to two
+//! indices inline: a crossing of two segments (nearly every point of real input) is one
+//! record with no heap allocation.
 //!
 //! ## Also here
 //!
@@ -79,7 +89,9 @@
 //! assert_eq!(p.interior, vec![0, 1]);
 //! ```
 mod brute_force;
+mod bucket;
 mod count;
+mod list;
 mod order;
 mod pairwise;
 mod red_blue;
@@ -91,6 +103,7 @@ mod sweep;
 
 pub use brute_force::{brute_force_intersections, verify_intersections};
 pub use count::{count_intersections, count_intersections_with, IntersectionCount};
+pub use list::SegmentList;
 pub use pairwise::pairwise_intersections;
 // For the overlay's own noding (crate::dcel), which needs the candidate pairs only.
 pub(crate) use pairwise::{prefer_pairwise, PARALLEL_SCAN_FROM};
@@ -106,6 +119,9 @@ use sweep::{Flow, Sink};
 
 /// A point where two or more segments meet, with the segments through it.
 ///
+/// The lists are [`SegmentList`]s: they read as slices and hold up to two entries
+/// without allocating (a crossing of two segments allocates nothing).
+///
 /// Two values are equal when they describe the same exact point (whatever segments
 /// define a crossing) with the same segment lists.
 #[derive(Debug, Clone)]
@@ -115,13 +131,13 @@ pub struct IntersectionPoint {
     /// The exact point: an input endpoint, or a crossing kept as two segments.
     pub exact: ExactPoint,
     /// Every segment containing the point, ascending.
-    pub segments: Vec<usize>,
+    pub segments: SegmentList,
     /// U(p): segments whose upper endpoint (first in sweep order) is the point, ascending.
-    pub upper: Vec<usize>,
+    pub upper: SegmentList,
     /// L(p): segments whose lower endpoint is the point, ascending.
-    pub lower: Vec<usize>,
+    pub lower: SegmentList,
     /// C(p): segments with the point in their interior, ascending.
-    pub interior: Vec<usize>,
+    pub interior: SegmentList,
 }
 
 impl PartialEq for IntersectionPoint {

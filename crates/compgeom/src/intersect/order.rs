@@ -37,6 +37,20 @@ const U: f64 = 1.1102230246251565e-16; // 2^-53, the unit roundoff
 /// higher-order ones. `None` when the denominator's sign is uncertain or a value is not
 /// finite.
 fn crossing_box(c: &Crossing) -> Option<(Point2, Point2)> {
+    let (t, e_t) = crossing_param(c)?;
+    let s = c.s;
+    let (x, rx) = box_coord(s.a.x, s.b.x - s.a.x, t, e_t);
+    let (y, ry) = box_coord(s.a.y, s.b.y - s.a.y, t, e_t);
+    let all = [x, y, rx, ry];
+    all.iter()
+        .all(|v| v.is_finite())
+        .then_some((Point2::new(x, y), Point2::new(rx, ry)))
+}
+
+/// The parameter `t` of the crossing along `c.s` and a bound on its error (see
+/// [`crossing_box`]).
+#[inline(always)]
+fn crossing_param(c: &Crossing) -> Option<(f64, f64)> {
     let (s, t) = (c.s, c.t);
     let (dx, dy) = (s.b.x - s.a.x, s.b.y - s.a.y);
     let (ex, ey) = (t.b.x - t.a.x, t.b.y - t.a.y);
@@ -53,17 +67,29 @@ fn crossing_box(c: &Crossing) -> Option<(Point2, Point2)> {
     let t = num / den;
     // |T - t| for the exact parameter T = N / D.
     let e_t = 2.0 * (e_num + t.abs() * e_den) / (den.abs() - e_den) + 2.0 * U * t.abs();
-    let coord = |a: f64, d: f64| {
-        let v = a + d * t;
-        let err = 2.0 * (d.abs() * e_t + 4.0 * U * (d * t).abs()) + 8.0 * U * v.abs() + 1e-300;
-        (v, err)
-    };
-    let (x, rx) = coord(s.a.x, dx);
-    let (y, ry) = coord(s.a.y, dy);
-    let all = [x, y, rx, ry];
-    all.iter()
-        .all(|v| v.is_finite())
-        .then_some((Point2::new(x, y), Point2::new(rx, ry)))
+    Some((t, e_t))
+}
+
+/// One coordinate `a + d·t` of the crossing box and its half-width.
+#[inline(always)]
+fn box_coord(a: f64, d: f64, t: f64, e_t: f64) -> (f64, f64) {
+    let v = a + d * t;
+    let err = 2.0 * (d.abs() * e_t + 4.0 * U * (d * t).abs()) + 8.0 * U * v.abs() + 1e-300;
+    (v, err)
+}
+
+/// An interval `[lo, hi]` that surely holds the y of the crossing: the y-extent of its
+/// [`EventPoint`] box, computed alone (the whole line when there is no usable box).
+#[inline]
+pub(crate) fn crossing_y_interval(c: &Crossing) -> (f64, f64) {
+    if let Some((t, e_t)) = crossing_param(c) {
+        let (y, ry) = box_coord(c.s.a.y, c.s.b.y - c.s.a.y, t, e_t);
+        let (lo, hi) = (y - ry, y + ry);
+        if lo.is_finite() && hi.is_finite() {
+            return (lo, hi);
+        }
+    }
+    (f64::NEG_INFINITY, f64::INFINITY)
 }
 
 impl EventPoint {
@@ -259,6 +285,11 @@ mod tests {
             if e.rad.x.is_infinite() {
                 continue;
             }
+            // The y interval alone is the box's y extent.
+            assert_eq!(
+                crossing_y_interval(&cr),
+                (e.mid.y - e.rad.y, e.mid.y + e.rad.y)
+            );
             boxed += 1;
             let (x, y) = cr.exact().expect("crossing");
             let q = |v: f64| BigRational::from_float(v).expect("finite");

@@ -18,7 +18,7 @@
 use super::brute_force::{check_count, PairResults};
 use super::sweep::check_finite;
 use super::Intersections;
-use crate::kernel::{segment_intersection, Segment2, SegmentIntersection};
+use crate::kernel::{segment_intersection, static_orient_bound, Segment2, SegmentIntersection};
 use crate::Result;
 use rayon::prelude::*;
 
@@ -47,6 +47,9 @@ pub(crate) struct Grid {
     cell_of: Vec<u32>,
     /// The boxes, by segment.
     boxes: Vec<[f64; 4]>,
+    /// The static orientation bound for every coordinate of the input
+    /// ([`crate::kernel::static_orient_bound`]).
+    pub(super) orient_bound: f64,
 }
 
 impl Grid {
@@ -95,6 +98,7 @@ impl Grid {
             entries: Vec::new(),
             cell_of: Vec::new(),
             boxes: Vec::new(),
+            orient_bound: f64::INFINITY,
         }
     }
 
@@ -191,6 +195,13 @@ impl Grid {
         g.start = start;
         g.entries = entries;
         g.cell_of = cell_of;
+        let m = boxes.iter().fold(0.0f64, |m, b| {
+            m.max(b[0].abs())
+                .max(b[1].abs())
+                .max(b[2].abs())
+                .max(b[3].abs())
+        });
+        g.orient_bound = static_orient_bound(m);
         g.boxes = boxes;
         g
     }
@@ -229,6 +240,13 @@ impl Grid {
             }
         }
     }
+}
+
+/// The records to reserve for a scan of `candidates` pairs: at most one per pair (the
+/// few overlaps add a second; the vector grows then), capped so that a huge bound does
+/// not reserve much memory it will not use.
+pub(super) fn reserve_for(candidates: u64) -> usize {
+    candidates.min(1 << 22) as usize
 }
 
 /// Whether [`super::find_intersections`] should use the pairwise method: when the
@@ -290,23 +308,25 @@ pub fn pairwise_intersections(segments: &[Segment2]) -> Result<Intersections> {
 /// [`pairwise_intersections`] on finite segments (fewer than 2^31) already bucketed.
 pub(crate) fn intersections_on(segments: &[Segment2], grid: &Grid) -> Intersections {
     let scan = |k: usize, found: &mut PairResults| {
-        grid.scan_from(k, |i, j| found.test(segments, i, j));
+        grid.scan_from(k, |i, j| found.test(segments, i, j, grid.orient_bound));
     };
-    let found = if grid.candidates() < PARALLEL_SCAN_FROM {
-        let mut found = PairResults::default();
+    let candidates = grid.candidates();
+    let found = if candidates < PARALLEL_SCAN_FROM {
+        let mut found = PairResults::with_capacity(reserve_for(candidates));
         (0..grid.entries.len()).for_each(|k| scan(k, &mut found));
         found
     } else {
         // Independent scans on the rayon pool; the grouping sorts everything, so the
         // result does not depend on how the work was split.
-        (0..grid.entries.len())
+        let parts: Vec<PairResults> = (0..grid.entries.len())
             .into_par_iter()
             .with_min_len(16)
             .fold(PairResults::default, |mut found, k| {
                 scan(k, &mut found);
                 found
             })
-            .reduce(PairResults::default, PairResults::merge)
+            .collect();
+        PairResults::concat(parts)
     };
     found.assemble(segments)
 }

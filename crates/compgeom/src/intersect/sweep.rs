@@ -24,7 +24,7 @@
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
 use super::small_int;
 use super::status::Status;
-use super::{IntersectionPoint, Overlap};
+use super::{IntersectionPoint, Overlap, SegmentList};
 use crate::kernel::{
     compare_slopes, orient2d, orient_exact, segment_intersection, ExactPoint, Orientation, Point2,
     Segment2, SegmentIntersection,
@@ -308,6 +308,8 @@ struct Scratch {
     interior: Vec<usize>,
     points: Vec<usize>,
     newmid: Vec<usize>,
+    /// For sorting the lists of a reported point.
+    list: Vec<usize>,
 }
 
 impl Sweep {
@@ -396,27 +398,23 @@ impl Sweep {
         }
         let total = sc.upper.len() + sc.mid.len() + sc.points.len();
         if total >= 2 {
-            let mut upper: Vec<usize> = sc.upper.iter().chain(&sc.points).copied().collect();
-            let mut lower: Vec<usize> = sc.lower.iter().chain(&sc.points).copied().collect();
-            let mut interior = sc.interior.clone();
-            upper.sort_unstable();
-            lower.sort_unstable();
-            interior.sort_unstable();
-            let mut all: Vec<usize> = sc
-                .upper
-                .iter()
-                .chain(&sc.mid)
-                .chain(&sc.points)
-                .copied()
-                .collect();
-            all.sort_unstable();
+            // Each list sorted in the scratch buffer, then stored (inline when short).
+            let list = &mut sc.list;
+            let mut sorted = |parts: [&[usize]; 3]| {
+                list.clear();
+                for part in parts {
+                    list.extend_from_slice(part);
+                }
+                list.sort_unstable();
+                SegmentList::from_slice(list)
+            };
             let point = IntersectionPoint {
                 point: p.approx(),
                 exact: p.exact,
-                segments: all,
-                upper,
-                lower,
-                interior,
+                segments: sorted([&sc.upper, &sc.mid, &sc.points]),
+                upper: sorted([&sc.upper, &sc.points, &[]]),
+                lower: sorted([&sc.lower, &sc.points, &[]]),
+                interior: sorted([&sc.interior, &[], &[]]),
             };
             if sink.point(point) == Flow::Stop {
                 return Flow::Stop;

@@ -51,7 +51,7 @@ const FILTER_FLOOR: f64 = 1e-290;
 
 /// The sign of the orientation of `(a, b, c)` (`1` counter-clockwise, `-1` clockwise) when
 /// plain `f64` arithmetic decides it, else `0` (collinear or too close to tell).
-#[inline]
+#[inline(always)]
 fn orient_filtered(a: Point2, b: Point2, c: Point2) -> i8 {
     let l = (b.x - a.x) * (c.y - a.y);
     let r = (b.y - a.y) * (c.x - a.x);
@@ -75,7 +75,7 @@ fn orient_filtered(a: Point2, b: Point2, c: Point2) -> i8 {
 /// The answer of [`segment_intersection`] when four filtered orientations decide it
 /// (no common point, or a proper crossing), `None` when some orientation is zero or
 /// too close to zero to tell (the exact code then decides).
-#[inline]
+#[inline(always)]
 fn straddle_filter(s: Segment2, t: Segment2) -> Option<SegmentIntersection> {
     let o1 = orient_filtered(s.a, s.b, t.a);
     let o2 = orient_filtered(s.a, s.b, t.b);
@@ -96,6 +96,69 @@ fn straddle_filter(s: Segment2, t: Segment2) -> Option<SegmentIntersection> {
     // Each segment's ends lie strictly on both sides of the other's line: the lines are
     // not parallel and meet in one point interior to both segments.
     Some(SegmentIntersection::Crossing(Crossing { s, t }))
+}
+
+/// How two segments meet when four filtered orientations decide it: `Some(false)` no
+/// common point, `Some(true)` a proper crossing (interior to both), `None` when the exact
+/// [`segment_intersection`] must decide. Cheap and inlined, for loops over many pairs.
+#[inline(always)]
+pub(crate) fn quick_crossing(s: Segment2, t: Segment2) -> Option<bool> {
+    match straddle_filter(s, t)? {
+        SegmentIntersection::None => Some(false),
+        _ => Some(true),
+    }
+}
+
+/// A static error bound for the filtered orientation of points whose coordinates are
+/// all at most `m` in magnitude: [`quick_crossing_static`] with it decides only where
+/// the dynamic filter decides, and the same way. Infinite (never decides) when `8m²`
+/// could overflow or the bound would be below the filter's floor.
+///
+/// Why: differences of such coordinates round to at most `2m`, so the products to at
+/// most `fl(4m²)` and `mag = |l| + |r|` to at most `fl(8m²)` (rounding is monotone and
+/// scaling by a power of two exact); the dynamic bound `A·mag + 10^-300`, evaluated in
+/// the same order, is then at most this one. A determinant above it has
+/// `mag ≥ |det| >` the floor, and `mag` stays finite: the dynamic filter decides it too.
+pub(crate) fn static_orient_bound(m: f64) -> f64 {
+    let sq8 = 8.0 * m * m;
+    let bound = CCW_ERRBOUND_A * sq8 + 1e-300;
+    if sq8 <= 1e300 && bound >= FILTER_FLOOR {
+        bound
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// The orientation sign when `|det| > bound` (the same `det` as [`orient_filtered`]).
+#[inline(always)]
+fn orient_static(a: Point2, b: Point2, c: Point2, bound: f64) -> i8 {
+    let det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    if det > bound {
+        1
+    } else if -det > bound {
+        -1
+    } else {
+        0
+    }
+}
+
+/// [`quick_crossing`] with a [`static_orient_bound`] for the input tried first: one
+/// comparison per orientation in the common case; the dynamic filter otherwise.
+#[inline(always)]
+pub(crate) fn quick_crossing_static(s: Segment2, t: Segment2, bound: f64) -> Option<bool> {
+    let o1 = orient_static(s.a, s.b, t.a, bound);
+    let o2 = orient_static(s.a, s.b, t.b, bound);
+    if o1 != 0 && o1 == o2 {
+        return Some(false);
+    }
+    if o1 != 0 && o2 != 0 {
+        let o3 = orient_static(t.a, t.b, s.a, bound);
+        let o4 = orient_static(t.a, t.b, s.b, bound);
+        if o3 != 0 && o4 != 0 {
+            return Some(o3 != o4);
+        }
+    }
+    quick_crossing(s, t)
 }
 
 /// The exact intersection of the closed segments `s` and `t`.
@@ -189,5 +252,54 @@ pub fn segment_intersection(s: Segment2, t: Segment2) -> SegmentIntersection {
             // so the lines are not parallel); kept total for non-finite input.
             None => I::None,
         }
+    }
+}
+
+#[cfg(test)]
+mod static_filter_tests {
+    use super::*;
+
+    /// The static filter answers as the dynamic one and the exact test, on random,
+    /// grid, tiny and huge coordinates (each set with its own bound).
+    #[test]
+    fn static_filter_agrees_with_the_exact_test() {
+        let mut state = 5u64;
+        let mut next = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            state >> 11
+        };
+        let mut decided = 0;
+        for (k, scale) in [1.0, 1e-130, 1e140, 1e-160, 3e150].into_iter().enumerate() {
+            for grid in [false, true] {
+                let mut coord = || {
+                    let v = next();
+                    if grid {
+                        (v % 7) as f64 * scale
+                    } else {
+                        v as f64 / (1u64 << 53) as f64 * scale
+                    }
+                };
+                let pts: Vec<Point2> = (0..200).map(|_| Point2::new(coord(), coord())).collect();
+                let m = pts
+                    .iter()
+                    .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+                let bound = static_orient_bound(m);
+                assert_eq!(bound.is_finite(), k < 3, "scale {scale}");
+                for w in pts.windows(4) {
+                    let (s, t) = (Segment2::new(w[0], w[1]), Segment2::new(w[2], w[3]));
+                    let got = quick_crossing_static(s, t, bound);
+                    assert_eq!(got, quick_crossing(s, t));
+                    if let Some(cross) = got {
+                        decided += 1;
+                        let exact = segment_intersection(s, t);
+                        assert_eq!(cross, matches!(exact, SegmentIntersection::Crossing(_)));
+                        assert!(cross || exact == SegmentIntersection::None);
+                    }
+                }
+            }
+        }
+        assert!(decided > 1000, "{decided}");
     }
 }
