@@ -40,3 +40,62 @@ fn zero_normals_in_two_and_three_dimensions() {
     assert_eq!(bad["status"], "infeasible");
     assert_eq!(bad["certificate"], serde_json::json!([6]));
 }
+
+/// Run `compgeom ARGS.. --svg FILE` in `dir` and return the SVG text.
+fn svg_of(dir: &TempDir, args: &[&str]) -> String {
+    let svg = dir.path().join("out.svg");
+    Command::new(env!("CARGO_BIN_EXE_compgeom"))
+        .args(args)
+        .arg("--svg")
+        .arg(&svg)
+        .assert()
+        .success();
+    fs::read_to_string(&svg).unwrap()
+}
+
+#[test]
+fn lp_pictures_show_the_certificate_and_the_ray() {
+    let dir = TempDir::new().unwrap();
+    let infeasible = dir.path().join("inf.txt");
+    // x <= 0 and x >= 1 contradict; the other three are innocent.
+    fs::write(&infeasible, "1 0 0\n-1 0 -1\n0 1 3\n0 -1 3\n1 1 5\n").unwrap();
+    let text = svg_of(&dir, &["lp", infeasible.to_str().unwrap(), "--maximize", "1,0"]);
+    assert!(text.contains("certificate: constraints 0, 1 contradict"), "{text}");
+    let unbounded = dir.path().join("unb.txt");
+    fs::write(&unbounded, "1 0 1\n").unwrap();
+    let text = svg_of(&dir, &["lp", unbounded.to_str().unwrap(), "--maximize", "0,1"]);
+    assert!(text.contains("ray: the objective grows without bound"), "{text}");
+    assert!(!text.contains("certificate"), "{text}");
+}
+
+/// A cube taken out through its top face has exactly one removal direction (straight up):
+/// the picture must say "point", as the exact castability does (`interior: false`), not
+/// show a rounded sliver as a polygon. The pyramid's base has a whole square of directions.
+#[test]
+fn cast_picture_kind_is_exact() {
+    let dir = TempDir::new().unwrap();
+    let cube = dir.path().join("cube.off");
+    fs::write(
+        &cube,
+        "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n\
+         4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n",
+    )
+    .unwrap();
+    let pyramid = dir.path().join("pyramid.off");
+    fs::write(
+        &pyramid,
+        "OFF\n5 5 0\n0 0 0\n2 0 0\n2 2 0\n0 2 0\n1 1 1\n\
+         4 0 3 2 1\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n",
+    )
+    .unwrap();
+    for (mesh, facet, kind) in [
+        (&cube, "1", "(point)"),
+        (&cube, "2", "(point)"),
+        (&pyramid, "0", "(polygon)"),
+        (&pyramid, "1", "(point)"),
+    ] {
+        let text = svg_of(&dir, &["cast", mesh.to_str().unwrap(), "--facet", facet]);
+        let title = format!("removal directions for top facet {facet}: d = n + x·u + y·v {kind}");
+        assert!(text.contains(&title), "{mesh:?} facet {facet}: {text}");
+    }
+}

@@ -66,7 +66,7 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
         Lp2Solution::Optimal { point, value, .. } => (point, value),
         other => return Err(CliError::failure(format!("demo LP not optimal: {other:?}"))),
     };
-    let pic = lp_picture(&hs, c, &Some(point), "optimal", 0)?;
+    let pic = lp_picture(&hs, c, &Some(point), "optimal", 0, None, &[])?;
     section.push(
         demo.figure(
             "lp-2d.svg",
