@@ -99,3 +99,30 @@ fn cast_picture_kind_is_exact() {
         assert!(text.contains(&title), "{mesh:?} facet {facet}: {text}");
     }
 }
+
+/// A row with the wrong number of fields: exit 2, the line named, the expected form spelt
+/// for the dimension, and no output file.
+#[test]
+fn malformed_rows_name_the_line_and_the_form() {
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("out.json");
+    for (content, objective, form) in [
+        ("1 0 1\n1 2\n", "1,0", "expected 3 numbers (a b c, meaning a·x + b·y <= c), found 2"),
+        ("1 0 0 1\n1 0 1\n", "0,0,1", "expected 4 numbers (a1 a2 a3 c,"),
+        ("1 1\n1 1 1\n", "1", "expected 2 numbers (a c, meaning a·x <= c), found 3"),
+    ] {
+        let path = dir.path().join("bad.txt");
+        fs::write(&path, content).unwrap();
+        let r = Command::new(env!("CARGO_BIN_EXE_compgeom"))
+            .arg("lp")
+            .arg(&path)
+            .args(["--maximize", objective, "-o"])
+            .arg(&out)
+            .assert()
+            .code(2);
+        let err = String::from_utf8_lossy(&r.get_output().stderr).to_string();
+        assert!(err.contains(form), "{err}");
+        assert!(err.contains("bad.txt:2)"), "{err}");
+        assert!(!out.exists());
+    }
+}

@@ -28,7 +28,10 @@ JSON output (--format json, the default) is one object:
   value        c·point at the optimum (nearest f64 of the exact value)
   ray          [d1, ..]  unbounded: a direction with c·d > 0 keeping every constraint
   certificate  [i, ..]   infeasible: 0-based indices of constraints that alone contradict
-  constraints  [i, ..]   optimal: the constraints that are tight at the optimal vertex
+  constraints  [i, ..]   optimal: constraints tight at the optimal point; in two dimensions
+                         the two whose lines meet there (one when the optimal set is a
+                         whole line: then `point` is its point nearest the origin), in d
+                         dimensions every tight constraint
   verified     true; only with --verify (two dimensions; a failed check exits 1)
 Fields that do not apply are left out.
 
