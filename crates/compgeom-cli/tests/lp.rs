@@ -59,12 +59,24 @@ fn lp_pictures_show_the_certificate_and_the_ray() {
     let infeasible = dir.path().join("inf.txt");
     // x <= 0 and x >= 1 contradict; the other three are innocent.
     fs::write(&infeasible, "1 0 0\n-1 0 -1\n0 1 3\n0 -1 3\n1 1 5\n").unwrap();
-    let text = svg_of(&dir, &["lp", infeasible.to_str().unwrap(), "--maximize", "1,0"]);
-    assert!(text.contains("certificate: constraints 0, 1 contradict"), "{text}");
+    let text = svg_of(
+        &dir,
+        &["lp", infeasible.to_str().unwrap(), "--maximize", "1,0"],
+    );
+    assert!(
+        text.contains("certificate: constraints 0, 1 contradict"),
+        "{text}"
+    );
     let unbounded = dir.path().join("unb.txt");
     fs::write(&unbounded, "1 0 1\n").unwrap();
-    let text = svg_of(&dir, &["lp", unbounded.to_str().unwrap(), "--maximize", "0,1"]);
-    assert!(text.contains("ray: the objective grows without bound"), "{text}");
+    let text = svg_of(
+        &dir,
+        &["lp", unbounded.to_str().unwrap(), "--maximize", "0,1"],
+    );
+    assert!(
+        text.contains("ray: the objective grows without bound"),
+        "{text}"
+    );
     assert!(!text.contains("certificate"), "{text}");
 }
 
@@ -107,9 +119,21 @@ fn malformed_rows_name_the_line_and_the_form() {
     let dir = TempDir::new().unwrap();
     let out = dir.path().join("out.json");
     for (content, objective, form) in [
-        ("1 0 1\n1 2\n", "1,0", "expected 3 numbers (a b c, meaning a·x + b·y <= c), found 2"),
-        ("1 0 0 1\n1 0 1\n", "0,0,1", "expected 4 numbers (a1 a2 a3 c,"),
-        ("1 1\n1 1 1\n", "1", "expected 2 numbers (a c, meaning a·x <= c), found 3"),
+        (
+            "1 0 1\n1 2\n",
+            "1,0",
+            "expected 3 numbers (a b c, meaning a·x + b·y <= c), found 2",
+        ),
+        (
+            "1 0 0 1\n1 0 1\n",
+            "0,0,1",
+            "expected 4 numbers (a1 a2 a3 c,",
+        ),
+        (
+            "1 1\n1 1 1\n",
+            "1",
+            "expected 2 numbers (a c, meaning a·x <= c), found 3",
+        ),
     ] {
         let path = dir.path().join("bad.txt");
         fs::write(&path, content).unwrap();

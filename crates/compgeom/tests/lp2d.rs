@@ -234,7 +234,10 @@ fn the_verifier_rejects_wrong_answers() {
 /// line, direction exactly (0, 1) — not (-0, 1), which JSON would print as `-0.0`.
 #[test]
 fn unbounded_direction_has_no_negative_zero() {
-    let hs = [HalfPlane::new(1.0, 0.0, 1.0), HalfPlane::new(-1.0, 0.0, -1.0)];
+    let hs = [
+        HalfPlane::new(1.0, 0.0, 1.0),
+        HalfPlane::new(-1.0, 0.0, -1.0),
+    ];
     for c in [(1.0, 1.0), (-1.0, -1.0), (0.0, 1.0)] {
         match solve(&hs, c, 0) {
             Lp2Solution::Unbounded { direction, .. } => {

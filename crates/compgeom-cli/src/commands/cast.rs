@@ -7,7 +7,7 @@ use crate::output;
 use clap::Args;
 use compgeom::io::{read_off, Polyhedron};
 use compgeom::lp::{castability, intersect_halfplanes, Castability, HalfPlane};
-use compgeom::render::Picture;
+use compgeom::render::{Layer, Picture, Style};
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -176,10 +176,14 @@ pub fn direction_picture(mesh: &Polyhedron, t: usize) -> Result<Picture, CliErro
         p.y *= stretch;
         d.y *= stretch;
     }
-    Ok(region_picture(
-        &hs,
-        &region,
-        &[compgeom::Point2::new(0.0, 0.0)],
-        &title,
-    ))
+    let origin = compgeom::Point2::new(0.0, 0.0);
+    let mut pic = region_picture(&hs, &region, &[origin], &title);
+    pic.add(
+        Layer::new(
+            "d = n (straight out of the top facet)",
+            Style::points("#ff7f0e").with_radius(4.0),
+        )
+        .point(origin),
+    );
+    Ok(pic)
 }
