@@ -150,3 +150,25 @@ fn malformed_rows_name_the_line_and_the_form() {
         assert!(!out.exists());
     }
 }
+
+/// Unbounded regions have no WKT/GeoJSON/CSV form: exit 2 with a sentence that reads.
+#[test]
+fn unbounded_regions_refuse_geometry_formats() {
+    let dir = TempDir::new().unwrap();
+    for (content, what) in [
+        ("1 0 1\n0 1 1\n", "is an unbounded region (unbounded)"),
+        ("1 0 1\n-1 0 -1\n0 1 1\n", "is a ray (unbounded)"),
+        ("1 0 1\n-1 0 -1\n", "is a line (unbounded)"),
+    ] {
+        let path = dir.path().join("h.txt");
+        fs::write(&path, content).unwrap();
+        let r = Command::new(env!("CARGO_BIN_EXE_compgeom"))
+            .arg("halfplanes")
+            .arg(&path)
+            .args(["--format", "wkt"])
+            .assert()
+            .code(2);
+        let err = String::from_utf8_lossy(&r.get_output().stderr).to_string();
+        assert!(err.contains(what), "{err}");
+    }
+}

@@ -144,11 +144,15 @@ pub fn run(args: &HalfplanesArgs) -> Result<(), CliError> {
                     Shape::Polygon(Polygon::new(region.vertices.clone(), Vec::new()))
                 }
                 k => {
+                    let what = match k {
+                        RegionKind::Ray => "a ray",
+                        RegionKind::Line => "a line",
+                        _ => "an unbounded region",
+                    };
                     return Err(CliError::bad_input(format!(
-                    "the intersection is a {} (unbounded): it has no {} form; use --format json",
-                    k.name(),
-                    format.name()
-                )))
+                        "the intersection is {what} (unbounded): it has no {} form; use --format json",
+                        format.name()
+                    )));
                 }
             };
             write_shape(&shape, format)?
