@@ -159,11 +159,14 @@ pub fn run(args: &HalfplanesArgs) -> Result<(), CliError> {
         }
     };
     if let Some(svg) = &args.output.svg {
+        let corners = match region.vertices.len() {
+            1 => "1 corner".to_string(),
+            k => format!("{k} corners"),
+        };
         let title = format!(
-            "half-plane intersection: n = {}, {} with {} corners",
+            "half-plane intersection: n = {}, {} with {corners}",
             hs.len(),
             region.kind.name(),
-            region.vertices.len()
         );
         let picture = region_picture(&hs, &region, &[], &title);
         output::write_atomic(svg, picture.to_svg_string().as_bytes())?;
