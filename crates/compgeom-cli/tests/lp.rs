@@ -172,3 +172,51 @@ fn unbounded_regions_refuse_geometry_formats() {
         assert!(err.contains(what), "{err}");
     }
 }
+
+/// Broken surfaces: exit 2, `error: ... (file:line)` naming the offending face's line, and
+/// no output file.
+#[test]
+fn broken_meshes_name_the_face_line() {
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("out.json");
+    let cube = "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n\
+                4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+    for (text, want, line) in [
+        // Face 1 (line 12) wound the wrong way: face 2 (line 13) then uses edge 4-5 in the
+        // same direction.
+        (
+            cube.replace("4 4 5 6 7\n", "4 7 6 5 4\n"),
+            "used in the same direction by faces 1 and 2",
+            13,
+        ),
+        // Vertex 7 lifted: face 1 (line 12) is not planar.
+        (
+            cube.replace("0 1 1\n", "0 1 1.5\n"),
+            "face 1 is not planar",
+            12,
+        ),
+        // No top face: the first face with an unmatched edge is now face 1 (the side
+        // 0 1 5 4, line 12), whose edge 5-4 the top face would have matched.
+        (
+            cube.replace("8 6 0", "8 5 0").replace("4 4 5 6 7\n", ""),
+            "edge 5-4 of face 1 has no opposite face",
+            12,
+        ),
+    ] {
+        let path = dir.path().join("bad.off");
+        fs::write(&path, text).unwrap();
+        let r = Command::new(env!("CARGO_BIN_EXE_compgeom"))
+            .arg("cast")
+            .arg(&path)
+            .arg("-o")
+            .arg(&out)
+            .assert()
+            .code(2);
+        let err = String::from_utf8_lossy(&r.get_output().stderr).to_string();
+        assert!(err.starts_with("error: "), "{err}");
+        assert!(err.contains(want), "{err}");
+        let tail = format!("bad.off:{line})");
+        assert!(err.trim_end().ends_with(&tail), "{err}");
+        assert!(!out.exists());
+    }
+}

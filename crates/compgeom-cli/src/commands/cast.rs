@@ -5,8 +5,8 @@ use crate::cli::OutputArgs;
 use crate::error::CliError;
 use crate::output;
 use clap::Args;
-use compgeom::io::{read_off, Polyhedron};
-use compgeom::lp::{castability, intersect_halfplanes, Castability, HalfPlane};
+use compgeom::io::{read_off_with_lines, Polyhedron};
+use compgeom::lp::{castability_at, intersect_halfplanes, Castability, HalfPlane};
 use compgeom::render::{Layer, Picture, Style};
 use serde::Serialize;
 use std::path::PathBuf;
@@ -62,8 +62,12 @@ pub fn run(args: &CastArgs) -> Result<(), CliError> {
         return Err(CliError::bad_input("cast has no --verify check"));
     }
     let (text, name) = read_source(&args.input)?;
-    let mesh = read_off(&text, &name)?;
-    let result = castability(&mesh).map_err(|e| CliError::bad_input(format!("{name}: {e}")))?;
+    let (mesh, face_lines) = read_off_with_lines(&text, &name)?;
+    // Errors about one face already name the file and line; the others get the file.
+    let result = castability_at(&mesh, &name, &face_lines).map_err(|e| match e {
+        e @ compgeom::Error::Parse { .. } => CliError::from(e),
+        e => CliError::bad_input(format!("{name}: {e}")),
+    })?;
     if args.output.format.geometry_format().is_some() {
         return Err(CliError::bad_input(
             "cast writes JSON only; use --format json",
