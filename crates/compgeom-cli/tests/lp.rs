@@ -220,3 +220,18 @@ fn broken_meshes_name_the_face_line() {
         assert!(!out.exists());
     }
 }
+
+/// `enclose` on an input with no points: exit 2 and the file is named.
+#[test]
+fn enclose_of_nothing_names_the_file() {
+    let dir = TempDir::new().unwrap();
+    let path = dir.path().join("nothing.csv");
+    fs::write(&path, "# only a comment\n").unwrap();
+    let r = Command::new(env!("CARGO_BIN_EXE_compgeom"))
+        .arg("enclose")
+        .arg(&path)
+        .assert()
+        .code(2);
+    let err = String::from_utf8_lossy(&r.get_output().stderr).to_string();
+    assert!(err.contains("nothing.csv: no points"), "{err}");
+}
