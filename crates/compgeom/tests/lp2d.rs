@@ -26,6 +26,10 @@ fn check(hs: &[HalfPlane], c: (f64, f64), seed: u64) -> Result<(), TestCaseError
         (Expected::Unbounded, Lp2Solution::Unbounded { point, direction }) => {
             let (dx, dy) = (r(direction.x), r(direction.y));
             prop_assert!(r(c.0) * &dx + r(c.1) * &dy > r(0.0));
+            // No negative zero in the output (JSON would show `-0.0`).
+            for v in [direction.x, direction.y] {
+                prop_assert!(v != 0.0 || v.is_sign_positive(), "{direction:?}");
+            }
             for h in hs {
                 prop_assert!(
                     r(h.a) * &dx + r(h.b) * &dy <= r(0.0),
@@ -224,4 +228,24 @@ fn the_verifier_rejects_wrong_answers() {
         certificate: vec![0, 1],
     };
     assert!(verify_lp2d(&hs, c, &cert).is_err());
+}
+
+/// The line x = 1 (two opposite constraints) with objective (1, 1): unbounded along the
+/// line, direction exactly (0, 1) — not (-0, 1), which JSON would print as `-0.0`.
+#[test]
+fn unbounded_direction_has_no_negative_zero() {
+    let hs = [
+        HalfPlane::new(1.0, 0.0, 1.0),
+        HalfPlane::new(-1.0, 0.0, -1.0),
+    ];
+    for c in [(1.0, 1.0), (-1.0, -1.0), (0.0, 1.0)] {
+        match solve(&hs, c, 0) {
+            Lp2Solution::Unbounded { direction, .. } => {
+                assert_eq!(direction.x, 0.0);
+                assert!(direction.x.is_sign_positive(), "{c:?}: {direction:?}");
+                assert_eq!(direction.y.abs(), 1.0);
+            }
+            other => panic!("{c:?}: {other:?}"),
+        }
+    }
 }

@@ -5,9 +5,9 @@ use crate::cli::OutputArgs;
 use crate::error::CliError;
 use crate::output;
 use clap::Args;
-use compgeom::io::{read_off, Polyhedron};
-use compgeom::lp::{castability, intersect_halfplanes, Castability, HalfPlane};
-use compgeom::render::Picture;
+use compgeom::io::{read_off_with_lines, Polyhedron};
+use compgeom::lp::{castability_at, intersect_halfplanes, Castability, HalfPlane};
+use compgeom::render::{Layer, Picture, Style};
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -26,7 +26,8 @@ JSON output (--format json, the only format) is one object:
   input_facets number of faces read
 
 --svg draws, for one top facet (--facet, default the first castable one), the region of
-removal directions d with n_top·d = 1, in coordinates of that plane.
+removal directions d in the plane through n_top perpendicular to it, in coordinates of
+that plane (the region's kind is exact for integer coordinates).
 
 Examples:
   compgeom cast part.off
@@ -61,8 +62,12 @@ pub fn run(args: &CastArgs) -> Result<(), CliError> {
         return Err(CliError::bad_input("cast has no --verify check"));
     }
     let (text, name) = read_source(&args.input)?;
-    let mesh = read_off(&text, &name)?;
-    let result = castability(&mesh).map_err(|e| CliError::bad_input(format!("{name}: {e}")))?;
+    let (mesh, face_lines) = read_off_with_lines(&text, &name)?;
+    // Errors about one face already name the file and line; the others get the file.
+    let result = castability_at(&mesh, &name, &face_lines).map_err(|e| match e {
+        e @ compgeom::Error::Parse { .. } => CliError::from(e),
+        e => CliError::bad_input(format!("{name}: {e}")),
+    })?;
     if args.output.format.geometry_format().is_some() {
         return Err(CliError::bad_input(
             "cast writes JSON only; use --format json",
@@ -104,15 +109,19 @@ fn normal(mesh: &Polyhedron, f: usize) -> [f64; 3] {
     n
 }
 
-/// The removal directions of top facet `t` in the plane `n_t·d = 1` (coordinates along two
-/// unit vectors of that plane): one half-plane per other facet, drawn with the library's
-/// half-plane intersection. The picture is computed in `f64` (for looking, not deciding).
+/// The removal directions of top facet `t` in the plane through `n_t` perpendicular to it
+/// (coordinates along two orthogonal vectors of that plane): one half-plane per other
+/// facet, intersected with the library's exact half-plane intersection.
+///
+/// Why no unit vectors: normalizing takes square roots, and the rounded half-planes of a
+/// degenerate cone (a single removal direction, a flat wedge) then meet in a tiny sliver
+/// drawn and titled "polygon" while `castability` says the cone has no interior. The
+/// constraints `n_f·d <= 0` are homogeneous, so the raw Newell normals (integers, hence
+/// exact, for meshes with integer coordinates of moderate size) and the exact cross
+/// products `u = n_t × e`, `v = n_t × u` give half-planes whose intersection has the true
+/// kind. Only afterwards, for drawing, is `y` stretched by `|n_t|` (as `|v| = |n_t|·|u|`)
+/// so the picture is not distorted.
 pub fn direction_picture(mesh: &Polyhedron, t: usize) -> Result<Picture, CliError> {
-    let unit = |v: [f64; 3]| {
-        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        [v[0] / l, v[1] / l, v[2] / l]
-    };
-    let mut nt = unit(normal(mesh, t));
     // Orient outward with the signed volume.
     let vol: f64 = (0..mesh.faces.len())
         .map(|f| {
@@ -122,12 +131,17 @@ pub fn direction_picture(mesh: &Polyhedron, t: usize) -> Result<Picture, CliErro
         })
         .sum();
     let s = if vol < 0.0 { -1.0 } else { 1.0 };
-    nt = [s * nt[0], s * nt[1], s * nt[2]];
-    let helper = if nt[0].abs() < 0.9 {
-        [1.0, 0.0, 0.0]
-    } else {
-        [0.0, 1.0, 0.0]
-    };
+    let nt = normal(mesh, t).map(|x| s * x);
+    let stretch = (nt[0] * nt[0] + nt[1] * nt[1] + nt[2] * nt[2]).sqrt();
+    if !(stretch > 0.0 && stretch.is_finite()) {
+        return Err(CliError::bad_input(format!("face {t} has no normal")));
+    }
+    // The coordinate axis most nearly perpendicular to n_t.
+    let k = (0..3)
+        .min_by(|&i, &j| nt[i].abs().total_cmp(&nt[j].abs()))
+        .unwrap_or(0);
+    let mut helper = [0.0; 3];
+    helper[k] = 1.0;
     let cross = |a: [f64; 3], b: [f64; 3]| {
         [
             a[1] * b[2] - a[2] * b[1],
@@ -135,32 +149,45 @@ pub fn direction_picture(mesh: &Polyhedron, t: usize) -> Result<Picture, CliErro
             a[0] * b[1] - a[1] * b[0],
         ]
     };
-    let u = unit(cross(nt, helper));
+    let u = cross(nt, helper);
     let v = cross(nt, u);
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let hs: Vec<HalfPlane> = (0..mesh.faces.len())
         .filter(|&f| f != t)
         .filter_map(|f| {
-            let n = normal(mesh, f);
-            let n = [s * n[0], s * n[1], s * n[2]];
-            let l = dot(n, n).sqrt();
-            if l == 0.0 {
+            let n = normal(mesh, f).map(|x| s * x);
+            if n == [0.0; 3] {
                 return None;
             }
-            let n = [n[0] / l, n[1] / l, n[2] / l];
             // d = nt + x·u + y·v: n·d <= 0  <=>  (n·u)·x + (n·v)·y <= -(n·nt).
             Some(HalfPlane::new(dot(n, u), dot(n, v), -dot(n, nt)))
         })
         .collect();
-    let region = intersect_halfplanes(&hs, 0)?;
+    let mut region = intersect_halfplanes(&hs, 0)?;
     let title = format!(
         "removal directions for top facet {t}: d = n + x·u + y·v ({})",
         region.kind.name()
     );
-    Ok(region_picture(
-        &hs,
-        &region,
-        &[compgeom::Point2::new(0.0, 0.0)],
-        &title,
-    ))
+    // Drawing only: stretch y by |n_t| so that x and y have the same length unit.
+    let hs: Vec<HalfPlane> = hs
+        .iter()
+        .map(|h| HalfPlane::new(h.a, h.b / stretch, h.c))
+        .collect();
+    for p in &mut region.vertices {
+        p.y *= stretch;
+    }
+    for (p, d) in &mut region.outline {
+        p.y *= stretch;
+        d.y *= stretch;
+    }
+    let origin = compgeom::Point2::new(0.0, 0.0);
+    let mut pic = region_picture(&hs, &region, &[origin], &title);
+    pic.add(
+        Layer::new(
+            "d = n (straight out of the top facet)",
+            Style::points("#ff7f0e").with_radius(4.0),
+        )
+        .point(origin),
+    );
+    Ok(pic)
 }

@@ -54,7 +54,15 @@ struct DiscJson {
 
 /// Run `compgeom enclose`.
 pub fn run(args: &EncloseArgs) -> Result<(), CliError> {
-    let points = args.input.read_points()?;
+    let src = args.input.read()?;
+    let points = compgeom::io::read_points(&src.text, src.format, &src.name)?;
+    if points.is_empty() {
+        // Say which input was empty (the library cannot know the file).
+        return Err(CliError::bad_input(format!(
+            "{}: no points: the smallest enclosing disc of no points is undefined",
+            src.name
+        )));
+    }
     let disc = smallest_enclosing_disc(&points, args.seed)?;
     if args.output.verify {
         verify_enclosing_disc(&points, &disc)?;

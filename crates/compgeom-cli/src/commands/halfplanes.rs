@@ -144,22 +144,29 @@ pub fn run(args: &HalfplanesArgs) -> Result<(), CliError> {
                     Shape::Polygon(Polygon::new(region.vertices.clone(), Vec::new()))
                 }
                 k => {
+                    let what = match k {
+                        RegionKind::Ray => "a ray",
+                        RegionKind::Line => "a line",
+                        _ => "an unbounded region",
+                    };
                     return Err(CliError::bad_input(format!(
-                    "the intersection is a {} (unbounded): it has no {} form; use --format json",
-                    k.name(),
-                    format.name()
-                )))
+                        "the intersection is {what} (unbounded): it has no {} form; use --format json",
+                        format.name()
+                    )));
                 }
             };
             write_shape(&shape, format)?
         }
     };
     if let Some(svg) = &args.output.svg {
+        let corners = match region.vertices.len() {
+            1 => "1 corner".to_string(),
+            k => format!("{k} corners"),
+        };
         let title = format!(
-            "half-plane intersection: n = {}, {} with {} corners",
+            "half-plane intersection: n = {}, {} with {corners}",
             hs.len(),
             region.kind.name(),
-            region.vertices.len()
         );
         let picture = region_picture(&hs, &region, &[], &title);
         output::write_atomic(svg, picture.to_svg_string().as_bytes())?;

@@ -28,7 +28,10 @@ JSON output (--format json, the default) is one object:
   value        c·point at the optimum (nearest f64 of the exact value)
   ray          [d1, ..]  unbounded: a direction with c·d > 0 keeping every constraint
   certificate  [i, ..]   infeasible: 0-based indices of constraints that alone contradict
-  constraints  [i, ..]   optimal: the constraints that are tight at the optimal vertex
+  constraints  [i, ..]   optimal: constraints tight at the optimal point; in two dimensions
+                         the two whose lines meet there (one when the optimal set is a
+                         whole line: then `point` is its point nearest the origin), in d
+                         dimensions every tight constraint
   verified     true; only with --verify (two dimensions; a failed check exits 1)
 Fields that do not apply are left out.
 
@@ -197,12 +200,15 @@ pub fn run(args: &LpArgs) -> Result<(), CliError> {
             .iter()
             .map(|r| HalfPlane::new(r[0], r[1], r[2]))
             .collect();
+        let ray = result.ray.as_ref().map(|d| Vector2::new(d[0], d[1]));
         let picture = lp_picture(
             &hs,
             (c[0], c[1]),
             &result_point(&result),
             result.status,
             args.seed,
+            ray,
+            result.certificate.as_deref().unwrap_or(&[]),
         )?;
         output::write_atomic(svg, picture.to_svg_string().as_bytes())?;
     }
@@ -214,13 +220,16 @@ fn result_point(r: &LpJson) -> Option<Point2> {
 }
 
 /// The feasible region, the objective direction (an arrow from the optimum, or from the
-/// region's centre), and the optimum.
+/// region's centre), and the optimum; for an unbounded program the ray, for an infeasible
+/// one the certificate's constraint lines (so the reader sees which constraints contradict).
 pub fn lp_picture(
     hs: &[HalfPlane],
     c: (f64, f64),
     point: &Option<Point2>,
     status: &str,
     seed: u64,
+    ray: Option<Vector2>,
+    certificate: &[usize],
 ) -> Result<compgeom::render::Picture, CliError> {
     let region = intersect_halfplanes(hs, seed)?;
     let extra: Vec<Point2> = point.iter().copied().collect();
@@ -244,6 +253,36 @@ pub fn lp_picture(
         )
         .segment(Segment2::new(from, to)),
     );
+    if let (Some(p), Some(d)) = (point, ray) {
+        let len = (d.x * d.x + d.y * d.y).sqrt();
+        if len > 0.0 && len.is_finite() {
+            let end = Point2::new(p.x + d.x / len * r, p.y + d.y / len * r);
+            pic.add(
+                Layer::new(
+                    "ray: the objective grows without bound",
+                    Style::lines("#d62728")
+                        .with_stroke_width(2.0)
+                        .with_dash("6 4"),
+                )
+                .segment(Segment2::new(*p, end)),
+            );
+        }
+    }
+    if !certificate.is_empty() {
+        let lines: Vec<Segment2> = certificate
+            .iter()
+            .filter_map(|&i| hs.get(i))
+            .filter_map(|h| super::halfplanes::line_segment(h, r))
+            .collect();
+        let names: Vec<String> = certificate.iter().map(|i| i.to_string()).collect();
+        pic.add(
+            Layer::new(
+                format!("certificate: constraints {} contradict", names.join(", ")),
+                Style::lines("#d62728").with_stroke_width(2.0),
+            )
+            .segments(&lines),
+        );
+    }
     if let Some(p) = point {
         let label = if status == "optimal" {
             "optimum"

@@ -16,7 +16,7 @@ use compgeom::lp::{
 use compgeom::render::{Layer, Section, Style};
 use compgeom::{Point3, Vector2};
 
-/// Constraints tangent to a circle of radius ~10 at random angles.
+/// Constraints at random angles, each tangent to a circle about the origin of radius 8–10.
 fn tangents(n: usize, seed: u64) -> Vec<HalfPlane> {
     let mut r = Rng::new(seed);
     (0..n)
@@ -66,11 +66,11 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
         Lp2Solution::Optimal { point, value, .. } => (point, value),
         other => return Err(CliError::failure(format!("demo LP not optimal: {other:?}"))),
     };
-    let pic = lp_picture(&hs, c, &Some(point), "optimal", 0)?;
+    let pic = lp_picture(&hs, c, &Some(point), "optimal", 0, None, &[])?;
     section.push(
         demo.figure(
             "lp-2d.svg",
-            "maximize 0.3·x + y over 40 half-planes tangent to a circle",
+            "maximize 0.3·x + y over 40 half-planes tangent to circles of radius 8–10 about the origin",
             &pic,
         )?
         .with_fact("n", "40")

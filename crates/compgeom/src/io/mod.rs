@@ -107,7 +107,7 @@ use crate::kernel::{MultiPolygon, Point2, Point3, Polygon, Segment2};
 use crate::{Error, Result};
 use std::path::Path;
 
-pub use off::{read_off, write_off, Polyhedron};
+pub use off::{read_off, read_off_with_lines, write_off, Polyhedron};
 pub use orient::ring_orientation;
 pub use write::{format_f64, write_points3, write_segments};
 

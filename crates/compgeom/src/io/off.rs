@@ -41,12 +41,27 @@ pub struct Polyhedron {
 /// assert!(err.to_string().contains("bad.off:4"));
 /// ```
 pub fn read_off(text: &str, source: &str) -> Result<Polyhedron> {
+    read_off_with_lines(text, source).map(|(p, _)| p)
+}
+
+/// As [`read_off`], and also the 1-based line of each face, so that later checks of the
+/// surface (e.g. [`castability_at`](crate::lp::castability_at)) can name the line of a
+/// bad face.
+///
+/// ```
+/// use compgeom::io::read_off_with_lines;
+/// let tetra = "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n\n3 0 3 2\n3 1 2 3\n";
+/// let (p, lines) = read_off_with_lines(tetra, "tetra.off").unwrap();
+/// assert_eq!(p.faces.len(), 4);
+/// assert_eq!(lines, vec![7, 8, 10, 11]);
+/// ```
+pub fn read_off_with_lines(text: &str, source: &str) -> Result<(Polyhedron, Vec<usize>)> {
     let err = |message: String, line: usize| Error::parse(message, Location::new(source, line));
     let mut lines = significant_lines(text);
     let last_line = text.lines().count().max(1);
 
     let Some((header_line, header)) = lines.next() else {
-        return Ok(Polyhedron::default()); // empty input: nothing, not an error
+        return Ok((Polyhedron::default(), Vec::new())); // empty input: nothing, not an error
     };
     let mut header_fields = header.split_whitespace();
     if header_fields.next() != Some("OFF") {
@@ -108,6 +123,7 @@ pub fn read_off(text: &str, source: &str) -> Result<Polyhedron> {
     }
 
     let mut faces = Vec::with_capacity(nf.min(1 << 20));
+    let mut face_lines = Vec::with_capacity(nf.min(1 << 20));
     for k in 0..nf {
         let (line, s) = lines.next().ok_or_else(|| {
             err(
@@ -163,6 +179,7 @@ pub fn read_off(text: &str, source: &str) -> Result<Polyhedron> {
             parse_number(f, 2 + n + j).map_err(|m| err(format!("face {k} colour: {m}"), line))?;
         }
         faces.push(face);
+        face_lines.push(line);
     }
     if let Some((line, s)) = lines.next() {
         return Err(err(
@@ -170,7 +187,7 @@ pub fn read_off(text: &str, source: &str) -> Result<Polyhedron> {
             line,
         ));
     }
-    Ok(Polyhedron { vertices, faces })
+    Ok((Polyhedron { vertices, faces }, face_lines))
 }
 
 /// `p` as OFF text (edge count written as 0, as most writers do); reads back with

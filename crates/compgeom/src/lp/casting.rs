@@ -30,7 +30,7 @@ use super::exact::{rat, to_f64};
 use super::lpd::{run_fast_then_exact, Exact};
 use super::Shuffler;
 use crate::io::Polyhedron;
-use crate::{Error, Result};
+use crate::{Error, Location, Result};
 use num_bigint::BigInt;
 use num_rational::BigRational as Q;
 use num_traits::{Signed, Zero};
@@ -71,8 +71,16 @@ fn dot(a: &V3, b: &V3) -> Q {
 }
 
 /// Check the surface and return each face's exact outward normal (twice its vector area).
-pub(crate) fn check_closed_manifold(p: &Polyhedron) -> Result<Vec<[Q; 3]>> {
+/// `at(f)` is where face `f` was read, if known: errors about a face then name that line.
+pub(crate) fn check_closed_manifold(
+    p: &Polyhedron,
+    at: &dyn Fn(usize) -> Option<Location>,
+) -> Result<Vec<[Q; 3]>> {
     let bad = |m: String| Err(Error::InvalidInput(m));
+    let bad_face = |f: usize, m: String| match at(f) {
+        Some(location) => Err(Error::parse(m, location)),
+        None => Err(Error::InvalidInput(m)),
+    };
     if p.faces.len() < 4 {
         return bad(format!(
             "a closed polyhedron needs at least 4 faces, found {}",
@@ -100,25 +108,35 @@ pub(crate) fn check_closed_manifold(p: &Polyhedron) -> Result<Vec<[Q; 3]>> {
         for k in 0..face.len() {
             let (u, v) = (face[k], face[(k + 1) % face.len()]);
             if u >= p.vertices.len() || v >= p.vertices.len() {
-                return bad(format!("face {f} uses a vertex index out of range"));
+                return bad_face(f, format!("face {f} uses a vertex index out of range"));
             }
             if u == v {
-                return bad(format!("face {f} repeats vertex {u}"));
+                return bad_face(f, format!("face {f} repeats vertex {u}"));
             }
             if let Some(g) = edges.insert((u, v), f) {
-                return bad(format!(
-                    "edge {u}-{v} is used in the same direction by faces {g} and {f}: the \
-                     surface is not a consistently oriented 2-manifold"
-                ));
+                return bad_face(
+                    f,
+                    format!(
+                        "edge {u}-{v} is used in the same direction by faces {g} and {f}: the \
+                         surface is not a consistently oriented 2-manifold"
+                    ),
+                );
             }
         }
     }
-    for (&(u, v), &f) in &edges {
-        if !edges.contains_key(&(v, u)) {
-            return bad(format!(
-                "edge {u}-{v} of face {f} has no opposite face: the surface is not closed \
-                 (or not consistently oriented)"
-            ));
+    // Faces in input order (not the map's order), so the same file gives the same message.
+    for (f, face) in p.faces.iter().enumerate() {
+        for k in 0..face.len() {
+            let (u, v) = (face[k], face[(k + 1) % face.len()]);
+            if !edges.contains_key(&(v, u)) {
+                return bad_face(
+                    f,
+                    format!(
+                        "edge {u}-{v} of face {f} has no opposite face: the surface is not \
+                         closed (or not consistently oriented)"
+                    ),
+                );
+            }
         }
     }
     let pt = |i: usize| -> V3 {
@@ -137,12 +155,12 @@ pub(crate) fn check_closed_manifold(p: &Polyhedron) -> Result<Vec<[Q; 3]>> {
             }
         }
         if n.iter().all(|x| x.is_zero()) {
-            return bad(format!("face {f} has zero area"));
+            return bad_face(f, format!("face {f} has zero area"));
         }
         let o = pt(face[0]);
         let h = dot(&n, &o);
         if face.iter().any(|&i| dot(&n, &pt(i)) != h) {
-            return bad(format!("face {f} is not planar"));
+            return bad_face(f, format!("face {f} is not planar"));
         }
         volume += h;
         normals.push(n);
@@ -177,7 +195,32 @@ pub(crate) fn check_closed_manifold(p: &Polyhedron) -> Result<Vec<[Q; 3]>> {
 /// # Ok::<(), compgeom::Error>(())
 /// ```
 pub fn castability(p: &Polyhedron) -> Result<Castability> {
-    let normals = check_closed_manifold(p)?;
+    castability_with(p, &|_| None)
+}
+
+/// As [`castability`], for a polyhedron read from `source` with each face's line
+/// ([`read_off_with_lines`](crate::io::read_off_with_lines)): an error about one face
+/// ([`Error::Parse`]) names the file and that face's line.
+///
+/// ```
+/// use compgeom::io::read_off_with_lines;
+/// use compgeom::lp::castability_at;
+/// // A cube without its top face: open.
+/// let open = "OFF\n8 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n\
+///             4 0 3 2 1\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+/// let (p, lines) = read_off_with_lines(open, "open.off")?;
+/// let err = castability_at(&p, "open.off", &lines).unwrap_err().to_string();
+/// assert!(err.contains("(open.off:12)"), "{err}");
+/// # Ok::<(), compgeom::Error>(())
+/// ```
+pub fn castability_at(p: &Polyhedron, source: &str, face_lines: &[usize]) -> Result<Castability> {
+    castability_with(p, &|f| {
+        face_lines.get(f).map(|&line| Location::new(source, line))
+    })
+}
+
+fn castability_with(p: &Polyhedron, at: &dyn Fn(usize) -> Option<Location>) -> Result<Castability> {
+    let normals = check_closed_manifold(p, at)?;
     let facets: Vec<Facet> = normals.iter().map(Facet::new).collect();
     let mut top_facets = Vec::new();
     for t in 0..normals.len() {

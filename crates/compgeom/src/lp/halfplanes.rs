@@ -69,9 +69,10 @@ pub struct Region {
     /// segment: its two ends; for a ray: its apex; for a line: none.
     pub vertices: Vec<Point2>,
     /// The input constraints whose lines carry the boundary, in boundary order (for a
-    /// polygon, constraint `k` runs from `vertices[k]` to `vertices[k + 1]`; for a point,
-    /// segment or ray, the constraints that cut off its ends are listed too, each before
-    /// the edge leaving that end).
+    /// polygon, constraint `k` runs from `vertices[k]` to `vertices[k + 1]`; for a segment
+    /// or ray, the constraints that cut off its ends are listed too, each before the edge
+    /// leaving that end). For a point: two constraints whose lines meet there — together
+    /// they need not pin the point down, and which two may differ between the algorithms.
     pub constraints: Vec<usize>,
     /// The whole boundary as corners `base + M·dir` of the region clipped to the symbolic
     /// box (`dir` zero for finite corners), counter-clockwise. Used for drawing.

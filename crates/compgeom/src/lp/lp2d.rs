@@ -803,6 +803,8 @@ fn unbounded(
     let (x, y) = (&x0 + &m * &x1, &y0 + &m * &y1);
     Lp2Solution::Unbounded {
         point: Point2::new(to_f64(&x), to_f64(&y)),
-        direction,
+        // A line direction `(-b, a)` can carry a negative zero; `+ 0.0` makes it `0.0`
+        // (and changes nothing else), so output does not show `-0.0`.
+        direction: Vector2::new(direction.x + 0.0, direction.y + 0.0),
     }
 }

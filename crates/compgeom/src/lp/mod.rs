@@ -51,7 +51,7 @@ mod seidel;
 mod slope_sort;
 mod verify;
 
-pub use casting::{castability, Castability, TopFacet};
+pub use casting::{castability, castability_at, Castability, TopFacet};
 pub use enclosing_disc::{smallest_enclosing_disc, verify_enclosing_disc, Disc};
 pub use halfplanes::{intersect_halfplanes, intersect_halfplanes_incremental, Region, RegionKind};
 pub use halfplanes_dc::{intersect_halfplanes_dc, intersect_halfplanes_dc_leaf};

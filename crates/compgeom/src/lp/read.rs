@@ -58,12 +58,15 @@ pub fn read_constraints(text: &str, source: &str, fields: Option<usize>) -> Resu
             ));
         }
         if row.len() != n {
+            // Name the fields the way the user writes them for the dimension at hand.
+            let form = match n - 1 {
+                1 => "a c, meaning a·x <= c".to_string(),
+                2 => "a b c, meaning a·x + b·y <= c".to_string(),
+                3 => "a1 a2 a3 c, meaning a1·x1 + a2·x2 + a3·x3 <= c".to_string(),
+                d => format!("a1 .. a{d} c, meaning a1·x1 + .. + a{d}·x{d} <= c"),
+            };
             return Err(Error::parse(
-                format!(
-                    "expected {n} numbers (a1 .. a{} c, meaning a·x <= c), found {}",
-                    n - 1,
-                    row.len()
-                ),
+                format!("expected {n} numbers ({form}), found {}", row.len()),
                 loc(),
             ));
         }
