@@ -15,23 +15,46 @@ use super::mesh::{Found, Mesh};
 use super::pred::orient;
 use crate::Point2;
 
-/// Hilbert index of (x, y) on a 2^16 grid.
-fn hilbert(mut x: u32, mut y: u32) -> u32 {
-    let n: u32 = 1 << 16;
+/// One level of the Hilbert curve as a state machine. The state says how the coordinate
+/// bits below the current level are transformed before they are read: bit 0 = swap x and
+/// y, bit 1 = complement both. Reading the raw bits `(bx, by)` of a level gives the
+/// transformed bits `(tx, ty)`, the curve digit `(3 tx) ^ ty` (the quadrant's rank along
+/// the curve), and the next state: quadrants with `ty = 0` swap the axes below, and the
+/// one with `tx = 1` also complements them (the classic xy→d recursion, one level).
+const fn hilbert_level(state: u8, bx: u8, by: u8) -> (u8, u8) {
+    let (sw, cm) = (state & 1, state >> 1);
+    let (tx, ty) = if sw == 1 { (by ^ cm, bx ^ cm) } else { (bx ^ cm, by ^ cm) };
+    let digit = (3 * tx) ^ ty;
+    let (sw, cm) = if ty == 0 { (sw ^ 1, cm ^ tx) } else { (sw, cm) };
+    (digit, sw | (cm << 1))
+}
+
+/// Two levels at once: entry `state << 4 | bx << 2 | by` (two bits of each coordinate)
+/// holds the two digits (4 bits) and, above them, the next state.
+const HILBERT2: [u8; 64] = {
+    let mut table = [0u8; 64];
+    let mut e = 0;
+    while e < 64 {
+        let (state, bx, by) = ((e >> 4) as u8, ((e >> 2) & 3) as u8, (e & 3) as u8);
+        let (d1, s1) = hilbert_level(state, bx >> 1, by >> 1);
+        let (d0, s0) = hilbert_level(s1, bx & 1, by & 1);
+        table[e] = (d1 << 2) | d0 | (s0 << 4);
+        e += 1;
+    }
+    table
+};
+
+/// Hilbert index of (x, y) on a 2^16 grid (x, y < 2^16), two levels per table look-up.
+#[inline]
+fn hilbert(x: u32, y: u32) -> u32 {
+    let mut state = 0u32;
     let mut d = 0u32;
-    let mut s = n >> 1;
-    while s > 0 {
-        let rx = u32::from(x & s > 0);
-        let ry = u32::from(y & s > 0);
-        d = d.wrapping_add(s.wrapping_mul(s).wrapping_mul((3 * rx) ^ ry));
-        if ry == 0 {
-            if rx == 1 {
-                x = s.wrapping_sub(1).wrapping_sub(x) & (n - 1);
-                y = s.wrapping_sub(1).wrapping_sub(y) & (n - 1);
-            }
-            std::mem::swap(&mut x, &mut y);
-        }
-        s >>= 1;
+    let mut shift = 16;
+    while shift > 0 {
+        shift -= 2;
+        let e = HILBERT2[((state << 4) | (((x >> shift) & 3) << 2) | ((y >> shift) & 3)) as usize];
+        d = (d << 4) | u32::from(e & 15);
+        state = u32::from(e >> 4);
     }
     d
 }
@@ -48,17 +71,49 @@ pub(crate) fn hilbert_order(pts: &[Point2]) -> Vec<u32> {
     // Scale in two steps so that extreme ranges (up to ±f64::MAX) do not overflow.
     let w = (x1 / 2.0 - x0 / 2.0).max(f64::MIN_POSITIVE);
     let h = (y1 / 2.0 - y0 / 2.0).max(f64::MIN_POSITIVE);
+    // `as u32` truncates (= floor here, the value being >= 0 up to rounding; a tiny
+    // negative one truncates to 0 as the clamp would) and saturates an infinite quotient.
     let q = |v: f64, lo: f64, span: f64| -> u32 {
-        let t = ((v / 2.0 - lo / 2.0) / span * 65535.0).floor();
-        t.clamp(0.0, 65535.0) as u32
+        (((v / 2.0 - lo / 2.0) / span * 65535.0) as u32).min(65535)
     };
-    let mut keys: Vec<u64> = pts
+    let keys: Vec<u64> = pts
         .iter()
         .enumerate()
         .map(|(i, p)| (u64::from(hilbert(q(p.x, x0, w), q(p.y, y0, h))) << 32) | i as u64)
         .collect();
-    keys.sort_unstable();
-    keys.into_iter().map(|k| k as u32).collect()
+    radix_sort_high(keys).into_iter().map(|k| k as u32).collect()
+}
+
+/// Sorts keys by their high 32 bits with a stable LSD radix sort (three passes of 11 bits),
+/// so equal high halves keep their input order: the low halves here are the increasing
+/// input indices, and the result equals a full sort of the `u64` keys. O(n), against the
+/// O(n log n) comparisons of a comparison sort.
+fn radix_sort_high(mut keys: Vec<u64>) -> Vec<u64> {
+    if keys.len() < 256 {
+        keys.sort_unstable();
+        return keys;
+    }
+    let mut buf = vec![0u64; keys.len()];
+    for pass in 0..3 {
+        let shift = 32 + 11 * pass;
+        let mut count = [0usize; 2048];
+        for &k in &keys {
+            count[((k >> shift) & 2047) as usize] += 1;
+        }
+        let mut sum = 0;
+        for c in count.iter_mut() {
+            let n = *c;
+            *c = sum;
+            sum += n;
+        }
+        for &k in &keys {
+            let slot = &mut count[((k >> shift) & 2047) as usize];
+            buf[*slot] = k;
+            *slot += 1;
+        }
+        std::mem::swap(&mut keys, &mut buf);
+    }
+    keys
 }
 
 /// Triangulates `pts` (finite, at most `u32::MAX - 1` of them). Returns the mesh (or `None`
@@ -126,4 +181,76 @@ pub(crate) fn dedup_sorted(pts: &[Point2], mut rep: Vec<u32>) -> Vec<u32> {
         k = m;
     }
     rep
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The textbook xy→d recursion on a 2^16 grid, one level per step (the reference the
+    /// table-driven `hilbert` must reproduce exactly, so the insertion order is unchanged).
+    fn hilbert_reference(mut x: u32, mut y: u32) -> u32 {
+        let n: u32 = 1 << 16;
+        let mut d = 0u32;
+        let mut s = n >> 1;
+        while s > 0 {
+            let rx = u32::from(x & s > 0);
+            let ry = u32::from(y & s > 0);
+            d = d.wrapping_add(s.wrapping_mul(s).wrapping_mul((3 * rx) ^ ry));
+            if ry == 0 {
+                if rx == 1 {
+                    x = s.wrapping_sub(1).wrapping_sub(x) & (n - 1);
+                    y = s.wrapping_sub(1).wrapping_sub(y) & (n - 1);
+                }
+                std::mem::swap(&mut x, &mut y);
+            }
+            s >>= 1;
+        }
+        d
+    }
+
+    #[test]
+    fn table_hilbert_matches_the_reference_recursion() {
+        let mut s = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 40) as u32 & 0xFFFF
+        };
+        for _ in 0..100_000 {
+            let (x, y) = (next(), next());
+            assert_eq!(hilbert(x, y), hilbert_reference(x, y), "({x}, {y})");
+        }
+        for x in (0..65536).step_by(257).chain([0, 1, 65534, 65535]) {
+            for y in [0, 1, 2, 3, 255, 256, 32767, 32768, 65535] {
+                assert_eq!(hilbert(x, y), hilbert_reference(x, y), "({x}, {y})");
+            }
+        }
+        // A bijection on a small grid at the top levels: 4^2 distinct consecutive ranks.
+        let mut seen: Vec<u32> = (0..4u32)
+            .flat_map(|i| (0..4u32).map(move |j| hilbert(i << 14, j << 14) >> 28))
+            .collect();
+        seen.sort_unstable();
+        assert_eq!(seen, (0..16).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn radix_sort_equals_a_full_sort() {
+        let mut s = 12345u64;
+        for n in [0usize, 1, 255, 256, 257, 5000] {
+            let keys: Vec<u64> = (0..n as u64)
+                .map(|i| {
+                    s ^= s << 13;
+                    s ^= s >> 7;
+                    s ^= s << 17;
+                    // Few distinct high halves, so ties (broken by the index) are common.
+                    ((s % 97) << 32 | (s >> 20) % 3 << 50) | i
+                })
+                .collect();
+            let mut want = keys.clone();
+            want.sort_unstable();
+            assert_eq!(radix_sort_high(keys), want);
+        }
+    }
 }

@@ -200,6 +200,9 @@ impl<'a> Mesh<'a> {
 
     /// The visibility walk of [`Mesh::locate`], giving up (`None`) after `max_steps`.
     fn walk(&self, p: Point2, max_steps: u64) -> Option<Found> {
+        // Plain slices: the hot loop then pays no `Cow` dispatch per point read.
+        let pts: &[Point2] = &self.pts;
+        let (v, twin) = (&self.v[..], &self.twin[..]);
         let mut steps = 0u64;
         let mut t = self.last;
         if self.is_ghost(t) {
@@ -212,27 +215,34 @@ impl<'a> Mesh<'a> {
         let mut rot = 0u32;
         loop {
             let base = 3 * t;
+            let b3 = base as usize;
+            // `t` is real here, so all three vertices are points.
+            let tri = [v[b3], v[b3 + 1], v[b3 + 2]];
             let mut zero_mask = 0u32;
             let mut moved = false;
-            for k in 0..3 {
-                let h = base + (k + rot) % 3;
+            for k in 0..3u32 {
+                let mut e = k + rot;
+                if e >= 3 {
+                    e -= 3;
+                }
+                let h = base + e;
                 if h == from {
                     continue;
                 }
-                let a = self.v[h as usize];
-                let b = self.v[next(h) as usize];
-                let s = orient(self.pt(a), self.pt(b), p);
+                let a = tri[e as usize];
+                let b = tri[if e == 2 { 0 } else { e as usize + 1 }];
+                let s = orient(pts[a as usize], pts[b as usize], p);
                 if s < 0 {
-                    let g = self.twin[h as usize];
+                    let g = twin[h as usize];
                     t = g / 3;
                     from = g;
                     moved = true;
                     break;
                 } else if s == 0 {
-                    zero_mask |= 1 << (h - base);
+                    zero_mask |= 1 << e;
                 }
             }
-            rot = (rot + 1) % 3;
+            rot = if rot == 2 { 0 } else { rot + 1 };
             if !moved {
                 return Some(self.classify(base, zero_mask));
             }
@@ -368,13 +378,15 @@ impl<'a> Mesh<'a> {
         let pp = self.pt(p);
         while let Some(h) = self.stack.pop() {
             let f = self.twin[h as usize];
-            let a = self.v[h as usize];
-            let b = self.v[next(h) as usize];
-            let d = self.v[prev(f) as usize];
+            let e = Corners::of(h);
+            let g = Corners::of(f);
+            let a = self.v[e.h as usize];
+            let b = self.v[e.next as usize];
+            let d = self.v[g.prev as usize];
             if d == GHOST || fixed(a, b) || !self.inside(b, a, d, pp) {
                 continue;
             }
-            self.flip(h);
+            self.flip_at(e, g);
             let (t, u) = (h / 3, f / 3);
             self.stack.push(3 * t + 1);
             self.stack.push(3 * u + 1);
@@ -385,26 +397,64 @@ impl<'a> Mesh<'a> {
     /// triangle `(b, a, d)`) into `(p, a, d)`, `(p, d, b)`, reusing both slots.
     pub(crate) fn flip(&mut self, h: u32) {
         let f = self.twin[h as usize];
-        let (t, u) = (h / 3, f / 3);
+        self.flip_at(Corners::of(h), Corners::of(f));
+    }
+
+    /// [`Mesh::flip`] with the corners of `h` and of its twin already computed.
+    #[inline(always)]
+    fn flip_at(&mut self, e: Corners, g: Corners) {
+        let (h, f) = (e.h, g.h);
+        let (t, u) = (e.base / 3, g.base / 3);
         let a = self.v[h as usize];
-        let b = self.v[next(h) as usize];
-        let p = self.v[prev(h) as usize];
-        let d = self.v[prev(f) as usize];
-        let tw_pa = self.twin[prev(h) as usize];
-        let tw_bp = self.twin[next(h) as usize];
-        let tw_ad = self.twin[next(f) as usize];
-        let tw_db = self.twin[prev(f) as usize];
+        let b = self.v[e.next as usize];
+        let p = self.v[e.prev as usize];
+        let d = self.v[g.prev as usize];
+        let tw_pa = self.twin[e.prev as usize];
+        let tw_bp = self.twin[e.next as usize];
+        let tw_ad = self.twin[g.next as usize];
+        let tw_db = self.twin[g.prev as usize];
+        debug_assert_eq!(self.twin[f as usize], h);
         self.set(t, p, a, d);
         self.set(u, p, d, b);
-        self.link(3 * t, tw_pa);
-        self.link(3 * t + 1, tw_ad);
-        self.link(3 * t + 2, 3 * u);
-        self.link(3 * u + 1, tw_db);
-        self.link(3 * u + 2, tw_bp);
-        if !self.is_ghost(t) {
+        let (t3, u3) = (e.base, g.base);
+        self.link(t3, tw_pa);
+        self.link(t3 + 1, tw_ad);
+        self.link(t3 + 2, u3);
+        self.link(u3 + 1, tw_db);
+        self.link(u3 + 2, tw_bp);
+        // Keep a real triangle as the walk start (`is_ghost` of the new triples, inlined).
+        if a != GHOST && d != GHOST && p != GHOST {
             self.last = t;
-        } else if !self.is_ghost(u) {
+        } else if d != GHOST && b != GHOST && p != GHOST {
             self.last = u;
+        }
+    }
+}
+
+/// A half-edge with its triangle's first half-edge and its two companions, computed with
+/// one division (the `% 3` of `next`/`prev` is the costly part of the flip loop).
+#[derive(Clone, Copy)]
+pub(crate) struct Corners {
+    h: u32,
+    base: u32,
+    next: u32,
+    prev: u32,
+}
+
+impl Corners {
+    #[inline(always)]
+    fn of(h: u32) -> Self {
+        let base = h - h % 3;
+        let (next, prev) = match h - base {
+            0 => (base + 1, base + 2),
+            1 => (base + 2, base),
+            _ => (base, base + 1),
+        };
+        Corners {
+            h,
+            base,
+            next,
+            prev,
         }
     }
 }

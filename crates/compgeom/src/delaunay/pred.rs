@@ -148,10 +148,16 @@ pub(crate) fn area_above(a: Point2, b: Point2, c: Point2, twice: f64) -> bool {
     exact_sign!(area_det(a, b, c, twice)) == Ordering::Greater
 }
 
-/// True when every coordinate is an integer.
+/// True only when every coordinate is an integer (of magnitude at most 2^63; larger
+/// integers answer `false`, which merely sends the caller to the general exact path).
+///
+/// `v as i64` truncates towards zero and saturates, so `(v as i64) as f64 == v` holds exactly
+/// for the integers in [-2^63, 2^63] and fails for every other value (NaN gives 0). It is two
+/// conversions, where `f64::trunc` is a library call on the baseline x86-64 target.
 #[inline(always)]
 fn integral(p: &[Point2]) -> bool {
-    p.iter().all(|p| p.x == p.x.trunc() && p.y == p.y.trunc())
+    p.iter()
+        .all(|p| (p.x as i64) as f64 == p.x && (p.y as i64) as f64 == p.y)
 }
 
 /// True when `q` lies strictly between `a` and `b` on their (common) line; the caller
