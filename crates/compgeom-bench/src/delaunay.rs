@@ -7,7 +7,7 @@
 //! every library must report the same number of triangles (the count is unique, even on
 //! the cocircular grid).
 
-use crate::util::{best_of, ms, Rng};
+use crate::util::{alternate, best_of, median, ms, Rng};
 use compgeom::delaunay::{
     constrained_delaunay, delaunay, delaunay_with, polygon_delaunay, verify_delaunay,
     DelaunayAlgorithm, DelaunayOptions,
@@ -23,6 +23,8 @@ struct Row {
     book: Duration,
     spade: Duration,
     delaunator: Duration,
+    /// Median over the rounds of (default / fastest peer in the same round).
+    median_ratio: f64,
 }
 
 fn uniform(n: usize, seed: u64) -> Vec<Point2> {
@@ -65,13 +67,33 @@ fn measure(name: String, pts: &[Point2], runs: usize, verify: bool) -> Result<Ro
         ));
     }
 
+    // The four alternate within each round (see `alternate`); best of the rounds each.
+    let times = alternate(
+        runs,
+        &mut [
+            &mut || drop(std::hint::black_box(delaunay(pts))),
+            &mut || drop(std::hint::black_box(delaunay_with(pts, &book_opts))),
+            &mut || {
+                drop(std::hint::black_box(spade::DelaunayTriangulation::<
+                    spade::Point2<f64>,
+                >::bulk_load(sp.clone())))
+            },
+            &mut || drop(std::hint::black_box(delaunator::triangulate(&dl))),
+        ],
+    );
+    let best = |k: usize| times.iter().map(|r| r[k]).min().unwrap_or_default();
+    let median_ratio = median(
+        times
+            .iter()
+            .map(|r| ms(r[0]) / ms(r[2].min(r[3])))
+            .collect(),
+    );
     Ok(Row {
-        default: best_of(runs, || delaunay(pts)),
-        book: best_of(runs, || delaunay_with(pts, &book_opts)),
-        spade: best_of(runs, || {
-            spade::DelaunayTriangulation::<spade::Point2<f64>>::bulk_load(sp.clone())
-        }),
-        delaunator: best_of(runs, || delaunator::triangulate(&dl)),
+        default: best(0),
+        book: best(1),
+        spade: best(2),
+        delaunator: best(3),
+        median_ratio,
         name,
         n: pts.len(),
     })
@@ -84,21 +106,24 @@ pub fn run(quick: bool) -> Result<(), String> {
     } else {
         (100_000, 1_000_000, 1000)
     };
-    let runs = if quick { 2 } else { 3 };
+    let runs = std::env::var("COMPGEOM_BENCH_RUNS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(if quick { 2 } else { 3 });
     let rows = [
         measure(format!("uniform {small}"), &uniform(small, 1), runs, true)?,
         measure(format!("uniform {large}"), &uniform(large, 2), runs, !quick)?,
         measure(format!("grid {side}x{side}"), &grid(side), runs, true)?,
     ];
-    println!("Delaunay: times in ms (best of {runs}); ratio = compgeom default / fastest peer (< 1 = compgeom faster)");
+    println!("Delaunay: times in ms (best of {runs} alternating rounds); ratio = compgeom default / fastest peer (< 1 = compgeom faster), of the best times and the median of the per-round ratios");
     println!(
-        "{:<18} {:>9} {:>10} {:>10} {:>10} {:>11} {:>7} {:>10}",
-        "input", "n", "default", "book", "spade", "delaunator", "ratio", "book/def"
+        "{:<18} {:>9} {:>10} {:>10} {:>10} {:>11} {:>7} {:>7} {:>10}",
+        "input", "n", "default", "book", "spade", "delaunator", "ratio", "median", "book/def"
     );
     for r in &rows {
         let peer = r.spade.min(r.delaunator);
         println!(
-            "{:<18} {:>9} {:>10.1} {:>10.1} {:>10.1} {:>11.1} {:>7.2} {:>10.2}",
+            "{:<18} {:>9} {:>10.1} {:>10.1} {:>10.1} {:>11.1} {:>7.2} {:>7.2} {:>10.2}",
             r.name,
             r.n,
             ms(r.default),
@@ -106,6 +131,7 @@ pub fn run(quick: bool) -> Result<(), String> {
             ms(r.spade),
             ms(r.delaunator),
             ms(r.default) / ms(peer),
+            r.median_ratio,
             ms(r.book) / ms(r.default)
         );
     }

@@ -59,8 +59,9 @@ fn hilbert(x: u32, y: u32) -> u32 {
     d
 }
 
-/// The input indices in Hilbert order (ties by index, so the order is deterministic).
-pub(crate) fn hilbert_order(pts: &[Point2]) -> Vec<u32> {
+/// `hilbert << 32 | index` for every point, sorted: the Hilbert order with ties by index.
+/// Equal points (`==`, so `-0.0` and `0.0` too) get equal Hilbert indices.
+fn hilbert_keys(pts: &[Point2]) -> Vec<u64> {
     let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
     for p in pts {
         x0 = x0.min(p.x);
@@ -81,7 +82,12 @@ pub(crate) fn hilbert_order(pts: &[Point2]) -> Vec<u32> {
         .enumerate()
         .map(|(i, p)| (u64::from(hilbert(q(p.x, x0, w), q(p.y, y0, h))) << 32) | i as u64)
         .collect();
-    radix_sort_high(keys).into_iter().map(|k| k as u32).collect()
+    radix_sort_high(keys)
+}
+
+/// The input indices in Hilbert order (ties by index, so the order is deterministic).
+pub(crate) fn hilbert_order(pts: &[Point2]) -> Vec<u32> {
+    hilbert_keys(pts).into_iter().map(|k| k as u32).collect()
 }
 
 /// Sorts keys by their high 32 bits with a stable LSD radix sort (three passes of 11 bits),
@@ -135,14 +141,14 @@ pub(crate) fn triangulate(pts: &[Point2]) -> (Option<Mesh<'_>>, Vec<u32>) {
         .iter()
         .position(|&i| pts[i as usize] != pts[a as usize])
     else {
-        return (None, dedup_sorted(pts, rep));
+        return (None, dedup(pts));
     };
     let b = order[ib];
     let Some(ic) = order[ib + 1..]
         .iter()
         .position(|&i| orient(pts[a as usize], pts[b as usize], pts[i as usize]) != 0)
     else {
-        return (None, dedup_sorted(pts, rep));
+        return (None, dedup(pts));
     };
     let ic = ib + 1 + ic;
     let c = order[ic];
@@ -164,8 +170,48 @@ pub(crate) fn triangulate(pts: &[Point2]) -> (Option<Mesh<'_>>, Vec<u32>) {
     (Some(mesh), rep)
 }
 
-/// For degenerate input (no triangles): merge equal points by sorting.
-pub(crate) fn dedup_sorted(pts: &[Point2], mut rep: Vec<u32>) -> Vec<u32> {
+/// Merges equal points (`==`): every input index mapped to the smallest index of a point
+/// equal to it. Equal points have equal Hilbert indices, so only runs of equal keys in the
+/// (radix-sorted, O(n)) Hilbert order can hold duplicates; each such run is sorted
+/// lexicographically and split into groups of equal points. O(n) plus the sorts of the
+/// runs (tiny unless very many points share one of the 2^32 grid cells).
+pub(crate) fn dedup(pts: &[Point2]) -> Vec<u32> {
+    let mut rep: Vec<u32> = (0..pts.len() as u32).collect();
+    let keys = hilbert_keys(pts);
+    let mut run: Vec<u32> = Vec::new();
+    let mut k = 0;
+    while k < keys.len() {
+        let cell = keys[k] >> 32;
+        let mut m = k + 1;
+        while m < keys.len() && keys[m] >> 32 == cell {
+            m += 1;
+        }
+        if m - k > 1 {
+            run.clear();
+            run.extend(keys[k..m].iter().map(|&key| key as u32));
+            run.sort_by(|&i, &j| {
+                crate::kernel::compare_xy(pts[i as usize], pts[j as usize]).then(i.cmp(&j))
+            });
+            let mut g = 0;
+            while g < run.len() {
+                let first = run[g];
+                let mut e = g;
+                while e < run.len() && pts[run[e] as usize] == pts[first as usize] {
+                    rep[run[e] as usize] = first;
+                    e += 1;
+                }
+                g = e;
+            }
+        }
+        k = m;
+    }
+    rep
+}
+
+/// The reference for [`dedup`]: one lexicographic sort of everything.
+#[cfg(test)]
+pub(crate) fn dedup_sorted(pts: &[Point2]) -> Vec<u32> {
+    let mut rep: Vec<u32> = (0..pts.len() as u32).collect();
     let mut idx: Vec<u32> = (0..pts.len() as u32).collect();
     idx.sort_by(|&i, &j| {
         crate::kernel::compare_xy(pts[i as usize], pts[j as usize]).then(i.cmp(&j))
@@ -233,6 +279,46 @@ mod tests {
             .collect();
         seen.sort_unstable();
         assert_eq!(seen, (0..16).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn dedup_by_hilbert_runs_equals_dedup_by_sorting() {
+        let mut s = 77u64;
+        let mut r = |m: u64| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            s % m
+        };
+        let mut sets: Vec<Vec<Point2>> = Vec::new();
+        // Small grids (many duplicates), signed zeros, a dense cluster sharing one cell
+        // with a far outlier, tiny and huge scales.
+        for scale in [1.0, 0.5, 1e-300, 1e300, 3.0e-7] {
+            sets.push(
+                (0..3000)
+                    .map(|_| Point2::new(r(9) as f64 * scale, r(7) as f64 * scale))
+                    .collect(),
+            );
+        }
+        sets.push(vec![
+            Point2::new(0.0, -0.0),
+            Point2::new(-0.0, 0.0),
+            Point2::new(1.0, 1.0),
+            Point2::new(-0.0, -0.0),
+        ]);
+        let mut cluster: Vec<Point2> = (0..2000)
+            .map(|_| Point2::new(1.0 + r(5) as f64 * 1e-12, 1.0 + r(3) as f64 * 1e-12))
+            .collect();
+        cluster.push(Point2::new(1e6, -1e6));
+        sets.push(cluster);
+        sets.push(Vec::new());
+        for pts in &sets {
+            let fast = dedup(pts);
+            assert_eq!(fast, dedup_sorted(pts));
+            for (i, &v) in fast.iter().enumerate() {
+                assert!(pts[i] == pts[v as usize] && v as usize <= i);
+            }
+        }
     }
 
     #[test]

@@ -435,15 +435,15 @@ impl<'a> Mesh<'a> {
 /// one division (the `% 3` of `next`/`prev` is the costly part of the flip loop).
 #[derive(Clone, Copy)]
 pub(crate) struct Corners {
-    h: u32,
-    base: u32,
-    next: u32,
-    prev: u32,
+    pub(crate) h: u32,
+    pub(crate) base: u32,
+    pub(crate) next: u32,
+    pub(crate) prev: u32,
 }
 
 impl Corners {
     #[inline(always)]
-    fn of(h: u32) -> Self {
+    pub(crate) fn of(h: u32) -> Self {
         let base = h - h % 3;
         let (next, prev) = match h - base {
             0 => (base + 1, base + 2),
