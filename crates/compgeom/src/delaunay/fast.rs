@@ -12,7 +12,7 @@
 //! an existing vertex is found as `Found::Vertex` and merged.
 
 use super::mesh::{Found, Mesh};
-use super::pred::orient;
+use super::pred::{orient, small_integer_grid};
 use crate::Point2;
 
 /// One level of the Hilbert curve as a state machine. The state says how the coordinate
@@ -157,6 +157,9 @@ pub(crate) fn triangulate(pts: &[Point2]) -> (Option<Mesh<'_>>, Vec<u32>) {
     } else {
         Mesh::new(pts, a, c, b, n)
     };
+    // Integer grids (the common degenerate input, all squares cocircular) make the filters
+    // fail constantly; their exact unfiltered predicates are cheaper still.
+    mesh.grid = small_integer_grid(pts);
     for (k, &i) in order.iter().enumerate() {
         if k == 0 || k == ib || k == ic {
             continue;

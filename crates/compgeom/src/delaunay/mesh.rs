@@ -13,7 +13,7 @@
 //! Vertex ids are indices into the point list (`u32`): the caller's slice, borrowed, or an
 //! owned copy when an operation (constraint crossings, refinement) adds Steiner points.
 
-use super::pred::{in_circle, orient, strictly_between};
+use super::pred::{in_circle, in_circle_grid, orient, orient_grid, strictly_between};
 use crate::Point2;
 use std::borrow::Cow;
 
@@ -61,6 +61,9 @@ pub(crate) struct Mesh<'a> {
     pub(crate) last: u32,
     /// Flip stack, kept to avoid reallocation.
     stack: Vec<u32>,
+    /// Every point is in a [`small_integer_grid`](super::pred::small_integer_grid), so the
+    /// unfiltered grid predicates are exact (set by the builder; cleared by `push_point`).
+    pub(crate) grid: bool,
 }
 
 impl<'a> Mesh<'a> {
@@ -73,6 +76,7 @@ impl<'a> Mesh<'a> {
             twin: Vec::with_capacity(capacity * 6),
             last: 0,
             stack: Vec::new(),
+            grid: false,
         };
         let t = m.add(a, b, c);
         let g_ab = m.add(b, a, GHOST);
@@ -96,12 +100,15 @@ impl<'a> Mesh<'a> {
             twin: Vec::new(),
             last: 0,
             stack: Vec::new(),
+            grid: false,
         }
     }
 
     /// Appends a point (a Steiner point) and returns its vertex id; the mesh owns its
     /// points from then on.
     pub(crate) fn push_point(&mut self, p: Point2) -> u32 {
+        // A Steiner point may leave the grid: back to the filtered predicates.
+        self.grid = false;
         let pts = self.pts.to_mut();
         pts.push(p);
         (pts.len() - 1) as u32
@@ -231,7 +238,12 @@ impl<'a> Mesh<'a> {
                 }
                 let a = tri[e as usize];
                 let b = tri[if e == 2 { 0 } else { e as usize + 1 }];
-                let s = orient(pts[a as usize], pts[b as usize], p);
+                let (pa, pb) = (pts[a as usize], pts[b as usize]);
+                let s = if self.grid {
+                    orient_grid(pa, pb, p)
+                } else {
+                    orient(pa, pb, p)
+                };
                 if s < 0 {
                     let g = twin[h as usize];
                     t = g / 3;
@@ -362,10 +374,20 @@ impl<'a> Mesh<'a> {
         } else if b == GHOST {
             (c, a)
         } else {
-            return in_circle(self.pt(a), self.pt(b), self.pt(c), q) > 0;
+            let (pa, pb, pc) = (self.pt(a), self.pt(b), self.pt(c));
+            return if self.grid {
+                in_circle_grid(pa, pb, pc, q) > 0
+            } else {
+                in_circle(pa, pb, pc, q) > 0
+            };
         };
         let (pu, pw) = (self.pt(u), self.pt(w));
-        match orient(pu, pw, q) {
+        let side = if self.grid {
+            orient_grid(pu, pw, q)
+        } else {
+            orient(pu, pw, q)
+        };
+        match side {
             1 => true,
             0 => strictly_between(pu, pw, q),
             _ => false,
