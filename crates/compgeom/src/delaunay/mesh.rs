@@ -207,6 +207,15 @@ impl<'a> Mesh<'a> {
 
     /// The visibility walk of [`Mesh::locate`], giving up (`None`) after `max_steps`.
     fn walk(&self, p: Point2, max_steps: u64) -> Option<Found> {
+        if self.grid {
+            self.walk_with::<true>(p, max_steps)
+        } else {
+            self.walk_with::<false>(p, max_steps)
+        }
+    }
+
+    /// [`Mesh::walk`] with the grid predicates (`GRID`) or the filtered ones.
+    fn walk_with<const GRID: bool>(&self, p: Point2, max_steps: u64) -> Option<Found> {
         // Plain slices: the hot loop then pays no `Cow` dispatch per point read.
         let pts: &[Point2] = &self.pts;
         let (v, twin) = (&self.v[..], &self.twin[..]);
@@ -239,7 +248,7 @@ impl<'a> Mesh<'a> {
                 let a = tri[e as usize];
                 let b = tri[if e == 2 { 0 } else { e as usize + 1 }];
                 let (pa, pb) = (pts[a as usize], pts[b as usize]);
-                let s = if self.grid {
+                let s = if GRID {
                     orient_grid(pa, pb, p)
                 } else {
                     orient(pa, pb, p)
@@ -312,7 +321,11 @@ impl<'a> Mesh<'a> {
             Found::Edge(h) => self.split_edge(h, p),
             Found::Vertex(_) => {}
         }
-        self.legalize_all(p, fixed);
+        if self.grid {
+            self.legalize_all::<true, F>(p, fixed);
+        } else {
+            self.legalize_all::<false, F>(p, fixed);
+        }
     }
 
     fn split_face(&mut self, t: u32, p: u32) {
@@ -363,55 +376,34 @@ impl<'a> Mesh<'a> {
         self.last = t;
     }
 
-    /// Is `q` strictly inside the circumcircle of triangle `(a, b, c)` (ccw; one of them may
-    /// be the ghost vertex)?
-    #[inline(always)]
-    pub(crate) fn inside(&self, a: u32, b: u32, c: u32, q: Point2) -> bool {
-        let (u, w) = if c == GHOST {
-            (a, b)
-        } else if a == GHOST {
-            (b, c)
-        } else if b == GHOST {
-            (c, a)
-        } else {
-            let (pa, pb, pc) = (self.pt(a), self.pt(b), self.pt(c));
-            return if self.grid {
-                in_circle_grid(pa, pb, pc, q) > 0
-            } else {
-                in_circle(pa, pb, pc, q) > 0
-            };
-        };
-        let (pu, pw) = (self.pt(u), self.pt(w));
-        let side = if self.grid {
-            orient_grid(pu, pw, q)
-        } else {
-            orient(pu, pw, q)
-        };
-        match side {
-            1 => true,
-            0 => strictly_between(pu, pw, q),
-            _ => false,
-        }
-    }
-
     /// LEGALIZEEDGE for every half-edge on the stack (each has the new point `p` opposite).
     #[inline(always)]
-    fn legalize_all<F: Fn(u32, u32) -> bool>(&mut self, p: u32, fixed: F) {
-        let pp = self.pt(p);
-        while let Some(h) = self.stack.pop() {
-            let f = self.twin[h as usize];
+    fn legalize_all<const GRID: bool, F: Fn(u32, u32) -> bool>(&mut self, p: u32, fixed: F) {
+        // Split borrows: the points are read through a plain slice (no `Cow` dispatch per
+        // read) while the flips rewrite the triangle arrays.
+        let Mesh {
+            pts,
+            v,
+            twin,
+            last,
+            stack,
+            ..
+        } = self;
+        let pts: &[Point2] = pts;
+        let pp = pts[p as usize];
+        while let Some(h) = stack.pop() {
+            let f = twin[h as usize];
             let e = Corners::of(h);
             let g = Corners::of(f);
-            let a = self.v[e.h as usize];
-            let b = self.v[e.next as usize];
-            let d = self.v[g.prev as usize];
-            if d == GHOST || fixed(a, b) || !self.inside(b, a, d, pp) {
+            let a = v[e.h as usize];
+            let b = v[e.next as usize];
+            let d = v[g.prev as usize];
+            if d == GHOST || fixed(a, b) || !inside_of::<GRID>(pts, b, a, d, pp) {
                 continue;
             }
-            self.flip_at(e, g);
-            let (t, u) = (h / 3, f / 3);
-            self.stack.push(3 * t + 1);
-            self.stack.push(3 * u + 1);
+            flip_at(v, twin, last, e, g);
+            stack.push(e.base + 1);
+            stack.push(g.base + 1);
         }
     }
 
@@ -419,37 +411,79 @@ impl<'a> Mesh<'a> {
     /// triangle `(b, a, d)`) into `(p, a, d)`, `(p, d, b)`, reusing both slots.
     pub(crate) fn flip(&mut self, h: u32) {
         let f = self.twin[h as usize];
-        self.flip_at(Corners::of(h), Corners::of(f));
+        flip_at(
+            &mut self.v,
+            &mut self.twin,
+            &mut self.last,
+            Corners::of(h),
+            Corners::of(f),
+        );
     }
+}
 
-    /// [`Mesh::flip`] with the corners of `h` and of its twin already computed.
-    #[inline(always)]
-    fn flip_at(&mut self, e: Corners, g: Corners) {
-        let (h, f) = (e.h, g.h);
-        let (t, u) = (e.base / 3, g.base / 3);
-        let a = self.v[h as usize];
-        let b = self.v[e.next as usize];
-        let p = self.v[e.prev as usize];
-        let d = self.v[g.prev as usize];
-        let tw_pa = self.twin[e.prev as usize];
-        let tw_bp = self.twin[e.next as usize];
-        let tw_ad = self.twin[g.next as usize];
-        let tw_db = self.twin[g.prev as usize];
-        debug_assert_eq!(self.twin[f as usize], h);
-        self.set(t, p, a, d);
-        self.set(u, p, d, b);
-        let (t3, u3) = (e.base, g.base);
-        self.link(t3, tw_pa);
-        self.link(t3 + 1, tw_ad);
-        self.link(t3 + 2, u3);
-        self.link(u3 + 1, tw_db);
-        self.link(u3 + 2, tw_bp);
-        // Keep a real triangle as the walk start (`is_ghost` of the new triples, inlined).
-        if a != GHOST && d != GHOST && p != GHOST {
-            self.last = t;
-        } else if d != GHOST && b != GHOST && p != GHOST {
-            self.last = u;
-        }
+/// Is `q` strictly inside the circumcircle of triangle `(a, b, c)` (ccw; one of them may
+/// be the ghost vertex, whose circle is the half-plane left of the other two)? With the
+/// grid predicates when `GRID` (see [`Mesh::grid`]).
+#[inline(always)]
+fn inside_of<const GRID: bool>(pts: &[Point2], a: u32, b: u32, c: u32, q: Point2) -> bool {
+    let (u, w) = if c == GHOST {
+        (a, b)
+    } else if a == GHOST {
+        (b, c)
+    } else if b == GHOST {
+        (c, a)
+    } else {
+        let (pa, pb, pc) = (pts[a as usize], pts[b as usize], pts[c as usize]);
+        return if GRID {
+            in_circle_grid(pa, pb, pc, q) > 0
+        } else {
+            in_circle(pa, pb, pc, q) > 0
+        };
+    };
+    let (pu, pw) = (pts[u as usize], pts[w as usize]);
+    let side = if GRID {
+        orient_grid(pu, pw, q)
+    } else {
+        orient(pu, pw, q)
+    };
+    match side {
+        1 => true,
+        0 => strictly_between(pu, pw, q),
+        _ => false,
+    }
+}
+
+/// [`Mesh::flip`] over the parts of a mesh, with the corners of `h` and of its twin
+/// already computed.
+#[inline(always)]
+fn flip_at(v: &mut [u32], twin: &mut [u32], last: &mut u32, e: Corners, g: Corners) {
+    let (h, f) = (e.h, g.h);
+    let a = v[h as usize];
+    let b = v[e.next as usize];
+    let p = v[e.prev as usize];
+    let d = v[g.prev as usize];
+    let tw_pa = twin[e.prev as usize];
+    let tw_bp = twin[e.next as usize];
+    let tw_ad = twin[g.next as usize];
+    let tw_db = twin[g.prev as usize];
+    debug_assert_eq!(twin[f as usize], h);
+    let (t3, u3) = (e.base, g.base);
+    let mut link = |h: u32, g: u32| {
+        twin[h as usize] = g;
+        twin[g as usize] = h;
+    };
+    v[t3 as usize..t3 as usize + 3].copy_from_slice(&[p, a, d]);
+    v[u3 as usize..u3 as usize + 3].copy_from_slice(&[p, d, b]);
+    link(t3, tw_pa);
+    link(t3 + 1, tw_ad);
+    link(t3 + 2, u3);
+    link(u3 + 1, tw_db);
+    link(u3 + 2, tw_bp);
+    // Keep a real triangle as the walk start (`is_ghost` of the new triples, inlined).
+    if a != GHOST && d != GHOST && p != GHOST {
+        *last = t3 / 3;
+    } else if d != GHOST && b != GHOST && p != GHOST {
+        *last = u3 / 3;
     }
 }
 
@@ -466,7 +500,7 @@ pub(crate) struct Corners {
 impl Corners {
     #[inline(always)]
     pub(crate) fn of(h: u32) -> Self {
-        let base = h - h % 3;
+        let base = 3 * (h / 3);
         let (next, prev) = match h - base {
             0 => (base + 1, base + 2),
             1 => (base + 2, base),
