@@ -21,7 +21,7 @@
 
 use super::fast::{dedup, hilbert_order};
 use super::mesh::{next, prev, Corners, NONE};
-use super::pred::{in_circle, orient};
+use super::pred::{in_circle, in_circle_grid, orient, orient_grid, small_integer_grid};
 use super::triangulation::{Triangulation, NO_NEIGHBOR};
 use crate::Point2;
 use std::cmp::Ordering;
@@ -42,6 +42,9 @@ struct Dag<'a> {
     twin: Vec<u32>,
     children: Vec<[u32; 3]>,
     stack: Vec<u32>,
+    /// All points form a small integer grid: the unfiltered exact grid predicates apply
+    /// (see `pred::small_integer_grid`).
+    grid: bool,
 }
 
 /// The book's index of a vertex for the legality rule: −2, −1, or ≥ 0.
@@ -79,7 +82,12 @@ impl<'a> Dag<'a> {
         // M2 < M1 are the two largest ids below the unused u32::MAX: one comparison
         // each tells a real vertex from a symbolic one.
         if a < M2 && b < M2 && c < M2 {
-            return orient(self.p(a), self.p(b), self.p(c));
+            let (pa, pb, pc) = (self.p(a), self.p(b), self.p(c));
+            return if self.grid {
+                orient_grid(pa, pb, pc)
+            } else {
+                orient(pa, pb, pc)
+            };
         }
         let sym = |v: u32| v == M1 || v == M2;
         match (sym(a), sym(b), sym(c)) {
@@ -249,7 +257,12 @@ impl<'a> Dag<'a> {
         let d = self.v[g.prev as usize];
         let real = |v: u32| v < M2;
         let illegal = if real(a) && real(b) && real(p) && real(d) {
-            in_circle(self.p(b), self.p(a), self.p(d), self.p(p)) > 0
+            let q = [b, a, d, p].map(|x| self.p(x));
+            if self.grid {
+                in_circle_grid(q[0], q[1], q[2], q[3]) > 0
+            } else {
+                in_circle(q[0], q[1], q[2], q[3]) > 0
+            }
         } else if !real(a) && !real(b) {
             false
         } else {
@@ -320,6 +333,7 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
         twin: Vec::with_capacity(27 * n),
         children: Vec::with_capacity(9 * n),
         stack: Vec::new(),
+        grid: small_integer_grid(pts),
     };
     dag.add(p0, M2, M1);
     for &p in &distinct {
