@@ -99,8 +99,55 @@ fn measure(name: String, pts: &[Point2], runs: usize, verify: bool) -> Result<Ro
     })
 }
 
+/// `COMPGEOM_DELAUNAY_SOLO=lib,input,n` (lib: default, book, spade or delaunator; input:
+/// uniform or grid, n points, a grid of side √n): build that one triangulation once and
+/// stop — for instruction counts under `valgrind --tool=callgrind`, which stay comparable
+/// when the machine is loaded.
+fn solo(spec: &str) -> Result<(), String> {
+    let parts: Vec<&str> = spec.split(',').collect();
+    let [lib, input, n] = parts[..] else {
+        return Err(format!("COMPGEOM_DELAUNAY_SOLO={spec}: want lib,input,n"));
+    };
+    let n: usize = n.parse().map_err(|_| format!("bad n in {spec}"))?;
+    let pts = match input {
+        "grid" => grid((n as f64).sqrt() as usize),
+        "uniform" => uniform(n, 2),
+        _ => return Err(format!("unknown input {input}")),
+    };
+    let count = match lib {
+        "default" => delaunay(&pts).map_err(|e| e.to_string())?.triangles().len(),
+        "book" => delaunay_with(
+            &pts,
+            &DelaunayOptions::new().with_algorithm(DelaunayAlgorithm::Incremental),
+        )
+        .map_err(|e| e.to_string())?
+        .triangles()
+        .len(),
+        "spade" => {
+            let sp: Vec<spade::Point2<f64>> =
+                pts.iter().map(|p| spade::Point2::new(p.x, p.y)).collect();
+            spade::DelaunayTriangulation::<spade::Point2<f64>>::bulk_load(sp)
+                .map_err(|e| format!("spade: {e:?}"))?
+                .num_inner_faces()
+        }
+        "delaunator" => {
+            let dl: Vec<delaunator::Point> = pts
+                .iter()
+                .map(|p| delaunator::Point { x: p.x, y: p.y })
+                .collect();
+            delaunator::triangulate(&dl).triangles.len() / 3
+        }
+        _ => return Err(format!("unknown lib {lib}")),
+    };
+    println!("{lib} {input} {}: {count} triangles", pts.len());
+    Ok(())
+}
+
 /// Run the group.
 pub fn run(quick: bool) -> Result<(), String> {
+    if let Ok(spec) = std::env::var("COMPGEOM_DELAUNAY_SOLO") {
+        return solo(&spec);
+    }
     let (small, large, side) = if quick {
         (10_000, 100_000, 300)
     } else {

@@ -1,15 +1,21 @@
 //! The default Delaunay triangulation: spatial sort + walking location + Lawson flips.
 //!
 //! 1. The points are put in Hilbert-curve order (the curve over a 2^16 × 2^16 grid laid on
-//!    the bounding box). The order only affects speed: every decision below is exact.
+//!    the bounding box; keys by a two-levels-per-lookup table, sorted by an O(n) radix
+//!    sort), then split into rounds along the curve (every 8th point first, …, the odd
+//!    positions last; see [`rounds_along_the_curve`]), a deterministic BRIO. The order only
+//!    affects speed: every decision below is exact.
 //! 2. Each point is located by a visibility walk from the last triangle created, which is
-//!    next to the previous point (a few steps on average in Hilbert order).
+//!    next to the previous point (a few steps on average within a round).
 //! 3. It is inserted by splitting its triangle (or edge) and restoring the Delaunay property
 //!    with the book's LEGALIZEEDGE flips (§9.3), on a mesh closed by ghost triangles (see
-//!    `mesh.rs`), so outside points need no symbolic or huge bounding points.
+//!    `mesh.rs`), so outside points need no symbolic or huge bounding points. On a small
+//!    integer grid (all coordinates integers, span at most 2^12) the predicates are the
+//!    unfiltered exact ones of `pred.rs`.
 //!
-//! Expected O(n log n) (the sort) and O(n) for the rest on uniform input. A point equal to
-//! an existing vertex is found as `Found::Vertex` and merged.
+//! O(n) for the order and expected O(n) for the rest on uniform input (O(n²) flips in the
+//! worst case, as for any incremental method). A point equal to an existing vertex is
+//! found as `Found::Vertex` and merged.
 
 use super::mesh::{Found, Mesh};
 use super::pred::{orient, small_integer_grid};
@@ -122,6 +128,46 @@ fn radix_sort_high(mut keys: Vec<u64>) -> Vec<u64> {
     keys
 }
 
+/// The last of [`rounds_along_the_curve`]'s levels (rounds of 1/16, 1/16, 1/8, 1/4, 1/2).
+const COARSEST: u32 = 3;
+
+/// A deterministic biased insertion order in the spirit of BRIO (Amenta, Choi & Rote):
+/// the point at position `i` of the Hilbert order goes to round `min(trailing_zeros(i), 3)`
+/// (position 0 to the coarsest), and rounds run from the coarsest (every 8th point along
+/// the curve: an even sample of the whole set, the curve being space-filling) to the finest
+/// (the odd positions, half of the points), each in Hilbert order.
+///
+/// Why: in plain Hilbert order every new point lies on the frontier of the inserted region,
+/// next to long triangles spanning the not-yet-inserted part, so it gets many flips (5.6 per
+/// point on an integer grid, 4.6 on uniform points). After the coarse rounds most points
+/// fall inside a triangulation of about their own density: fewer flips (38% fewer
+/// instructions on a 300 × 300 grid, 13% on uniform points) while each round still walks
+/// in curve order. Only the order changes; every decision stays exact.
+fn rounds_along_the_curve(order: Vec<u32>) -> Vec<u32> {
+    let level = |i: usize| {
+        if i == 0 {
+            COARSEST
+        } else {
+            i.trailing_zeros().min(COARSEST)
+        }
+    };
+    // Counting sort by level, coarsest first, stable (curve order within a round).
+    let mut start = [0usize; COARSEST as usize + 2];
+    for i in 0..order.len() {
+        start[(COARSEST - level(i)) as usize + 1] += 1;
+    }
+    for k in 1..start.len() {
+        start[k] += start[k - 1];
+    }
+    let mut out = vec![0u32; order.len()];
+    for (i, &o) in order.iter().enumerate() {
+        let slot = &mut start[(COARSEST - level(i)) as usize];
+        out[*slot] = o;
+        *slot += 1;
+    }
+    out
+}
+
 /// Triangulates `pts` (finite, at most `u32::MAX - 1` of them). Returns the mesh (or `None`
 /// when all points are collinear or fewer than three are distinct) and, for every input
 /// index, the input index of the vertex it was merged into.
@@ -134,7 +180,7 @@ pub(crate) fn triangulate(pts: &[Point2]) -> (Option<Mesh<'_>>, Vec<u32>) {
         }
         return (None, rep);
     }
-    let order = hilbert_order(pts);
+    let order = rounds_along_the_curve(hilbert_order(pts));
     // The first triangle: the first point, the next distinct one, the next not on their line.
     let a = order[0];
     let Some(ib) = order
@@ -320,6 +366,23 @@ mod tests {
             assert_eq!(fast, dedup_sorted(pts));
             for (i, &v) in fast.iter().enumerate() {
                 assert!(pts[i] == pts[v as usize] && v as usize <= i);
+            }
+        }
+    }
+
+    #[test]
+    fn rounds_are_a_permutation_coarsest_first() {
+        for n in [0usize, 1, 2, 7, 8, 9, 100, 1000] {
+            let order: Vec<u32> = (0..n as u32).rev().collect();
+            let r = rounds_along_the_curve(order.clone());
+            let mut sorted = r.clone();
+            sorted.sort_unstable();
+            assert_eq!(sorted, (0..n as u32).collect::<Vec<_>>());
+            if n > 8 {
+                // Positions 0, 8, 16, ... of the curve first, in curve order.
+                assert_eq!(&r[..2], &[order[0], order[8]]);
+                // The odd positions last, in curve order.
+                assert_eq!(r[n - 1], order[if n % 2 == 0 { n - 1 } else { n - 2 }]);
             }
         }
     }
