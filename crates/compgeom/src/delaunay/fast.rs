@@ -29,7 +29,11 @@ use crate::Point2;
 /// one with `tx = 1` also complements them (the classic xy→d recursion, one level).
 const fn hilbert_level(state: u8, bx: u8, by: u8) -> (u8, u8) {
     let (sw, cm) = (state & 1, state >> 1);
-    let (tx, ty) = if sw == 1 { (by ^ cm, bx ^ cm) } else { (bx ^ cm, by ^ cm) };
+    let (tx, ty) = if sw == 1 {
+        (by ^ cm, bx ^ cm)
+    } else {
+        (bx ^ cm, by ^ cm)
+    };
     let digit = (3 * tx) ^ ty;
     let (sw, cm) = if ty == 0 { (sw ^ 1, cm ^ tx) } else { (sw, cm) };
     (digit, sw | (cm << 1))
@@ -180,7 +184,23 @@ pub(crate) fn triangulate(pts: &[Point2]) -> (Option<Mesh<'_>>, Vec<u32>) {
         }
         return (None, rep);
     }
-    let order = rounds_along_the_curve(hilbert_order(pts));
+    // Equal points share a Hilbert key and, ordered by index within it, are usually
+    // adjacent in the curve order: merge those here, into the first of the run. (Left in,
+    // the rounds would separate them and each copy would cost a walk; the rest are found
+    // as vertices by the walk.) A dropped point's representative is resolved at the end.
+    let mut order = hilbert_order(pts);
+    let mut kept = 0;
+    for k in 0..order.len() {
+        let i = order[k];
+        if kept > 0 && pts[order[kept - 1] as usize] == pts[i as usize] {
+            rep[i as usize] = order[kept - 1];
+            continue;
+        }
+        order[kept] = i;
+        kept += 1;
+    }
+    order.truncate(kept);
+    let order = rounds_along_the_curve(order);
     // The first triangle: the first point, the next distinct one, the next not on their line.
     let a = order[0];
     let Some(ib) = order
@@ -215,6 +235,11 @@ pub(crate) fn triangulate(pts: &[Point2]) -> (Option<Mesh<'_>>, Vec<u32>) {
             Found::Vertex(v) => rep[i as usize] = v,
             at => mesh.insert(i, at),
         }
+    }
+    // A point dropped above maps to a kept one, whose own entry is final (itself, or the
+    // vertex the walk merged it into).
+    for i in 0..n {
+        rep[i] = rep[rep[i] as usize];
     }
     (Some(mesh), rep)
 }

@@ -413,20 +413,40 @@ mod tests {
     #[test]
     fn small_integer_grid_limits() {
         let p = |x: f64, y: f64| Point2::new(x, y);
-        assert!(small_integer_grid(&[p(0.0, 0.0), p(4096.0, -4096.0 + 4096.0)]));
-        assert!(small_integer_grid(&[p(-2048.0, 1e18), p(2048.0, 1e18 + 4096.0)]));
+        assert!(small_integer_grid(&[
+            p(0.0, 0.0),
+            p(4096.0, -4096.0 + 4096.0)
+        ]));
+        assert!(small_integer_grid(&[
+            p(-2048.0, 1e18),
+            p(2048.0, 1e18 + 4096.0)
+        ]));
         assert!(!small_integer_grid(&[p(0.0, 0.0), p(4097.0, 0.0)]));
         assert!(!small_integer_grid(&[p(0.0, 0.0), p(0.5, 0.0)]));
         // Beyond 2^53 neighbouring integers are 2 or more apart; still exact differences.
-        assert!(small_integer_grid(&[p(2f64.powi(60), 0.0), p(2f64.powi(60) + 4096.0, 0.0)]));
-        assert!(!small_integer_grid(&[p(2f64.powi(60), 0.0), p(2f64.powi(60) + 8192.0, 0.0)]));
+        assert!(small_integer_grid(&[
+            p(2f64.powi(60), 0.0),
+            p(2f64.powi(60) + 4096.0, 0.0)
+        ]));
+        assert!(!small_integer_grid(&[
+            p(2f64.powi(60), 0.0),
+            p(2f64.powi(60) + 8192.0, 0.0)
+        ]));
         // Integers beyond 2^63 are refused (conservatively) by the integer test.
         assert!(!small_integer_grid(&[p(2f64.powi(70), 0.0)]));
         // The extreme corners: every difference at the limit, lifts and terms the largest.
-        let g = [p(0.0, 0.0), p(4096.0, 0.0), p(4096.0, 4096.0), p(0.0, 4096.0)];
+        let g = [
+            p(0.0, 0.0),
+            p(4096.0, 0.0),
+            p(4096.0, 4096.0),
+            p(0.0, 4096.0),
+        ];
         assert!(small_integer_grid(&g));
         assert_eq!(in_circle_grid(g[0], g[1], g[2], g[3]), 0);
         assert_eq!(in_circle_grid(g[0], g[1], g[2], p(2048.0, 2048.0)), 1);
-        assert_eq!(in_circle_grid(g[0], g[1], p(4096.0, 4095.0), g[3]), k_incircle(g[0], g[1], p(4096.0, 4095.0), g[3]));
+        assert_eq!(
+            in_circle_grid(g[0], g[1], p(4096.0, 4095.0), g[3]),
+            k_incircle(g[0], g[1], p(4096.0, 4095.0), g[3])
+        );
     }
 }
