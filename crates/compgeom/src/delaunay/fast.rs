@@ -422,7 +422,7 @@ mod tests {
                     s ^= s >> 7;
                     s ^= s << 17;
                     // Few distinct high halves, so ties (broken by the index) are common.
-                    ((s % 97) << 32 | (s >> 20) % 3 << 50) | i
+                    ((s % 97) << 32 | ((s >> 20) % 3) << 50) | i
                 })
                 .collect();
             let mut want = keys.clone();
