@@ -6,6 +6,30 @@
 //! outside the clock: compgeom's result by its exact verifier (on the smaller inputs), and
 //! every library must report the same number of triangles (the count is unique, even on
 //! the cocircular grid).
+//!
+//! The four libraries alternate within each round (`util::alternate`); the table gives the
+//! best time of each and two ratios: of the best times, and the median of the per-round
+//! ratios (steadier on a loaded machine). `COMPGEOM_BENCH_RUNS` sets the rounds;
+//! `COMPGEOM_DELAUNAY_SOLO=lib,input,n` builds one triangulation once, for instruction
+//! counts under callgrind (load-independent).
+//!
+//! Measured (release, 2-core machine shared with other jobs, load average 2–7; 5 rounds;
+//! ms; ratio = default / fastest peer, best-of and median):
+//!
+//! | input | default | book | spade | delaunator | ratio | median | book/def |
+//! |---|---|---|---|---|---|---|---|
+//! | uniform 1e5 (load 2.1) | 24.4 | 77.9 | 38.4 | 23.7 | 1.03 | 1.04 | 3.19 |
+//! | uniform 1e6 (load 2.1) | 334.7 | 1051.9 | 516.7 | 497.6 | 0.67 | 0.74 | 3.14 |
+//! | grid 1000² (load 2.1) | 261.0 | 1020.9 | 783.6 | 362.9 | 0.72 | 0.73 | 3.91 |
+//! | uniform 1e6 (load 6.2) | 1493.9 | 4138.0 | 1687.9 | 1882.4 | 0.89 | 0.84 | 2.77 |
+//! | grid 1000² (load 6.2) | 280.8 | 1220.4 | 897.8 | 401.5 | 0.70 | 0.79 | 4.35 |
+//!
+//! CDT (900 holes, 110k vertices): compgeom full 470 ms vs spade `bulk_load_cdt` 385 ms
+//! (1.22; was 1.38–1.42). Callgrind instructions, 90 000 points: default grid 353 M → 215 M
+//! and uniform 431 M → 294 M this session (delaunator 245 M / 241 M, spade 1435 M / 485 M,
+//! book 592 M / 771 M, before the curve rounds of the default). The default's wall time
+//! beats delaunator at 1e6 while executing more instructions: delaunator's hull-hash sweep
+//! touches memory at random at that size, the Hilbert rounds do not.
 
 use crate::util::{alternate, best_of, median, ms, Rng};
 use compgeom::delaunay::{
@@ -76,7 +100,9 @@ fn measure(name: String, pts: &[Point2], runs: usize, verify: bool) -> Result<Ro
             &mut || {
                 drop(std::hint::black_box(spade::DelaunayTriangulation::<
                     spade::Point2<f64>,
-                >::bulk_load(sp.clone())))
+                >::bulk_load(
+                    sp.clone()
+                )))
             },
             &mut || drop(std::hint::black_box(delaunator::triangulate(&dl))),
         ],
