@@ -200,6 +200,10 @@ pub(crate) fn triangulate(pts: &[Point2]) -> (Option<Mesh<'_>>, Vec<u32>) {
         kept += 1;
     }
     order.truncate(kept);
+    let mut rank = vec![u32::MAX; n];
+    for (k, &i) in order.iter().enumerate() {
+        rank[i as usize] = k as u32;
+    }
     let order = rounds_along_the_curve(order);
     // The first triangle: the first point, the next distinct one, the next not on their line.
     let a = order[0];
@@ -226,6 +230,7 @@ pub(crate) fn triangulate(pts: &[Point2]) -> (Option<Mesh<'_>>, Vec<u32>) {
     // Integer grids (the common degenerate input, all squares cocircular) make the filters
     // fail constantly; their exact unfiltered predicates are cheaper still.
     mesh.grid = small_integer_grid(pts);
+    mesh.rank = rank;
     for (k, &i) in order.iter().enumerate() {
         if k == 0 || k == ib || k == ic {
             continue;

@@ -64,6 +64,10 @@ pub(crate) struct Mesh<'a> {
     /// Every point is in a [`small_integer_grid`](super::pred::small_integer_grid), so the
     /// unfiltered grid predicates are exact (set by the builder; cleared by `push_point`).
     pub(crate) grid: bool,
+    /// Optional rank of every point along the Hilbert curve (empty when unknown): the
+    /// result lists triangles in this order, so that consumers walking the triangle array
+    /// (the Voronoi cells) stay spatially coherent.
+    pub(crate) rank: Vec<u32>,
 }
 
 impl<'a> Mesh<'a> {
@@ -77,6 +81,7 @@ impl<'a> Mesh<'a> {
             last: 0,
             stack: Vec::new(),
             grid: false,
+            rank: Vec::new(),
         };
         let t = m.add(a, b, c);
         let g_ab = m.add(b, a, GHOST);
@@ -101,6 +106,7 @@ impl<'a> Mesh<'a> {
             last: 0,
             stack: Vec::new(),
             grid: false,
+            rank: Vec::new(),
         }
     }
 

@@ -182,6 +182,54 @@ impl Triangulation {
                 count += 1;
             }
         }
+        // List the triangles by the curve rank of their first corner (a counting sort), when
+        // every vertex has one: the slots themselves follow the insertion rounds, which
+        // visit the whole set several times.
+        let rank = &m.rank;
+        if rank.len() == m.pts.len() && !rank.is_empty() {
+            let mut start = vec![0u32; rank.len() + 1];
+            for (t, &id) in tri_id.iter().enumerate() {
+                if id != NO_NEIGHBOR {
+                    start[rank[v[3 * t] as usize] as usize + 1] += 1;
+                }
+            }
+            for k in 1..start.len() {
+                start[k] += start[k - 1];
+            }
+            for (t, id) in tri_id.iter_mut().enumerate() {
+                if *id != NO_NEIGHBOR {
+                    let slot = &mut start[rank[v[3 * t] as usize] as usize];
+                    *id = *slot;
+                    *slot += 1;
+                }
+            }
+            let mut triangles = vec![[0u32; 3]; count as usize];
+            let mut neighbors = vec![[0u32; 3]; count as usize];
+            let identity = vertices.len() == pts.len();
+            for (t, &id) in tri_id.iter().enumerate() {
+                if id == NO_NEIGHBOR {
+                    continue;
+                }
+                let h = 3 * t;
+                let (a, b, c) = (v[h], v[h + 1], v[h + 2]);
+                triangles[id as usize] = if identity {
+                    [a, b, c]
+                } else {
+                    [new_id[a as usize], new_id[b as usize], new_id[c as usize]]
+                };
+                neighbors[id as usize] = [
+                    tri_id[(twin[h + 1] / 3) as usize],
+                    tri_id[(twin[h + 2] / 3) as usize],
+                    tri_id[(twin[h] / 3) as usize],
+                ];
+            }
+            return Triangulation {
+                vertices,
+                triangles,
+                neighbors,
+                input_to_vertex,
+            };
+        }
         let mut triangles = Vec::with_capacity(count as usize);
         let mut neighbors = Vec::with_capacity(count as usize);
         // Without merged points the numbering is the identity (first-seen order = input
