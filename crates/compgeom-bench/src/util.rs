@@ -39,6 +39,34 @@ pub fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> Duration {
     best
 }
 
+/// Times each closure once per round, in turn, for `runs` rounds: `times[round][k]` is
+/// closure `k`'s time in that round. Alternating keeps a changing machine load (other jobs)
+/// from favouring whichever library happened to run in a quiet moment.
+pub fn alternate(runs: usize, fs: &mut [&mut dyn FnMut()]) -> Vec<Vec<Duration>> {
+    (0..runs.max(1))
+        .map(|_| {
+            fs.iter_mut()
+                .map(|f| {
+                    let start = Instant::now();
+                    f();
+                    start.elapsed()
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The median of some values (the mean of the middle two for an even count).
+pub fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    match n {
+        0 => f64::NAN,
+        _ if n % 2 == 1 => v[n / 2],
+        _ => (v[n / 2 - 1] + v[n / 2]) / 2.0,
+    }
+}
+
 /// Milliseconds, for tables.
 pub fn ms(d: Duration) -> f64 {
     d.as_secs_f64() * 1e3

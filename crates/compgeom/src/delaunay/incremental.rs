@@ -19,9 +19,9 @@
 //! biased randomized insertion order (`brio`, fixed seed, so runs are reproducible). Duplicates are merged before insertion (by sorting);
 //! collinear input gives no triangles.
 
-use super::fast::{dedup_sorted, hilbert_order};
-use super::mesh::{next, prev, NONE};
-use super::pred::{in_circle, orient};
+use super::fast::{dedup, hilbert_order};
+use super::mesh::{next, prev, Corners, NONE};
+use super::pred::{in_circle, in_circle_grid, orient, orient_grid, small_integer_grid};
 use super::triangulation::{Triangulation, NO_NEIGHBOR};
 use crate::Point2;
 use std::cmp::Ordering;
@@ -42,6 +42,9 @@ struct Dag<'a> {
     twin: Vec<u32>,
     children: Vec<[u32; 3]>,
     stack: Vec<u32>,
+    /// All points form a small integer grid: the unfiltered exact grid predicates apply
+    /// (see `pred::small_integer_grid`).
+    grid: bool,
 }
 
 /// The book's index of a vertex for the legality rule: −2, −1, or ≥ 0.
@@ -74,7 +77,18 @@ impl<'a> Dag<'a> {
     }
 
     /// Exact orientation with the symbolic points (see the module docs): > 0 ccw.
+    #[inline]
     fn orient_sym(&self, a: u32, b: u32, c: u32) -> i8 {
+        // M2 < M1 are the two largest ids below the unused u32::MAX: one comparison
+        // each tells a real vertex from a symbolic one.
+        if a < M2 && b < M2 && c < M2 {
+            let (pa, pb, pc) = (self.p(a), self.p(b), self.p(c));
+            return if self.grid {
+                orient_grid(pa, pb, pc)
+            } else {
+                orient(pa, pb, pc)
+            };
+        }
         let sym = |v: u32| v == M1 || v == M2;
         match (sym(a), sym(b), sym(c)) {
             (false, false, false) => orient(self.p(a), self.p(b), self.p(c)),
@@ -236,13 +250,19 @@ impl<'a> Dag<'a> {
         if f == NONE {
             return;
         }
+        let (e, g) = (Corners::of(h), Corners::of(f));
         let a = self.v[h as usize];
-        let b = self.v[next(h) as usize];
-        let p = self.v[prev(h) as usize];
-        let d = self.v[prev(f) as usize];
+        let b = self.v[e.next as usize];
+        let p = self.v[e.prev as usize];
+        let d = self.v[g.prev as usize];
         let real = |v: u32| v < M2;
         let illegal = if real(a) && real(b) && real(p) && real(d) {
-            in_circle(self.p(b), self.p(a), self.p(d), self.p(p)) > 0
+            let q = [b, a, d, p].map(|x| self.p(x));
+            if self.grid {
+                in_circle_grid(q[0], q[1], q[2], q[3]) > 0
+            } else {
+                in_circle(q[0], q[1], q[2], q[3]) > 0
+            }
         } else if !real(a) && !real(b) {
             false
         } else {
@@ -255,15 +275,15 @@ impl<'a> Dag<'a> {
         if !illegal || self.orient_sym(p, a, d) <= 0 || self.orient_sym(p, d, b) <= 0 {
             return;
         }
-        let tw_pa = self.twin[prev(h) as usize];
-        let tw_bp = self.twin[next(h) as usize];
-        let tw_ad = self.twin[next(f) as usize];
-        let tw_db = self.twin[prev(f) as usize];
+        let tw_pa = self.twin[e.prev as usize];
+        let tw_bp = self.twin[e.next as usize];
+        let tw_ad = self.twin[g.next as usize];
+        let tw_db = self.twin[g.prev as usize];
         // The new point last in both children (see `locate`).
         let t0 = self.add(a, d, p);
         let t1 = self.add(d, b, p);
-        self.children[(h / 3) as usize] = [t0, t1, NONE];
-        self.children[(f / 3) as usize] = [t0, t1, NONE];
+        self.children[(e.base / 3) as usize] = [t0, t1, NONE];
+        self.children[(g.base / 3) as usize] = [t0, t1, NONE];
         self.link(3 * t0, tw_ad);
         self.link(3 * t0 + 1, 3 * t1 + 2);
         self.link(3 * t0 + 2, tw_pa);
@@ -290,7 +310,7 @@ impl SplitMix {
 /// Triangulates finite `pts` (fewer than `u32::MAX - 2`) by the book's algorithm.
 pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
     let n = pts.len();
-    let rep = dedup_sorted(pts, (0..n as u32).collect());
+    let rep = dedup(pts);
     let mut distinct: Vec<u32> = (0..n as u32).filter(|&i| rep[i as usize] == i).collect();
     let collinear = distinct.len() < 3 || {
         let (a, b) = (pts[distinct[0] as usize], pts[distinct[1] as usize]);
@@ -313,6 +333,7 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
         twin: Vec::with_capacity(27 * n),
         children: Vec::with_capacity(9 * n),
         stack: Vec::new(),
+        grid: small_integer_grid(pts),
     };
     dag.add(p0, M2, M1);
     for &p in &distinct {

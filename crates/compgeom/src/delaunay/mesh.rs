@@ -13,7 +13,7 @@
 //! Vertex ids are indices into the point list (`u32`): the caller's slice, borrowed, or an
 //! owned copy when an operation (constraint crossings, refinement) adds Steiner points.
 
-use super::pred::{in_circle, orient, strictly_between};
+use super::pred::{in_circle, in_circle_grid, orient, orient_grid, strictly_between};
 use crate::Point2;
 use std::borrow::Cow;
 
@@ -61,6 +61,13 @@ pub(crate) struct Mesh<'a> {
     pub(crate) last: u32,
     /// Flip stack, kept to avoid reallocation.
     stack: Vec<u32>,
+    /// Every point is in a [`small_integer_grid`](super::pred::small_integer_grid), so the
+    /// unfiltered grid predicates are exact (set by the builder; cleared by `push_point`).
+    pub(crate) grid: bool,
+    /// Optional rank of every point along the Hilbert curve (empty when unknown): the
+    /// result lists triangles in this order, so that consumers walking the triangle array
+    /// (the Voronoi cells) stay spatially coherent.
+    pub(crate) rank: Vec<u32>,
 }
 
 impl<'a> Mesh<'a> {
@@ -73,6 +80,8 @@ impl<'a> Mesh<'a> {
             twin: Vec::with_capacity(capacity * 6),
             last: 0,
             stack: Vec::new(),
+            grid: false,
+            rank: Vec::new(),
         };
         let t = m.add(a, b, c);
         let g_ab = m.add(b, a, GHOST);
@@ -96,12 +105,16 @@ impl<'a> Mesh<'a> {
             twin: Vec::new(),
             last: 0,
             stack: Vec::new(),
+            grid: false,
+            rank: Vec::new(),
         }
     }
 
     /// Appends a point (a Steiner point) and returns its vertex id; the mesh owns its
     /// points from then on.
     pub(crate) fn push_point(&mut self, p: Point2) -> u32 {
+        // A Steiner point may leave the grid: back to the filtered predicates.
+        self.grid = false;
         let pts = self.pts.to_mut();
         pts.push(p);
         (pts.len() - 1) as u32
@@ -200,6 +213,18 @@ impl<'a> Mesh<'a> {
 
     /// The visibility walk of [`Mesh::locate`], giving up (`None`) after `max_steps`.
     fn walk(&self, p: Point2, max_steps: u64) -> Option<Found> {
+        if self.grid {
+            self.walk_with::<true>(p, max_steps)
+        } else {
+            self.walk_with::<false>(p, max_steps)
+        }
+    }
+
+    /// [`Mesh::walk`] with the grid predicates (`GRID`) or the filtered ones.
+    fn walk_with<const GRID: bool>(&self, p: Point2, max_steps: u64) -> Option<Found> {
+        // Plain slices: the hot loop then pays no `Cow` dispatch per point read.
+        let pts: &[Point2] = &self.pts;
+        let (v, twin) = (&self.v[..], &self.twin[..]);
         let mut steps = 0u64;
         let mut t = self.last;
         if self.is_ghost(t) {
@@ -212,27 +237,39 @@ impl<'a> Mesh<'a> {
         let mut rot = 0u32;
         loop {
             let base = 3 * t;
+            let b3 = base as usize;
+            // `t` is real here, so all three vertices are points.
+            let tri = [v[b3], v[b3 + 1], v[b3 + 2]];
             let mut zero_mask = 0u32;
             let mut moved = false;
-            for k in 0..3 {
-                let h = base + (k + rot) % 3;
+            for k in 0..3u32 {
+                let mut e = k + rot;
+                if e >= 3 {
+                    e -= 3;
+                }
+                let h = base + e;
                 if h == from {
                     continue;
                 }
-                let a = self.v[h as usize];
-                let b = self.v[next(h) as usize];
-                let s = orient(self.pt(a), self.pt(b), p);
+                let a = tri[e as usize];
+                let b = tri[if e == 2 { 0 } else { e as usize + 1 }];
+                let (pa, pb) = (pts[a as usize], pts[b as usize]);
+                let s = if GRID {
+                    orient_grid(pa, pb, p)
+                } else {
+                    orient(pa, pb, p)
+                };
                 if s < 0 {
-                    let g = self.twin[h as usize];
+                    let g = twin[h as usize];
                     t = g / 3;
                     from = g;
                     moved = true;
                     break;
                 } else if s == 0 {
-                    zero_mask |= 1 << (h - base);
+                    zero_mask |= 1 << e;
                 }
             }
-            rot = (rot + 1) % 3;
+            rot = if rot == 2 { 0 } else { rot + 1 };
             if !moved {
                 return Some(self.classify(base, zero_mask));
             }
@@ -290,7 +327,11 @@ impl<'a> Mesh<'a> {
             Found::Edge(h) => self.split_edge(h, p),
             Found::Vertex(_) => {}
         }
-        self.legalize_all(p, fixed);
+        if self.grid {
+            self.legalize_all::<true, F>(p, fixed);
+        } else {
+            self.legalize_all::<false, F>(p, fixed);
+        }
     }
 
     fn split_face(&mut self, t: u32, p: u32) {
@@ -341,43 +382,34 @@ impl<'a> Mesh<'a> {
         self.last = t;
     }
 
-    /// Is `q` strictly inside the circumcircle of triangle `(a, b, c)` (ccw; one of them may
-    /// be the ghost vertex)?
-    #[inline(always)]
-    pub(crate) fn inside(&self, a: u32, b: u32, c: u32, q: Point2) -> bool {
-        let (u, w) = if c == GHOST {
-            (a, b)
-        } else if a == GHOST {
-            (b, c)
-        } else if b == GHOST {
-            (c, a)
-        } else {
-            return in_circle(self.pt(a), self.pt(b), self.pt(c), q) > 0;
-        };
-        let (pu, pw) = (self.pt(u), self.pt(w));
-        match orient(pu, pw, q) {
-            1 => true,
-            0 => strictly_between(pu, pw, q),
-            _ => false,
-        }
-    }
-
     /// LEGALIZEEDGE for every half-edge on the stack (each has the new point `p` opposite).
     #[inline(always)]
-    fn legalize_all<F: Fn(u32, u32) -> bool>(&mut self, p: u32, fixed: F) {
-        let pp = self.pt(p);
-        while let Some(h) = self.stack.pop() {
-            let f = self.twin[h as usize];
-            let a = self.v[h as usize];
-            let b = self.v[next(h) as usize];
-            let d = self.v[prev(f) as usize];
-            if d == GHOST || fixed(a, b) || !self.inside(b, a, d, pp) {
+    fn legalize_all<const GRID: bool, F: Fn(u32, u32) -> bool>(&mut self, p: u32, fixed: F) {
+        // Split borrows: the points are read through a plain slice (no `Cow` dispatch per
+        // read) while the flips rewrite the triangle arrays.
+        let Mesh {
+            pts,
+            v,
+            twin,
+            last,
+            stack,
+            ..
+        } = self;
+        let pts: &[Point2] = pts;
+        let pp = pts[p as usize];
+        while let Some(h) = stack.pop() {
+            let f = twin[h as usize];
+            let e = Corners::of(h);
+            let g = Corners::of(f);
+            let a = v[e.h as usize];
+            let b = v[e.next as usize];
+            let d = v[g.prev as usize];
+            if d == GHOST || fixed(a, b) || !inside_of::<GRID>(pts, b, a, d, pp) {
                 continue;
             }
-            self.flip(h);
-            let (t, u) = (h / 3, f / 3);
-            self.stack.push(3 * t + 1);
-            self.stack.push(3 * u + 1);
+            flip_at(v, twin, last, e, g);
+            stack.push(e.base + 1);
+            stack.push(g.base + 1);
         }
     }
 
@@ -385,26 +417,106 @@ impl<'a> Mesh<'a> {
     /// triangle `(b, a, d)`) into `(p, a, d)`, `(p, d, b)`, reusing both slots.
     pub(crate) fn flip(&mut self, h: u32) {
         let f = self.twin[h as usize];
-        let (t, u) = (h / 3, f / 3);
-        let a = self.v[h as usize];
-        let b = self.v[next(h) as usize];
-        let p = self.v[prev(h) as usize];
-        let d = self.v[prev(f) as usize];
-        let tw_pa = self.twin[prev(h) as usize];
-        let tw_bp = self.twin[next(h) as usize];
-        let tw_ad = self.twin[next(f) as usize];
-        let tw_db = self.twin[prev(f) as usize];
-        self.set(t, p, a, d);
-        self.set(u, p, d, b);
-        self.link(3 * t, tw_pa);
-        self.link(3 * t + 1, tw_ad);
-        self.link(3 * t + 2, 3 * u);
-        self.link(3 * u + 1, tw_db);
-        self.link(3 * u + 2, tw_bp);
-        if !self.is_ghost(t) {
-            self.last = t;
-        } else if !self.is_ghost(u) {
-            self.last = u;
+        flip_at(
+            &mut self.v,
+            &mut self.twin,
+            &mut self.last,
+            Corners::of(h),
+            Corners::of(f),
+        );
+    }
+}
+
+/// Is `q` strictly inside the circumcircle of triangle `(a, b, c)` (ccw; one of them may
+/// be the ghost vertex, whose circle is the half-plane left of the other two)? With the
+/// grid predicates when `GRID` (see [`Mesh::grid`]).
+#[inline(always)]
+fn inside_of<const GRID: bool>(pts: &[Point2], a: u32, b: u32, c: u32, q: Point2) -> bool {
+    let (u, w) = if c == GHOST {
+        (a, b)
+    } else if a == GHOST {
+        (b, c)
+    } else if b == GHOST {
+        (c, a)
+    } else {
+        let (pa, pb, pc) = (pts[a as usize], pts[b as usize], pts[c as usize]);
+        return if GRID {
+            in_circle_grid(pa, pb, pc, q) > 0
+        } else {
+            in_circle(pa, pb, pc, q) > 0
+        };
+    };
+    let (pu, pw) = (pts[u as usize], pts[w as usize]);
+    let side = if GRID {
+        orient_grid(pu, pw, q)
+    } else {
+        orient(pu, pw, q)
+    };
+    match side {
+        1 => true,
+        0 => strictly_between(pu, pw, q),
+        _ => false,
+    }
+}
+
+/// [`Mesh::flip`] over the parts of a mesh, with the corners of `h` and of its twin
+/// already computed.
+#[inline(always)]
+fn flip_at(v: &mut [u32], twin: &mut [u32], last: &mut u32, e: Corners, g: Corners) {
+    let (h, f) = (e.h, g.h);
+    let a = v[h as usize];
+    let b = v[e.next as usize];
+    let p = v[e.prev as usize];
+    let d = v[g.prev as usize];
+    let tw_pa = twin[e.prev as usize];
+    let tw_bp = twin[e.next as usize];
+    let tw_ad = twin[g.next as usize];
+    let tw_db = twin[g.prev as usize];
+    debug_assert_eq!(twin[f as usize], h);
+    let (t3, u3) = (e.base, g.base);
+    let mut link = |h: u32, g: u32| {
+        twin[h as usize] = g;
+        twin[g as usize] = h;
+    };
+    v[t3 as usize..t3 as usize + 3].copy_from_slice(&[p, a, d]);
+    v[u3 as usize..u3 as usize + 3].copy_from_slice(&[p, d, b]);
+    link(t3, tw_pa);
+    link(t3 + 1, tw_ad);
+    link(t3 + 2, u3);
+    link(u3 + 1, tw_db);
+    link(u3 + 2, tw_bp);
+    // Keep a real triangle as the walk start (`is_ghost` of the new triples, inlined).
+    if a != GHOST && d != GHOST && p != GHOST {
+        *last = t3 / 3;
+    } else if d != GHOST && b != GHOST && p != GHOST {
+        *last = u3 / 3;
+    }
+}
+
+/// A half-edge with its triangle's first half-edge and its two companions, computed with
+/// one division (the `% 3` of `next`/`prev` is the costly part of the flip loop).
+#[derive(Clone, Copy)]
+pub(crate) struct Corners {
+    pub(crate) h: u32,
+    pub(crate) base: u32,
+    pub(crate) next: u32,
+    pub(crate) prev: u32,
+}
+
+impl Corners {
+    #[inline(always)]
+    pub(crate) fn of(h: u32) -> Self {
+        let base = 3 * (h / 3);
+        let (next, prev) = match h - base {
+            0 => (base + 1, base + 2),
+            1 => (base + 2, base),
+            _ => (base, base + 1),
+        };
+        Corners {
+            h,
+            base,
+            next,
+            prev,
         }
     }
 }

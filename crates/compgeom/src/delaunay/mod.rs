@@ -56,7 +56,7 @@ mod emst;
 mod fast;
 mod incremental;
 mod mesh;
-mod pred;
+pub(crate) mod pred;
 mod refine;
 mod terrain;
 mod triangulation;

@@ -96,6 +96,65 @@ pub(crate) fn in_circle(a: Point2, b: Point2, c: Point2, d: Point2) -> i8 {
     }
 }
 
+/// The largest coordinate span (in x and in y) of a [`small_integer_grid`].
+const GRID_SPAN: f64 = 4096.0;
+
+/// True when every coordinate is an integer and the points span at most 2^12 in x and in
+/// y (integer grids up to 4097 × 4097, at any integer offset). Then [`orient_grid`] and
+/// [`in_circle_grid`] are exact for every triple and quadruple of these points.
+///
+/// The span test is exact: for integers `hi >= lo` the exact difference `D` is an integer;
+/// if `D <= 2^12` it is representable and IEEE subtraction returns it; if `2^12 < D < 2^53`
+/// it is representable too; if `D >= 2^53` the rounded difference is at least 2^53. So
+/// `hi - lo <= 4096` in `f64` holds exactly when `D <= 4096`.
+pub(crate) fn small_integer_grid(pts: &[Point2]) -> bool {
+    if !integral(pts) {
+        return false;
+    }
+    let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
+    for p in pts {
+        x0 = x0.min(p.x);
+        y0 = y0.min(p.y);
+        x1 = x1.max(p.x);
+        y1 = y1.max(p.y);
+    }
+    x1 - x0 <= GRID_SPAN && y1 - y0 <= GRID_SPAN
+}
+
+/// [`orient`] for points of a [`small_integer_grid`], without a filter: every coordinate
+/// difference is an integer of magnitude at most 2^12, computed exactly (it is
+/// representable, and IEEE subtraction is correctly rounded); the two products are below
+/// 2^24 and their difference below 2^25, all exact. So the sign, zero included, is exact.
+#[inline(always)]
+pub(crate) fn orient_grid(a: Point2, b: Point2, c: Point2) -> i8 {
+    let det = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
+    sign(det)
+}
+
+/// [`in_circle`] for points of a [`small_integer_grid`], without a filter: the differences
+/// are exact integers with `|d| <= 2^12`; lifts `dx² + dy² <= 2^25`, cross products
+/// `<= 2^24` and their differences `<= 2^25`; each of the three terms `<= 2^50` and their
+/// sum `<= 3 · 2^50 < 2^53`. Every intermediate is an integer below 2^53, so the
+/// evaluation is exact and its sign, zero included, is the exact answer.
+#[inline(always)]
+pub(crate) fn in_circle_grid(a: Point2, b: Point2, c: Point2, d: Point2) -> i8 {
+    let (adx, ady) = (a.x - d.x, a.y - d.y);
+    let (bdx, bdy) = (b.x - d.x, b.y - d.y);
+    let (cdx, cdy) = (c.x - d.x, c.y - d.y);
+    let alift = adx * adx + ady * ady;
+    let blift = bdx * bdx + bdy * bdy;
+    let clift = cdx * cdx + cdy * cdy;
+    let det = alift * (bdx * cdy - cdx * bdy)
+        + blift * (cdx * ady - adx * cdy)
+        + clift * (adx * bdy - bdx * ady);
+    sign(det)
+}
+
+#[inline(always)]
+fn sign(v: f64) -> i8 {
+    i8::from(v > 0.0) - i8::from(v < 0.0)
+}
+
 /// The exact sign of a polynomial written once over [`Arith`]: the `f64` enclosure first,
 /// exact dyadic arithmetic when it cannot decide.
 macro_rules! exact_sign {
@@ -148,10 +207,16 @@ pub(crate) fn area_above(a: Point2, b: Point2, c: Point2, twice: f64) -> bool {
     exact_sign!(area_det(a, b, c, twice)) == Ordering::Greater
 }
 
-/// True when every coordinate is an integer.
+/// True only when every coordinate is an integer (of magnitude at most 2^63; larger
+/// integers answer `false`, which merely sends the caller to the general exact path).
+///
+/// `v as i64` truncates towards zero and saturates, so `(v as i64) as f64 == v` holds exactly
+/// for the integers in [-2^63, 2^63] and fails for every other value (NaN gives 0). It is two
+/// conversions, where `f64::trunc` is a library call on the baseline x86-64 target.
 #[inline(always)]
 fn integral(p: &[Point2]) -> bool {
-    p.iter().all(|p| p.x == p.x.trunc() && p.y == p.y.trunc())
+    p.iter()
+        .all(|p| (p.x as i64) as f64 == p.x && (p.y as i64) as f64 == p.y)
 }
 
 /// True when `q` lies strictly between `a` and `b` on their (common) line; the caller
@@ -212,6 +277,176 @@ mod tests {
                 Point2::new(0.0, t)
             ),
             1
+        );
+    }
+
+    use proptest::prelude::*;
+
+    fn k_orient(a: Point2, b: Point2, c: Point2) -> i8 {
+        match orient2d(a, b, c) {
+            Orientation::CounterClockwise => 1,
+            Orientation::Clockwise => -1,
+            Orientation::Collinear => 0,
+        }
+    }
+
+    fn k_incircle(a: Point2, b: Point2, c: Point2, d: Point2) -> i8 {
+        match incircle(a, b, c, d) {
+            CircleSide::Inside => 1,
+            CircleSide::Outside => -1,
+            CircleSide::OnCircle => 0,
+        }
+    }
+
+    /// One ulp up or down (or nothing), for near-degenerate versions of exact patterns.
+    fn nudge(v: f64, k: u8) -> f64 {
+        match k % 3 {
+            0 => v,
+            1 => v.next_up(),
+            _ => v.next_down(),
+        }
+    }
+
+    /// Degenerate quadruples: grid points (spacing `step`, offset `off`), so that integer,
+    /// large-integer, beyond-2^53/2^63 and non-integer dyadic grids are all produced;
+    /// duplicates, collinear triples and cocircular squares/rectangles are common; some
+    /// coordinates are moved by one ulp.
+    fn quad() -> impl Strategy<Value = [Point2; 4]> {
+        let scale = prop_oneof![
+            Just((1.0, 0.0)),
+            Just((1.0, 1e6)),
+            Just((1.0, 33_554_000.0)),
+            Just((1.0, 9.007_199_254_740_992e15)),
+            Just((1024.0, 2f64.powi(63))),
+            Just((2048.0, -(2f64.powi(63)))),
+            Just((0.5, 0.0)),
+            Just((0.5, 1e6)),
+            Just((2f64.powi(-30), 1.0)),
+            Just((3.0, -1e12)),
+            Just((2f64.powi(-1000), 0.0)),
+            Just((2f64.powi(900), 0.0)),
+        ];
+        (
+            scale,
+            prop::collection::vec((-5000i32..5000, -5000i32..5000, any::<u8>()), 4),
+            0..4u8,
+        )
+            .prop_map(|((step, off), v, small)| {
+                let pts: Vec<Point2> = v
+                    .iter()
+                    .map(|&(x, y, k)| {
+                        // Mostly tiny ranges, where ties abound; sometimes the full range.
+                        let (x, y) = if small > 0 { (x % 4, y % 4) } else { (x, y) };
+                        let (px, py) = (off + f64::from(x) * step, off + f64::from(y) * step);
+                        if k < 40 {
+                            Point2::new(nudge(px, k), nudge(py, k / 3))
+                        } else {
+                            Point2::new(px, py)
+                        }
+                    })
+                    .collect();
+                [pts[0], pts[1], pts[2], pts[3]]
+            })
+    }
+
+    /// Integer points on the circle x² + y² = 5525 (many lattice points), shifted.
+    fn lattice_circle() -> impl Strategy<Value = [Point2; 4]> {
+        let mut on: Vec<(f64, f64)> = Vec::new();
+        for x in -74i32..=74 {
+            for y in -74i32..=74 {
+                if x * x + y * y == 5525 {
+                    on.push((f64::from(x), f64::from(y)));
+                }
+            }
+        }
+        let shift = prop_oneof![Just(0.0), Just(4000.0), Just(-1e9), Just(2f64.powi(60))];
+        (prop::collection::vec(0..on.len(), 4), shift, any::<bool>()).prop_map(
+            move |(ix, s, nudged)| {
+                let mut q = ix.iter().map(|&i| Point2::new(on[i].0 + s, on[i].1 - s));
+                let mut r = [(); 4].map(|_| q.next().unwrap_or_default());
+                if nudged {
+                    r[3].x = r[3].x.next_up();
+                }
+                r
+            },
+        )
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(4000))]
+
+        /// The filtered predicates, including their integer stage, agree with the kernel's
+        /// exact predicates on degenerate input at every scale.
+        #[test]
+        fn fast_paths_equal_the_exact_predicates(q in quad()) {
+            let [a, b, c, d] = q;
+            prop_assert_eq!(orient(a, b, c), k_orient(a, b, c));
+            prop_assert_eq!(orient(b, d, a), k_orient(b, d, a));
+            prop_assert_eq!(in_circle(a, b, c, d), k_incircle(a, b, c, d));
+            prop_assert_eq!(in_circle(d, c, b, a), k_incircle(d, c, b, a));
+        }
+
+        /// The grid predicates equal the exact ones whenever the points qualify as a small
+        /// integer grid (and the check refuses every other quadruple it is shown).
+        #[test]
+        fn grid_paths_equal_the_exact_predicates(q in quad()) {
+            if small_integer_grid(&q) {
+                let [a, b, c, d] = q;
+                prop_assert_eq!(orient_grid(a, b, c), k_orient(a, b, c));
+                prop_assert_eq!(orient_grid(d, a, c), k_orient(d, a, c));
+                prop_assert_eq!(in_circle_grid(a, b, c, d), k_incircle(a, b, c, d));
+                prop_assert_eq!(in_circle_grid(b, d, c, a), k_incircle(b, d, c, a));
+            }
+        }
+
+        #[test]
+        fn fast_paths_on_lattice_circles(q in lattice_circle()) {
+            let [a, b, c, d] = q;
+            prop_assert_eq!(orient(a, b, c), k_orient(a, b, c));
+            prop_assert_eq!(in_circle(a, b, c, d), k_incircle(a, b, c, d));
+            if small_integer_grid(&q) {
+                prop_assert_eq!(in_circle_grid(a, b, c, d), k_incircle(a, b, c, d));
+            }
+        }
+    }
+
+    #[test]
+    fn small_integer_grid_limits() {
+        let p = |x: f64, y: f64| Point2::new(x, y);
+        assert!(small_integer_grid(&[
+            p(0.0, 0.0),
+            p(4096.0, -4096.0 + 4096.0)
+        ]));
+        assert!(small_integer_grid(&[
+            p(-2048.0, 1e18),
+            p(2048.0, 1e18 + 4096.0)
+        ]));
+        assert!(!small_integer_grid(&[p(0.0, 0.0), p(4097.0, 0.0)]));
+        assert!(!small_integer_grid(&[p(0.0, 0.0), p(0.5, 0.0)]));
+        // Beyond 2^53 neighbouring integers are 2 or more apart; still exact differences.
+        assert!(small_integer_grid(&[
+            p(2f64.powi(60), 0.0),
+            p(2f64.powi(60) + 4096.0, 0.0)
+        ]));
+        assert!(!small_integer_grid(&[
+            p(2f64.powi(60), 0.0),
+            p(2f64.powi(60) + 8192.0, 0.0)
+        ]));
+        // Integers beyond 2^63 are refused (conservatively) by the integer test.
+        assert!(!small_integer_grid(&[p(2f64.powi(70), 0.0)]));
+        // The extreme corners: every difference at the limit, lifts and terms the largest.
+        let g = [
+            p(0.0, 0.0),
+            p(4096.0, 0.0),
+            p(4096.0, 4096.0),
+            p(0.0, 4096.0),
+        ];
+        assert!(small_integer_grid(&g));
+        assert_eq!(in_circle_grid(g[0], g[1], g[2], g[3]), 0);
+        assert_eq!(in_circle_grid(g[0], g[1], g[2], p(2048.0, 2048.0)), 1);
+        assert_eq!(
+            in_circle_grid(g[0], g[1], p(4096.0, 4095.0), g[3]),
+            k_incircle(g[0], g[1], p(4096.0, 4095.0), g[3])
         );
     }
 }

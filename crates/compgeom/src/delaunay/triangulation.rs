@@ -1,6 +1,6 @@
 //! [`Triangulation`]: the compact result type (vertex, triangle and neighbour arrays).
 
-use super::mesh::Mesh;
+use super::mesh::{Mesh, GHOST};
 use crate::{Error, Point2, Result};
 use std::collections::HashMap;
 
@@ -172,25 +172,86 @@ impl Triangulation {
                 ..Default::default()
             };
         };
-        let slots = m.slots();
-        let mut tri_id = vec![NO_NEIGHBOR; slots as usize];
+        let (v, twin) = (&m.v[..], &m.twin[..]);
+        let real = |h: usize| v[h] != GHOST && v[h + 1] != GHOST && v[h + 2] != GHOST;
+        let mut tri_id = vec![NO_NEIGHBOR; v.len() / 3];
         let mut count = 0u32;
-        for t in 0..slots {
-            if !m.is_ghost(t) {
-                tri_id[t as usize] = count;
+        for (t, id) in tri_id.iter_mut().enumerate() {
+            if real(3 * t) {
+                *id = count;
                 count += 1;
             }
         }
+        // List the triangles by the curve rank of their first corner (a counting sort), when
+        // every vertex has one: the slots themselves follow the insertion rounds, which
+        // visit the whole set several times.
+        let rank = &m.rank;
+        if rank.len() == m.pts.len() && !rank.is_empty() {
+            let mut start = vec![0u32; rank.len() + 1];
+            for (t, &id) in tri_id.iter().enumerate() {
+                if id != NO_NEIGHBOR {
+                    start[rank[v[3 * t] as usize] as usize + 1] += 1;
+                }
+            }
+            for k in 1..start.len() {
+                start[k] += start[k - 1];
+            }
+            for (t, id) in tri_id.iter_mut().enumerate() {
+                if *id != NO_NEIGHBOR {
+                    let slot = &mut start[rank[v[3 * t] as usize] as usize];
+                    *id = *slot;
+                    *slot += 1;
+                }
+            }
+            let mut triangles = vec![[0u32; 3]; count as usize];
+            let mut neighbors = vec![[0u32; 3]; count as usize];
+            let identity = vertices.len() == pts.len();
+            for (t, &id) in tri_id.iter().enumerate() {
+                if id == NO_NEIGHBOR {
+                    continue;
+                }
+                let h = 3 * t;
+                let (a, b, c) = (v[h], v[h + 1], v[h + 2]);
+                triangles[id as usize] = if identity {
+                    [a, b, c]
+                } else {
+                    [new_id[a as usize], new_id[b as usize], new_id[c as usize]]
+                };
+                neighbors[id as usize] = [
+                    tri_id[(twin[h + 1] / 3) as usize],
+                    tri_id[(twin[h + 2] / 3) as usize],
+                    tri_id[(twin[h] / 3) as usize],
+                ];
+            }
+            return Triangulation {
+                vertices,
+                triangles,
+                neighbors,
+                input_to_vertex,
+            };
+        }
         let mut triangles = Vec::with_capacity(count as usize);
         let mut neighbors = Vec::with_capacity(count as usize);
-        for t in 0..slots {
-            if tri_id[t as usize] == NO_NEIGHBOR {
+        // Without merged points the numbering is the identity (first-seen order = input
+        // order), so the triples are copied as they are.
+        let identity = vertices.len() == pts.len();
+        for (t, &id) in tri_id.iter().enumerate() {
+            if id == NO_NEIGHBOR {
                 continue;
             }
-            let h = 3 * t as usize;
-            triangles.push([0, 1, 2].map(|k| new_id[m.v[h + k] as usize]));
+            let h = 3 * t;
+            let (a, b, c) = (v[h], v[h + 1], v[h + 2]);
+            triangles.push(if identity {
+                [a, b, c]
+            } else {
+                [new_id[a as usize], new_id[b as usize], new_id[c as usize]]
+            });
             // Neighbour opposite vertex i = across half-edge i + 1.
-            neighbors.push([1, 2, 0].map(|k| tri_id[(m.twin[h + k] / 3) as usize]));
+            neighbors.push([
+                tri_id[(twin[h + 1] / 3) as usize],
+                tri_id[(twin[h + 2] / 3) as usize],
+                tri_id[(twin[h] / 3) as usize],
+            ]);
         }
         Triangulation {
             vertices,
@@ -260,7 +321,7 @@ pub(crate) fn neighbours_of(triangles: &[[u32; 3]]) -> Vec<[u32; 3]> {
 /// Vertices in first-seen order: (vertices, input → vertex, representative → vertex).
 fn number_vertices(pts: &[Point2], rep: &[u32]) -> (Vec<Point2>, Vec<u32>, Vec<u32>) {
     let mut new_id = vec![NO_NEIGHBOR; pts.len()];
-    let mut vertices = Vec::new();
+    let mut vertices = Vec::with_capacity(pts.len());
     let mut input_to_vertex = Vec::with_capacity(pts.len());
     for (i, &r) in rep.iter().enumerate() {
         let r = r as usize;

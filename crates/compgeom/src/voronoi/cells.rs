@@ -30,6 +30,7 @@
 use super::clip::{cut, ClipRegion};
 use super::diagram::{HalfEdge, Vertex, VoronoiDiagram};
 use super::predicates::circumcentre;
+use crate::delaunay::pred::{in_circle_grid, small_integer_grid};
 use crate::delaunay::{delaunay, Triangulation, NO_NEIGHBOR};
 use crate::kernel::{compare_xy, incircle, CircleSide, Point2};
 use crate::Result;
@@ -330,6 +331,9 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
 fn group(t: &Triangulation, centres: Vec<Point2>) -> (Option<Vec<u32>>, Vec<Point2>) {
     let (tris, nbr, pts) = (t.triangles(), t.neighbors(), t.vertices());
     let nt = tris.len();
+    // On a small integer grid (all squares cocircular, the filter failing on each) the
+    // unfiltered grid in-circle test is exact (see `delaunay::pred`).
+    let grid = small_integer_grid(pts);
     let mut parent: Vec<u32> = Vec::new();
     for (a, tri) in tris.iter().enumerate() {
         for i in 0..3 {
@@ -343,7 +347,13 @@ fn group(t: &Triangulation, centres: Vec<Point2>) -> (Option<Vec<u32>>, Vec<Poin
                 continue;
             };
             let p = |x: u32| pts[x as usize];
-            if cocircular(p(tri[0]), p(tri[1]), p(tri[2]), p(d)) {
+            let (pa, pb, pc, pd) = (p(tri[0]), p(tri[1]), p(tri[2]), p(d));
+            let on_circle = if grid {
+                in_circle_grid(pa, pb, pc, pd) == 0
+            } else {
+                cocircular(pa, pb, pc, pd)
+            };
+            if on_circle {
                 if parent.is_empty() {
                     parent = (0..nt as u32).collect();
                 }
@@ -532,7 +542,8 @@ pub(crate) fn cocircular(a: Point2, b: Point2, c: Point2, d: Point2) -> bool {
 #[inline]
 fn small_integers(v: &[f64; 8]) -> bool {
     const LIMIT: f64 = 2048.0;
-    v.iter().all(|&x| x.abs() < LIMIT && x == x.trunc())
+    // `(x as i64) as f64 == x` is the integer test without a `trunc` library call.
+    v.iter().all(|&x| x.abs() < LIMIT && (x as i64) as f64 == x)
 }
 
 #[cfg(test)]
