@@ -285,24 +285,11 @@ pub fn range_picture(
         .points(points),
     );
     if !rects.is_empty() {
-        let mut layer = Layer::new(
+        pic.add(query_rect_layer(
             format!("query rectangles ({})", rects.len()),
-            Style::area("#1f77b4").with_fill_opacity(0.08),
-        );
-        for r in rects.iter().filter(|r| !r.is_empty()) {
-            // A point rectangle would draw as nothing.
-            if r.min == r.max {
-                layer = layer.point(r.min);
-            } else {
-                layer = layer.ring(&[
-                    r.min,
-                    Point2::new(r.max.x, r.min.y),
-                    r.max,
-                    Point2::new(r.min.x, r.max.y),
-                ]);
-            }
-        }
-        pic.add(layer);
+            rects,
+            0.08,
+        ));
     }
     if !probes.is_empty() {
         let links: Vec<Segment2> = probes
@@ -340,4 +327,23 @@ pub fn range_picture(
         );
     }
     pic
+}
+
+/// The query rectangles as one picture layer; a point rectangle (which would draw as
+/// nothing) is drawn as a point, an empty one not at all. Shared with `window`.
+pub(crate) fn query_rect_layer(name: String, rects: &[Bbox2], fill_opacity: f64) -> Layer {
+    let mut layer = Layer::new(name, Style::area("#1f77b4").with_fill_opacity(fill_opacity));
+    for r in rects.iter().filter(|r| !r.is_empty()) {
+        if r.min == r.max {
+            layer = layer.point(r.min);
+        } else {
+            layer = layer.ring(&[
+                r.min,
+                Point2::new(r.max.x, r.min.y),
+                r.max,
+                Point2::new(r.min.x, r.max.y),
+            ]);
+        }
+    }
+    layer
 }

@@ -9,7 +9,7 @@ use compgeom::io::write_segments;
 use compgeom::range::read_rects;
 use compgeom::render::{Layer, Picture, Style};
 use compgeom::windowing::{AxisParallelWindow, SegmentWindow};
-use compgeom::{Bbox2, Point2, Segment2};
+use compgeom::{Bbox2, Segment2};
 use serde::Serialize;
 use std::path::PathBuf;
 
@@ -177,23 +177,11 @@ pub fn window_picture(
         ),
         segments,
     ));
-    let mut layer = Layer::new(
+    pic.add(super::range::query_rect_layer(
         format!("query windows ({})", rects.len()),
-        Style::area("#1f77b4").with_fill_opacity(0.1),
-    );
-    for r in rects.iter().filter(|r| !r.is_empty()) {
-        if r.min == r.max {
-            layer = layer.point(r.min);
-        } else {
-            layer = layer.ring(&[
-                r.min,
-                Point2::new(r.max.x, r.min.y),
-                r.max,
-                Point2::new(r.min.x, r.max.y),
-            ]);
-        }
-    }
-    pic.add(layer);
+        rects,
+        0.1,
+    ));
     let mut ids = reported.to_vec();
     ids.sort_unstable();
     ids.dedup();
