@@ -12,7 +12,7 @@ use crate::kernel::arith::Arith;
 use crate::kernel::exact::Dyadic;
 use crate::kernel::filter::Bounded;
 use crate::kernel::{incircle, orient2d, CircleSide, Orientation};
-use crate::Point2;
+use crate::{Bbox2, Point2};
 use std::cmp::Ordering;
 
 const EPS: f64 = f64::EPSILON / 2.0;
@@ -111,14 +111,8 @@ pub(crate) fn small_integer_grid(pts: &[Point2]) -> bool {
     if !integral(pts) {
         return false;
     }
-    let (mut x0, mut y0, mut x1, mut y1) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
-    for p in pts {
-        x0 = x0.min(p.x);
-        y0 = y0.min(p.y);
-        x1 = x1.max(p.x);
-        y1 = y1.max(p.y);
-    }
-    x1 - x0 <= GRID_SPAN && y1 - y0 <= GRID_SPAN
+    let b = Bbox2::of_points(pts);
+    b.max.x - b.min.x <= GRID_SPAN && b.max.y - b.min.y <= GRID_SPAN
 }
 
 /// [`orient`] for points of a [`small_integer_grid`], without a filter: every coordinate
