@@ -9,7 +9,11 @@ fn main() {
     for p in &found.points {
         println!(
             "{:?} segments {:?} U {:?} L {:?} C {:?}",
-            p.point, p.segments, p.upper, p.lower, p.interior
+            p.point,
+            p.segments(),
+            p.upper(),
+            p.lower(),
+            p.interior()
         );
     }
 }

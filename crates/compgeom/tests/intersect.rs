@@ -8,7 +8,7 @@ use compgeom::intersect::{
     sweep_intersections, sweep_intersections_with_stats, sweep_status_at, verify_intersections,
     IntersectAlgorithm, IntersectionCount, Intersections, Overlap,
 };
-use compgeom::kernel::{segment_intersection, SegmentIntersection};
+use compgeom::kernel::{orient2d, segment_intersection, Orientation, SegmentIntersection};
 use compgeom::{Error, Point2, Polygon, Segment2};
 use proptest::prelude::*;
 
@@ -43,8 +43,8 @@ fn checked(segs: &[Segment2]) -> Intersections {
     for (f, e) in found.points.iter().zip(&expected.points) {
         assert_eq!(f.point, e.point, "{segs:?}");
         assert_eq!(
-            (&f.segments, &f.upper, &f.lower, &f.interior),
-            (&e.segments, &e.upper, &e.lower, &e.interior),
+            (f.segments(), f.upper(), f.lower(), f.interior()),
+            (e.segments(), e.upper(), e.lower(), e.interior()),
             "at {:?} for {segs:?}",
             f.point
         );
@@ -65,21 +65,31 @@ fn checked(segs: &[Segment2]) -> Intersections {
         let got = count_intersections_with(segs, how).unwrap();
         assert_eq!(got, want, "{how:?} count for {segs:?}");
     }
-    rounded_by_the_kernel(&expected);
+    rounded_by_the_kernel(segs, &expected);
     found
 }
 
 /// Every reported point is the kernel's correctly rounded point of its exact point
 /// (`ExactPoint::approx`, independent of the fast rounding the methods use), bit for bit.
-fn rounded_by_the_kernel(found: &Intersections) {
+fn rounded_by_the_kernel(segs: &[Segment2], found: &Intersections) {
     for p in &found.points {
-        let want = p.exact.approx();
+        let exact = p.exact(segs);
+        let want = exact.approx();
         assert_eq!(
             (p.point.x.to_bits(), p.point.y.to_bits()),
             (want.x.to_bits(), want.y.to_bits()),
-            "{:?}",
-            p.exact
+            "{exact:?}"
         );
+        // A crossing is no input point, and its defining pair is two of its segments
+        // that are not collinear (so they meet in that one point only).
+        if let Some((i, j)) = p.crossing_pair() {
+            assert!(p.upper().is_empty() && p.lower().is_empty(), "{p:?}");
+            assert_eq!(p.interior(), p.segments(), "{p:?}");
+            assert!(i < j && p.segments().contains(&j), "{p:?}");
+            let (s, t) = (segs[i], segs[j]);
+            let on_line = |q| orient2d(s.a, s.b, q) == Orientation::Collinear;
+            assert!(!(on_line(t.a) && on_line(t.b)), "{p:?}");
+        }
     }
 }
 
@@ -90,7 +100,7 @@ fn a_proper_crossing_is_rounded_to_nearest() {
     let found = checked(&[s(0.0, 0.0, 3.0, 1.0), s(0.0, 1.0, 3.0, 0.0)]);
     assert_eq!(found.points.len(), 1);
     assert_eq!(found.points[0].point, p(1.5, 0.5));
-    assert_eq!(found.points[0].interior, vec![0, 1]);
+    assert_eq!(found.points[0].interior(), vec![0, 1]);
     // A crossing at x = 1/3: reported as the nearest double.
     let found = checked(&[s(0.0, 0.0, 1.0, 3.0), s(0.0, 1.0, 1.0, 0.0)]);
     assert_eq!(found.points[0].point, p(0.25, 0.75));
@@ -114,10 +124,10 @@ fn upper_lower_interior_follow_the_book() {
     assert_eq!(found.points.len(), 1);
     let q = &found.points[0];
     assert_eq!(q.point, p(2.0, 2.0));
-    assert_eq!(q.segments, vec![0, 1, 2, 3]);
-    assert_eq!(q.upper, vec![1, 3]);
-    assert_eq!(q.lower, vec![0]);
-    assert_eq!(q.interior, vec![2]);
+    assert_eq!(q.segments(), vec![0, 1, 2, 3]);
+    assert_eq!(q.upper(), vec![1, 3]);
+    assert_eq!(q.lower(), vec![0]);
+    assert_eq!(q.interior(), vec![2]);
 }
 
 #[test]
@@ -198,10 +208,10 @@ fn zero_length_and_duplicate_segments() {
         .iter()
         .find(|q| q.point == p(1.0, 1.0))
         .unwrap();
-    assert_eq!(q.segments, vec![0, 1, 2, 4]);
-    assert_eq!(q.upper, vec![0, 1]);
-    assert_eq!(q.lower, vec![0, 1]);
-    assert_eq!(q.interior, vec![2, 4]);
+    assert_eq!(q.segments(), vec![0, 1, 2, 4]);
+    assert_eq!(q.upper(), vec![0, 1]);
+    assert_eq!(q.lower(), vec![0, 1]);
+    assert_eq!(q.interior(), vec![2, 4]);
     assert!(found.points.iter().all(|q| q.point != p(5.0, 5.0)));
     assert_eq!(found.overlaps.len(), 1);
     assert_eq!(found.overlaps[0].segments, vec![2, 4]);
@@ -580,10 +590,10 @@ proptest! {
         let expected: Vec<(Point2, Vec<usize>, Vec<usize>)> = oracle
             .points
             .iter()
-            .filter(|q| q.segments.iter().any(|&i| i < r) && q.segments.iter().any(|&i| i >= r))
+            .filter(|q| q.segments().iter().any(|&i| i < r) && q.segments().iter().any(|&i| i >= r))
             .map(|q| {
-                let reds = q.segments.iter().copied().filter(|&i| i < r).collect();
-                let blues = q.segments.iter().filter(|&&i| i >= r).map(|i| i - r).collect();
+                let reds = q.segments().iter().copied().filter(|&i| i < r).collect();
+                let blues = q.segments().iter().filter(|&&i| i >= r).map(|i| i - r).collect();
                 (q.point, reds, blues)
             })
             .collect();
@@ -678,7 +688,7 @@ fn many_crossings_are_rounded_in_parallel_with_the_same_answer() {
     let segs: Vec<Segment2> = (0..1000).map(|_| s(0.0, unit(), 1.0, unit())).collect();
     let by_pairs = pairwise_intersections(&segs).unwrap();
     assert!(by_pairs.points.len() > 200_000);
-    rounded_by_the_kernel(&by_pairs);
+    rounded_by_the_kernel(&segs, &by_pairs);
     assert_eq!(by_pairs, sweep_intersections(&segs).unwrap());
     let count = count_intersections(&segs).unwrap();
     assert_eq!(
@@ -726,6 +736,6 @@ fn counting_merges_crossings_that_coincide_exactly() {
         .iter()
         .find(|q| q.point == p(third, third))
         .expect("the common point");
-    assert_eq!(star.segments, (0..10).collect::<Vec<_>>());
-    assert_eq!(star.interior, (0..10).collect::<Vec<_>>());
+    assert_eq!(star.segments(), (0..10).collect::<Vec<_>>());
+    assert_eq!(star.interior(), (0..10).collect::<Vec<_>>());
 }

@@ -159,7 +159,7 @@ fn kinks(paths: &[Path2]) -> Vec<Point2> {
 }
 
 fn non_adjacent_pair(segs: &[Segment2], of: &[EdgeOf], p: &IntersectionPoint) -> bool {
-    let s = &p.segments;
+    let s = p.segments();
     (0..s.len()).any(|x| (x + 1..s.len()).any(|y| !adjacent_at(segs, of, s[x], s[y], p.point)))
 }
 
@@ -277,7 +277,8 @@ fn turf_line_intersect() {
             .points
             .iter()
             .filter(|p| {
-                p.segments.iter().any(|&i| i < a.len()) && p.segments.iter().any(|&i| i >= a.len())
+                p.segments().iter().any(|&i| i < a.len())
+                    && p.segments().iter().any(|&i| i >= a.len())
             })
             .map(|p| p.point)
             .collect();
@@ -449,7 +450,7 @@ fn lines_simple(lines: &[Vec<Point2>]) -> bool {
         return false;
     }
     let bad = any_intersection_where(&segs, |p| {
-        let s = &p.segments;
+        let s = p.segments();
         (0..s.len()).any(|x| {
             (x + 1..s.len()).any(|y| {
                 let (i, j) = (s[x], s[y]);

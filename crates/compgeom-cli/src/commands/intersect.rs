@@ -189,10 +189,10 @@ pub fn run(args: &IntersectArgs) -> Result<(), CliError> {
                 .iter()
                 .map(|p| PointJson {
                     point: xy(p.point),
-                    segments: p.segments.to_vec(),
-                    upper: p.upper.to_vec(),
-                    lower: p.lower.to_vec(),
-                    interior: p.interior.to_vec(),
+                    segments: p.segments().to_vec(),
+                    upper: p.upper().to_vec(),
+                    lower: p.lower().to_vec(),
+                    interior: p.interior().to_vec(),
                 })
                 .collect(),
             overlaps: found

@@ -185,7 +185,7 @@ impl Flat {
         // Interior points per segment, flat (counted first).
         let mut in_start = vec![0u32; m + 1];
         for p in &found.points {
-            for &s in &p.interior {
+            for &s in p.interior() {
                 in_start[s + 1] += 1;
             }
         }
@@ -195,15 +195,15 @@ impl Flat {
         let mut fill: Vec<u32> = in_start[..m].to_vec();
         let mut inner = vec![0u32; in_start[m] as usize];
         for (id, p) in found.points.iter().enumerate() {
-            vertices.push(p.exact);
+            vertices.push(p.exact(&sub));
             let id = id as u32;
-            for &s in &p.upper {
+            for &s in p.upper() {
                 up_v[s] = id;
             }
-            for &s in &p.lower {
+            for &s in p.lower() {
                 low_v[s] = id;
             }
-            for &s in &p.interior {
+            for &s in p.interior() {
                 inner[fill[s] as usize] = id;
                 fill[s] += 1;
             }

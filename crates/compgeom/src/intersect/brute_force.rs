@@ -6,11 +6,12 @@
 //! O(n² + K log K) time for K meeting pairs, O(n + K) space.
 
 use super::bucket;
+use super::list::defining_second;
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
 use super::round::round_crossing;
 use super::small_int::{self, Hom};
 use super::sweep::check_finite;
-use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap, SegmentList};
+use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
 use crate::kernel::{
     quick_crossing_static, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
     SegmentIntersection,
@@ -269,36 +270,15 @@ fn exact_groups(segments: &[Segment2], run: &mut [Record]) -> Vec<usize> {
 /// One intersection point from the records of the pairs that meet there.
 fn point_of(segments: &[Segment2], segs: &[Oriented], group: &[Record]) -> IntersectionPoint {
     let first = group[0];
-    if group.len() == 1 {
-        // The common cases, without allocating: two segments crossing properly, or
-        // meeting at one input point.
-        let (i, j) = (first.i(), first.j());
-        let pair = SegmentList::pair(i, j);
-        if first.is_crossing() {
-            return IntersectionPoint {
-                point: first.point(),
-                exact: first.exact(segments),
-                interior: pair.clone(),
-                segments: pair,
-                upper: SegmentList::new(),
-                lower: SegmentList::new(),
-            };
-        }
+    if group.len() == 1 && first.is_crossing() {
+        // The common case, without allocating: two segments crossing properly.
+        return IntersectionPoint::crossing(first.point(), first.i(), first.j());
     }
-    // Prefer the input-point representation when the point is an endpoint.
+    // The point is an input point when any pair meets there at an endpoint.
     let at = group.iter().find(|r| !r.is_crossing()).map(Record::point);
-    let exact = match at {
-        Some(q) => ExactPoint::Input(q),
-        None => first.exact(segments),
-    };
-    let all: SegmentList = if group.len() == 1 {
-        SegmentList::pair(first.i(), first.j())
-    } else {
-        let mut all: Vec<usize> = group.iter().flat_map(|r| [r.i(), r.j()]).collect();
-        all.sort_unstable();
-        all.dedup();
-        all.into()
-    };
+    let mut all: Vec<usize> = group.iter().flat_map(|r| [r.i(), r.j()]).collect();
+    all.sort_unstable();
+    all.dedup();
     // A segment's role at the point: upper end, lower end (both for a zero-length
     // segment), or interior. At a crossing that is no input point, every segment is
     // interior.
@@ -306,18 +286,14 @@ fn point_of(segments: &[Segment2], segs: &[Oriented], group: &[Record]) -> Inter
         Some(q) => (segs[s].upper == q, segs[s].lower == q),
         None => (false, false),
     };
-    IntersectionPoint {
-        point: first.point(),
-        exact,
-        upper: all.iter().copied().filter(|&s| role(s).0).collect(),
-        lower: all.iter().copied().filter(|&s| role(s).1).collect(),
-        interior: all
-            .iter()
-            .copied()
-            .filter(|&s| role(s) == (false, false))
-            .collect(),
-        segments: all,
-    }
+    let pick = |keep: &dyn Fn((bool, bool)) -> bool| -> Vec<usize> {
+        all.iter().copied().filter(|&s| keep(role(s))).collect()
+    };
+    let upper = pick(&|r| r.0);
+    let lower = pick(&|r| r.1);
+    let interior = pick(&|r| r == (false, false));
+    let second = at.is_none().then(|| defining_second(&all, |k| segments[k]));
+    IntersectionPoint::new(first.point(), &all, [&upper, &lower, &interior], second)
 }
 
 fn find(parent: &mut [usize], mut i: usize) -> usize {
@@ -406,7 +382,7 @@ pub fn verify_intersections(segments: &[Segment2], found: &Intersections) -> Res
         ));
     }
     for (k, (f, e)) in found.points.iter().zip(&expected.points).enumerate() {
-        let same_point = EventPoint::new(f.exact) == EventPoint::new(e.exact);
+        let same_point = EventPoint::new(f.exact(segments)) == EventPoint::new(e.exact(segments));
         if !same_point || f.point != e.point {
             return fail(format!(
                 "intersection point {k} is ({}, {}), expected ({}, {})",
@@ -414,10 +390,10 @@ pub fn verify_intersections(segments: &[Segment2], found: &Intersections) -> Res
             ));
         }
         let fields = [
-            ("segments", &f.segments, &e.segments),
-            ("upper", &f.upper, &e.upper),
-            ("lower", &f.lower, &e.lower),
-            ("interior", &f.interior, &e.interior),
+            ("segments", f.segments(), e.segments()),
+            ("upper", f.upper(), e.upper()),
+            ("lower", f.lower(), e.lower()),
+            ("interior", f.interior(), e.interior()),
         ];
         for (name, a, b) in fields {
             if a != b {

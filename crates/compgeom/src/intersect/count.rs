@@ -236,7 +236,7 @@ struct Tally {
 impl Sink for Tally {
     fn point(&mut self, point: IntersectionPoint) -> Flow {
         self.points += 1;
-        let s = &point.segments;
+        let s = point.segments();
         for (k, &i) in s.iter().enumerate() {
             self.pairs
                 .extend(s[k + 1..].iter().map(|&j| (i as u32, j as u32)));

@@ -1,206 +1,245 @@
-//! [`SegmentList`]: the segment lists of an intersection point, kept inline when short.
+//! [`IntersectionPoint`]: one reported point, kept small.
 //!
-//! Nearly every intersection point of real input is two segments crossing: lists of
-//! two entries (`segments`, `interior`) and two empty ones. Holding such lists inline
-//! instead of in a `Vec` each saves two heap allocations per reported crossing (with
-//! hundreds of thousands of crossings, the allocator was a tenth of the running time).
+//! Dense inputs report hundreds of thousands of points, nearly all of them two segments
+//! crossing. The record is 56 bytes: the rounded point, the four segment lists, and which
+//! two segments define the point when it is a crossing (the exact point is rebuilt from
+//! them on demand, [`IntersectionPoint::exact`], instead of carrying two copies of the
+//! segments). Writing the records was most of the cost of the dense case when they were
+//! 184 bytes (the memory is fresh, so every page is a fault).
+//!
+//! The lists: with at most two segments every list is a sub-slice of the sorted pair
+//! (`[]`, `[i]`, `[j]` or `[i, j]`), so they are kept inline as ranges into it (no heap
+//! allocation: a crossing, a shared endpoint, an endpoint on another segment). With more
+//! segments one heap slice holds `segments ++ upper ++ lower ++ interior`.
 
+use crate::kernel::{orient2d, Crossing, ExactPoint, Orientation, Point2, Segment2};
 use std::fmt;
-use std::ops::Deref;
 
-/// How many indices a list holds without a heap allocation.
-const INLINE: usize = 2;
-
-/// A list of segment indices (ascending where [`super::IntersectionPoint`] says so).
-///
-/// Reads as a slice (`Deref<Target = [usize]>`): `list.len()`, `list[0]`,
-/// `list.iter()`, `&list[..]`; compares equal to a `Vec`, an array or a slice with the
-/// same entries. Lists of up to two entries are stored inline (no allocation).
-///
-/// ```
-/// use compgeom::intersect::SegmentList;
-/// let l = SegmentList::from(vec![3, 7]);
-/// assert_eq!(l, vec![3, 7]);
-/// assert_eq!(l, [3, 7]);
-/// assert_eq!(l.iter().sum::<usize>(), 10);
-/// assert_eq!(format!("{l:?}"), "[3, 7]");
-/// ```
-#[derive(Clone)]
-pub struct SegmentList(Repr);
+/// Marks a record that is an input point ([`IntersectionPoint::second`]).
+const INPUT: u32 = u32::MAX;
 
 #[derive(Clone)]
-enum Repr {
-    Inline { len: u8, items: [usize; INLINE] },
-    Heap(Box<[usize]>),
+enum Lists {
+    /// At most two segments, sorted in `ids[..len]`; `ranges` are the sub-slices of U(p),
+    /// L(p) and C(p).
+    Inline {
+        ids: [usize; 2],
+        len: u8,
+        ranges: [[u8; 2]; 3],
+    },
+    /// `segments ++ upper ++ lower ++ interior`; `ends` are where the first three end.
+    Heap { ids: Box<[usize]>, ends: [u32; 3] },
 }
 
-impl SegmentList {
-    /// The empty list.
-    pub const fn new() -> Self {
-        SegmentList(Repr::Inline {
-            len: 0,
-            items: [0; INLINE],
-        })
-    }
-
-    /// The list `[a, b]` (no allocation).
-    pub const fn pair(a: usize, b: usize) -> Self {
-        SegmentList(Repr::Inline {
-            len: 2,
-            items: [a, b],
-        })
-    }
-
-    /// The list of the given indices, in the given order.
-    pub fn from_slice(items: &[usize]) -> Self {
-        if items.len() <= INLINE {
-            let mut inline = [0; INLINE];
-            inline[..items.len()].copy_from_slice(items);
-            SegmentList(Repr::Inline {
-                len: items.len() as u8,
-                items: inline,
-            })
-        } else {
-            SegmentList(Repr::Heap(items.into()))
-        }
-    }
-
-    /// The entries as a slice.
-    pub fn as_slice(&self) -> &[usize] {
-        match &self.0 {
-            Repr::Inline { len, items } => &items[..usize::from(*len)],
-            Repr::Heap(items) => items,
-        }
-    }
-
-    /// The entries as a `Vec`.
-    pub fn to_vec(&self) -> Vec<usize> {
-        self.as_slice().to_vec()
-    }
+/// A point where two or more segments meet, with the segments through it.
+///
+/// The lists are slices, ascending: [`segments`](Self::segments) (all of them),
+/// [`upper`](Self::upper) U(p), [`lower`](Self::lower) L(p) and
+/// [`interior`](Self::interior) C(p). A point is either an input point (an endpoint of
+/// some segment; then [`point`](Self::point) is it exactly) or a proper crossing, whose
+/// exact point [`exact`](Self::exact) rebuilds from the two segments that define it.
+///
+/// Two values are equal when they have the same rounded point, the same lists and the same
+/// defining pair. For results on the same input that is the same exact point: a crossing's
+/// segments include two that are not collinear, and those meet in one point only.
+///
+/// ```
+/// use compgeom::intersect::find_intersections;
+/// use compgeom::{Point2, Segment2};
+/// let s = |a: (f64, f64), b: (f64, f64)| Segment2::new(a.into(), b.into());
+/// let segs = [s((0.0, 0.0), (3.0, 1.0)), s((0.0, 1.0), (3.0, 0.0))];
+/// let found = find_intersections(&segs).unwrap();
+/// let p = &found.points[0];
+/// assert_eq!(p.point, Point2::new(1.5, 0.5));
+/// assert_eq!(p.segments(), [0, 1]);
+/// assert_eq!(p.interior(), [0, 1]);
+/// assert!(p.upper().is_empty() && p.lower().is_empty());
+/// assert_eq!(p.crossing_pair(), Some((0, 1)));
+/// assert_eq!(p.exact(&segs).approx(), p.point);
+/// ```
+#[derive(Clone)]
+pub struct IntersectionPoint {
+    /// The nearest `f64` point (the exact point for input points).
+    pub point: Point2,
+    lists: Lists,
+    /// For a crossing: the position in `segments()` of the defining pair's second
+    /// segment (the first is `segments()[0]`); [`INPUT`] for an input point.
+    second: u32,
 }
 
-impl Default for SegmentList {
-    fn default() -> Self {
-        SegmentList::new()
-    }
-}
-
-impl Deref for SegmentList {
-    type Target = [usize];
-    fn deref(&self) -> &[usize] {
-        self.as_slice()
-    }
-}
-
-impl AsRef<[usize]> for SegmentList {
-    fn as_ref(&self) -> &[usize] {
-        self.as_slice()
-    }
-}
-
-impl From<Vec<usize>> for SegmentList {
-    fn from(v: Vec<usize>) -> Self {
-        if v.len() <= INLINE {
-            SegmentList::from_slice(&v)
-        } else {
-            SegmentList(Repr::Heap(v.into_boxed_slice()))
+/// The position in a list of `u8` indices (lists of at most two).
+fn range_in(all: &[usize], part: &[usize]) -> [u8; 2] {
+    match part.first() {
+        None => [0, 0],
+        Some(first) => {
+            let start = all.iter().position(|s| s == first).unwrap_or(0);
+            [start as u8, (start + part.len()) as u8]
         }
     }
 }
 
-impl From<&[usize]> for SegmentList {
-    fn from(v: &[usize]) -> Self {
-        SegmentList::from_slice(v)
-    }
-}
-
-impl From<SegmentList> for Vec<usize> {
-    fn from(l: SegmentList) -> Self {
-        match l.0 {
-            Repr::Inline { .. } => l.as_slice().to_vec(),
-            Repr::Heap(items) => items.into_vec(),
+impl IntersectionPoint {
+    /// Two segments `i < j` crossing properly at `point` (no input point there).
+    #[inline]
+    pub(crate) fn crossing(point: Point2, i: usize, j: usize) -> IntersectionPoint {
+        IntersectionPoint {
+            point,
+            lists: Lists::Inline {
+                ids: [i, j],
+                len: 2,
+                ranges: [[0, 0], [0, 0], [0, 2]],
+            },
+            second: 1,
         }
     }
-}
 
-impl FromIterator<usize> for SegmentList {
-    /// Collects inline while the list is short: no allocation for up to two entries.
-    fn from_iter<I: IntoIterator<Item = usize>>(iter: I) -> Self {
-        let mut iter = iter.into_iter();
-        let mut items = [0; INLINE];
-        let mut len = 0;
-        for v in iter.by_ref() {
-            if len == INLINE {
-                let mut spill = items.to_vec();
-                spill.push(v);
-                spill.extend(iter);
-                return SegmentList(Repr::Heap(spill.into_boxed_slice()));
+    /// A point from its sorted lists (U, L and C subsets of `segments`). `second`: for
+    /// a crossing, the position in `segments` of the defining pair's second segment
+    /// ([`defining_second`]); `None` for an input point.
+    pub(crate) fn new(
+        point: Point2,
+        segments: &[usize],
+        [upper, lower, interior]: [&[usize]; 3],
+        second: Option<usize>,
+    ) -> IntersectionPoint {
+        let lists = if segments.len() <= 2 {
+            let mut ids = [0; 2];
+            ids[..segments.len()].copy_from_slice(segments);
+            // Every subset of a sorted list of two is a contiguous sub-slice of it.
+            Lists::Inline {
+                ids,
+                len: segments.len() as u8,
+                ranges: [
+                    range_in(segments, upper),
+                    range_in(segments, lower),
+                    range_in(segments, interior),
+                ],
             }
-            items[len] = v;
-            len += 1;
+        } else {
+            let mut ids =
+                Vec::with_capacity(segments.len() + upper.len() + lower.len() + interior.len());
+            let mut ends = [0u32; 3];
+            for (k, part) in [segments, upper, lower].into_iter().enumerate() {
+                ids.extend_from_slice(part);
+                ends[k] = ids.len() as u32;
+            }
+            ids.extend_from_slice(interior);
+            Lists::Heap {
+                ids: ids.into_boxed_slice(),
+                ends,
+            }
+        };
+        IntersectionPoint {
+            point,
+            lists,
+            second: second.map_or(INPUT, |k| k as u32),
         }
-        SegmentList(Repr::Inline {
-            len: len as u8,
-            items,
+    }
+
+    fn list(&self, k: usize) -> &[usize] {
+        match &self.lists {
+            Lists::Inline { ids, len, ranges } => {
+                if k == 0 {
+                    &ids[..usize::from(*len)]
+                } else {
+                    let [a, b] = ranges[k - 1];
+                    &ids[usize::from(a)..usize::from(b)]
+                }
+            }
+            Lists::Heap { ids, ends } => {
+                let start = if k == 0 { 0 } else { ends[k - 1] as usize };
+                let end = if k == 3 { ids.len() } else { ends[k] as usize };
+                &ids[start..end]
+            }
+        }
+    }
+
+    /// Every segment containing the point, ascending.
+    #[inline]
+    pub fn segments(&self) -> &[usize] {
+        self.list(0)
+    }
+
+    /// U(p): segments whose upper endpoint (first in sweep order) is the point, ascending.
+    #[inline]
+    pub fn upper(&self) -> &[usize] {
+        self.list(1)
+    }
+
+    /// L(p): segments whose lower endpoint is the point, ascending.
+    #[inline]
+    pub fn lower(&self) -> &[usize] {
+        self.list(2)
+    }
+
+    /// C(p): segments with the point in their interior, ascending.
+    #[inline]
+    pub fn interior(&self) -> &[usize] {
+        self.list(3)
+    }
+
+    /// Whether the point is a proper crossing (no input point lies there).
+    pub fn is_crossing(&self) -> bool {
+        self.second != INPUT
+    }
+
+    /// For a crossing, the two segments (ascending) that define it: the first of
+    /// [`segments`](Self::segments) and the next one not collinear with it.
+    pub fn crossing_pair(&self) -> Option<(usize, usize)> {
+        let s = self.segments();
+        self.is_crossing().then(|| (s[0], s[self.second as usize]))
+    }
+
+    /// The exact point: the input point, or the crossing of the two defining segments
+    /// taken from `segments`, the input the point was found in.
+    ///
+    /// # Panics
+    /// If `segments` is shorter than that input (not the input of this result).
+    pub fn exact(&self, segments: &[Segment2]) -> ExactPoint {
+        match self.crossing_pair() {
+            None => ExactPoint::Input(self.point),
+            Some((i, j)) => ExactPoint::Crossing(Crossing {
+                s: segments[i],
+                t: segments[j],
+            }),
+        }
+    }
+}
+
+/// The position in `list` (sorted segments through a crossing, at least two) of the
+/// first segment not collinear with `list[0]`: with `list[0]` the canonical defining
+/// pair of the crossing (two segments through a point that is no input point; not all
+/// of them lie on one line, else the point would be inside an overlap, not a crossing).
+pub(crate) fn defining_second(list: &[usize], segment: impl Fn(usize) -> Segment2) -> usize {
+    let s = segment(list[0]);
+    let collinear = |p| orient2d(s.a, s.b, p) == Orientation::Collinear;
+    list.iter()
+        .skip(1)
+        .position(|&k| {
+            let t = segment(k);
+            !(collinear(t.a) && collinear(t.b))
         })
-    }
+        .map_or(1, |k| k + 1)
 }
 
-impl<'a> IntoIterator for &'a SegmentList {
-    type Item = &'a usize;
-    type IntoIter = std::slice::Iter<'a, usize>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.as_slice().iter()
-    }
-}
-
-impl fmt::Debug for SegmentList {
+impl fmt::Debug for IntersectionPoint {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_list().entries(self.as_slice()).finish()
+        f.debug_struct("IntersectionPoint")
+            .field("point", &self.point)
+            .field("segments", &self.segments())
+            .field("upper", &self.upper())
+            .field("lower", &self.lower())
+            .field("interior", &self.interior())
+            .field("crossing_pair", &self.crossing_pair())
+            .finish()
     }
 }
 
-impl PartialEq for SegmentList {
+impl PartialEq for IntersectionPoint {
     fn eq(&self, other: &Self) -> bool {
-        self.as_slice() == other.as_slice()
-    }
-}
-
-impl Eq for SegmentList {}
-
-impl std::hash::Hash for SegmentList {
-    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
-        self.as_slice().hash(state);
-    }
-}
-
-impl PartialEq<[usize]> for SegmentList {
-    fn eq(&self, other: &[usize]) -> bool {
-        self.as_slice() == other
-    }
-}
-
-impl PartialEq<&[usize]> for SegmentList {
-    fn eq(&self, other: &&[usize]) -> bool {
-        self.as_slice() == *other
-    }
-}
-
-impl PartialEq<Vec<usize>> for SegmentList {
-    fn eq(&self, other: &Vec<usize>) -> bool {
-        self.as_slice() == other.as_slice()
-    }
-}
-
-impl<const N: usize> PartialEq<[usize; N]> for SegmentList {
-    fn eq(&self, other: &[usize; N]) -> bool {
-        self.as_slice() == other.as_slice()
-    }
-}
-
-impl PartialEq<SegmentList> for Vec<usize> {
-    fn eq(&self, other: &SegmentList) -> bool {
-        self.as_slice() == other.as_slice()
+        self.point == other.point
+            && self.second == other.second
+            && (0..4).all(|k| self.list(k) == other.list(k))
     }
 }
 
@@ -209,22 +248,62 @@ mod tests {
     use super::*;
 
     #[test]
-    fn inline_and_heap_lists_read_alike() {
-        for n in 0..6 {
-            let v: Vec<usize> = (0..n).map(|k| 10 * k + 1).collect();
-            let a = SegmentList::from(v.clone());
-            let b: SegmentList = v.iter().copied().collect();
-            let c = SegmentList::from_slice(&v);
-            assert_eq!(a, v);
-            assert_eq!(b, a);
-            assert_eq!(c.to_vec(), v);
-            assert_eq!(Vec::from(a.clone()), v);
-            assert_eq!(a.len(), n);
-            assert_eq!(format!("{a:?}"), format!("{v:?}"));
-            assert_eq!(matches!(a.0, Repr::Inline { .. }), n <= INLINE);
+    fn the_record_is_small() {
+        assert!(std::mem::size_of::<IntersectionPoint>() <= 56);
+    }
+
+    #[test]
+    fn inline_and_heap_lists_read_back() {
+        let p = Point2::new(1.0, 2.0);
+        // Every split of one or two segments into U/L/C (a zero-length one in U and L).
+        let cases: [(&[usize], [&[usize]; 3]); 7] = [
+            (&[4], [&[4], &[4], &[]]),
+            (&[3, 9], [&[3], &[], &[9]]),
+            (&[3, 9], [&[9], &[3], &[]]),
+            (&[3, 9], [&[], &[3, 9], &[]]),
+            (&[3, 9], [&[3, 9], &[9], &[]]),
+            (&[3, 9], [&[], &[], &[3, 9]]),
+            (&[0, 1, 5, 8], [&[1, 8], &[0], &[5]]),
+        ];
+        for (all, [u, l, c]) in cases {
+            let q = IntersectionPoint::new(p, all, [u, l, c], None);
+            assert_eq!(
+                (q.segments(), q.upper(), q.lower(), q.interior()),
+                (all, u, l, c)
+            );
+            assert!(!q.is_crossing());
+            assert_eq!(q.crossing_pair(), None);
         }
-        assert_eq!(SegmentList::pair(4, 2), [4, 2]);
-        assert!(SegmentList::new().is_empty());
-        assert_ne!(SegmentList::pair(1, 2), SegmentList::from_slice(&[1, 2, 3]));
+        let x = IntersectionPoint::crossing(p, 2, 7);
+        assert_eq!(
+            x,
+            IntersectionPoint::new(p, &[2, 7], [&[], &[], &[2, 7]], Some(1))
+        );
+        assert_eq!(x.crossing_pair(), Some((2, 7)));
+        assert_ne!(
+            x,
+            IntersectionPoint::new(p, &[2, 7], [&[], &[], &[2, 7]], None)
+        );
+        let many = IntersectionPoint::new(p, &[1, 2, 3], [&[], &[], &[1, 2, 3]], Some(2));
+        assert_eq!(many.crossing_pair(), Some((1, 3)));
+        assert_eq!(
+            format!("{x:?}"),
+            "IntersectionPoint { point: Point2 { x: 1.0, y: 2.0 }, segments: [2, 7], upper: [], \
+             lower: [], interior: [2, 7], crossing_pair: Some((2, 7)) }"
+        );
+    }
+
+    #[test]
+    fn the_defining_pair_skips_collinear_segments() {
+        let s = |a: (f64, f64), b: (f64, f64)| Segment2::new(a.into(), b.into());
+        // Segments 0 and 1 are duplicates, 2 lies on their line, 3 crosses them.
+        let segs = [
+            s((0.0, 0.0), (4.0, 4.0)),
+            s((0.0, 0.0), (4.0, 4.0)),
+            s((1.0, 1.0), (3.0, 3.0)),
+            s((0.0, 4.0), (4.0, 0.0)),
+        ];
+        assert_eq!(defining_second(&[0, 1, 2, 3], |k| segs[k]), 3);
+        assert_eq!(defining_second(&[0, 3], |k| segs[k]), 1);
     }
 }

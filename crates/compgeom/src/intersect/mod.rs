@@ -21,9 +21,10 @@
 //!
 //! * An **intersection point** is a point that lies on two or more segments and is either
 //!   an endpoint of some segment or a proper crossing (a point where two segments that are
-//!   not collinear meet). For each: the nearest `f64` point, the exact point, and the
-//!   segments through it split as in the book into U(p) (upper endpoint is p), L(p) (lower
-//!   endpoint is p) and C(p) (p in the interior). A zero-length segment at p is in both
+//!   not collinear meet). For each: the nearest `f64` point, the segments through it split
+//!   as in the book into U(p) (upper endpoint is p), L(p) (lower endpoint is p) and C(p)
+//!   (p in the interior), and for a crossing the two segments that define it (the exact
+//!   point, [`IntersectionPoint::exact`]). A zero-length segment at p is in both
 //!   U(p) and L(p). Interior points of an overlap are not intersection points (there are
 //!   infinitely many) unless something else happens there.
 //! * An **overlap** is a maximal piece of positive length along which the set of segments
@@ -59,9 +60,10 @@
 //!
 //! ## Output size
 //!
-//! Each point's four lists are [`SegmentList`]s, which read as slices and keep up to two
-//! indices inline: a crossing of two segments (nearly every point of real input) is one
-//! record with no heap allocation.
+//! An [`IntersectionPoint`] is 56 bytes: the rounded point, its lists (inline, as ranges
+//! into the sorted pair, when at most two segments meet there: a crossing, a shared
+//! endpoint, a T-junction), and for a crossing the defining pair of segments, from which
+//! the exact point is rebuilt on demand.
 //!
 //! ## Also here
 //!
@@ -84,9 +86,9 @@
 //! assert_eq!(found.points.len(), 1);
 //! let p = &found.points[0];
 //! assert_eq!(p.point, Point2::new(1.0, 1.0));
-//! assert_eq!(p.segments, vec![0, 1, 2]);
-//! assert_eq!(p.lower, vec![2]); // (1, 1) is the lower endpoint of segment 2
-//! assert_eq!(p.interior, vec![0, 1]);
+//! assert_eq!(p.segments(), [0, 1, 2]);
+//! assert_eq!(p.lower(), [2]); // (1, 1) is the lower endpoint of segment 2
+//! assert_eq!(p.interior(), [0, 1]);
 //! ```
 mod brute_force;
 mod bucket;
@@ -103,7 +105,7 @@ mod sweep;
 
 pub use brute_force::{brute_force_intersections, verify_intersections};
 pub use count::{count_intersections, count_intersections_with, IntersectionCount};
-pub use list::SegmentList;
+pub use list::IntersectionPoint;
 pub use pairwise::pairwise_intersections;
 // For the overlay's own noding (crate::dcel), which needs the candidate pairs only.
 pub(crate) use pairwise::{prefer_pairwise, PARALLEL_SCAN_FROM};
@@ -113,43 +115,9 @@ pub(crate) use simple::clean_ring;
 pub use simple::{any_intersection, any_intersection_where, is_simple};
 pub use sweep::SweepStats;
 
-use crate::kernel::{ExactPoint, Point2, Segment2};
+use crate::kernel::{Point2, Segment2};
 use crate::Result;
 use sweep::{Flow, Sink};
-
-/// A point where two or more segments meet, with the segments through it.
-///
-/// The lists are [`SegmentList`]s: they read as slices and hold up to two entries
-/// without allocating (a crossing of two segments allocates nothing).
-///
-/// Two values are equal when they describe the same exact point (whatever segments
-/// define a crossing) with the same segment lists.
-#[derive(Debug, Clone)]
-pub struct IntersectionPoint {
-    /// The nearest `f64` point (the exact point for input points).
-    pub point: Point2,
-    /// The exact point: an input endpoint, or a crossing kept as two segments.
-    pub exact: ExactPoint,
-    /// Every segment containing the point, ascending.
-    pub segments: SegmentList,
-    /// U(p): segments whose upper endpoint (first in sweep order) is the point, ascending.
-    pub upper: SegmentList,
-    /// L(p): segments whose lower endpoint is the point, ascending.
-    pub lower: SegmentList,
-    /// C(p): segments with the point in their interior, ascending.
-    pub interior: SegmentList,
-}
-
-impl PartialEq for IntersectionPoint {
-    fn eq(&self, other: &Self) -> bool {
-        self.point == other.point
-            && self.segments == other.segments
-            && self.upper == other.upper
-            && self.lower == other.lower
-            && self.interior == other.interior
-            && order::EventPoint::new(self.exact) == order::EventPoint::new(other.exact)
-    }
-}
 
 /// A maximal piece of positive length covered by the same two or more segments.
 #[derive(Debug, Clone, PartialEq)]
@@ -179,8 +147,9 @@ impl Intersections {
     pub fn pair_count(&self) -> usize {
         let mut pairs = Vec::new();
         for p in &self.points {
-            for (k, &i) in p.segments.iter().enumerate() {
-                for &j in &p.segments[k + 1..] {
+            let s = p.segments();
+            for (k, &i) in s.iter().enumerate() {
+                for &j in &s[k + 1..] {
                     pairs.push((i, j));
                 }
             }

@@ -48,14 +48,16 @@ pub struct RedBlueIntersections {
     pub overlaps: Vec<RedBlueOverlap>,
 }
 
-struct RedBlue {
+struct RedBlue<'a> {
+    /// Red then blue: what the sweep numbers.
+    segments: &'a [Segment2],
     reds: usize,
     out: RedBlueIntersections,
     overlaps: Vec<Overlap>,
     error: Option<Error>,
 }
 
-impl RedBlue {
+impl RedBlue<'_> {
     fn colour(&self, i: usize) -> (&'static str, usize) {
         if i < self.reds {
             ("red", i)
@@ -66,10 +68,10 @@ impl RedBlue {
 
     /// A same-colour contact that is not at a common endpoint, if any.
     fn same_colour_violation(&self, p: &IntersectionPoint) -> Option<Error> {
-        for &c in &p.interior {
+        for &c in p.interior() {
             let red = c < self.reds;
             if let Some(&o) = p
-                .segments
+                .segments()
                 .iter()
                 .find(|&&o| o != c && (o < self.reds) == red)
             {
@@ -85,18 +87,18 @@ impl RedBlue {
     }
 }
 
-impl Sink for RedBlue {
+impl Sink for RedBlue<'_> {
     fn point(&mut self, p: IntersectionPoint) -> Flow {
         if let Some(e) = self.same_colour_violation(&p) {
             self.error = Some(e);
             return Flow::Stop;
         }
         let (red, blue): (Vec<usize>, Vec<usize>) =
-            p.segments.iter().partition(|&&i| i < self.reds);
+            p.segments().iter().partition(|&&i| i < self.reds);
         if !red.is_empty() && !blue.is_empty() {
             self.out.points.push(RedBluePoint {
                 point: p.point,
-                exact: p.exact,
+                exact: p.exact(self.segments),
                 red,
                 blue: blue.iter().map(|b| b - self.reds).collect(),
             });
@@ -143,6 +145,7 @@ impl Sink for RedBlue {
 pub fn red_blue_intersections(red: &[Segment2], blue: &[Segment2]) -> Result<RedBlueIntersections> {
     let all: Vec<Segment2> = red.iter().chain(blue).copied().collect();
     let mut sink = RedBlue {
+        segments: &all,
         reds: red.len(),
         out: RedBlueIntersections::default(),
         overlaps: Vec::new(),

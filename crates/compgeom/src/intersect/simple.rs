@@ -122,9 +122,8 @@ pub fn is_simple(polygon: &Polygon) -> Result<bool> {
         ri == rj && ((ki + 1) % n == kj || (kj + 1) % n == ki)
     };
     let bad = any_intersection_where(&segments, |p| {
-        !(p.segments.len() == 2
-            && p.interior.is_empty()
-            && consecutive(p.segments[0], p.segments[1]))
+        let s = p.segments();
+        !(s.len() == 2 && p.interior().is_empty() && consecutive(s[0], s[1]))
     })?;
     Ok(bad.is_none())
 }

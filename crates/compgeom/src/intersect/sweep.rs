@@ -21,10 +21,11 @@
 //! segments covering the piece below the current event and reports a maximal piece when
 //! that set changes.
 
+use super::list::defining_second;
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
 use super::small_int;
 use super::status::Status;
-use super::{IntersectionPoint, Overlap, SegmentList};
+use super::{IntersectionPoint, Overlap};
 use crate::kernel::{
     compare_slopes, orient2d, orient_exact, segment_intersection, ExactPoint, Orientation, Point2,
     Segment2, SegmentIntersection,
@@ -308,8 +309,10 @@ struct Scratch {
     interior: Vec<usize>,
     points: Vec<usize>,
     newmid: Vec<usize>,
-    /// For sorting the lists of a reported point.
-    list: Vec<usize>,
+    /// The sorted lists of a reported point: all segments, U(p), L(p).
+    all: Vec<usize>,
+    up: Vec<usize>,
+    low: Vec<usize>,
 }
 
 impl Sweep {
@@ -398,24 +401,28 @@ impl Sweep {
         }
         let total = sc.upper.len() + sc.mid.len() + sc.points.len();
         if total >= 2 {
-            // Each list sorted in the scratch buffer, then stored (inline when short).
-            let list = &mut sc.list;
-            let mut sorted = |parts: [&[usize]; 3]| {
+            // Each list sorted in its scratch buffer, then stored (inline when short).
+            let sort = |list: &mut Vec<usize>, parts: [&[usize]; 3]| {
                 list.clear();
                 for part in parts {
                     list.extend_from_slice(part);
                 }
                 list.sort_unstable();
-                SegmentList::from_slice(list)
             };
-            let point = IntersectionPoint {
-                point: p.approx(),
-                exact: p.exact,
-                segments: sorted([&sc.upper, &sc.mid, &sc.points]),
-                upper: sorted([&sc.upper, &sc.points, &[]]),
-                lower: sorted([&sc.lower, &sc.points, &[]]),
-                interior: sorted([&sc.interior, &[], &[]]),
-            };
+            sort(&mut sc.all, [&sc.upper, &sc.mid, &sc.points]);
+            sort(&mut sc.up, [&sc.upper, &sc.points, &[]]);
+            sort(&mut sc.low, [&sc.lower, &sc.points, &[]]);
+            sc.interior.sort_unstable();
+            // At a crossing every segment through p is interior.
+            let second = at
+                .is_none()
+                .then(|| defining_second(&sc.all, |k| Segment2::new(segs[k].upper, segs[k].lower)));
+            let point = IntersectionPoint::new(
+                p.approx(),
+                &sc.all,
+                [&sc.up, &sc.low, &sc.interior],
+                second,
+            );
             if sink.point(point) == Flow::Stop {
                 return Flow::Stop;
             }

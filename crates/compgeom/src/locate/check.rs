@@ -2,15 +2,15 @@
 //! with the intersection sweep of [`crate::intersect`] (O((n + k) log n), stopping at the
 //! first offending point).
 use crate::intersect::{any_intersection_where, IntersectionPoint};
-use crate::kernel::{ExactPoint, Point2, Segment2};
+use crate::kernel::{Point2, Segment2};
 use crate::{Error, Result};
 
 /// The two segments to name for an intersection point: one having it in its interior
 /// (or the first) and another one through it.
 fn pair(p: &IntersectionPoint) -> (usize, usize) {
-    let first = p.interior.first().copied().unwrap_or(p.segments[0]);
+    let first = p.interior().first().copied().unwrap_or(p.segments()[0]);
     let other = p
-        .segments
+        .segments()
         .iter()
         .copied()
         .find(|&s| s != first)
@@ -36,7 +36,7 @@ pub fn check_interior_disjoint_segments(segments: &[Segment2]) -> Result<()> {
         .filter(|&i| segments[i].a != segments[i].b)
         .collect();
     let segs: Vec<Segment2> = kept.iter().map(|&i| segments[i]).collect();
-    report(&segs, &kept, |p| !p.interior.is_empty())
+    report(&segs, &kept, |p| !p.interior().is_empty())
 }
 
 /// As [`check_interior_disjoint_segments`] for the prepared segments of a map (distinct
@@ -50,7 +50,7 @@ pub(crate) fn check_interior_disjoint(
         .iter()
         .map(|&[a, b]| Segment2::new(points[a as usize], points[b as usize]))
         .collect();
-    report(&segments, seg_input, |p| !p.interior.is_empty())
+    report(&segments, seg_input, |p| !p.interior().is_empty())
 }
 
 /// `Ok` when no two `segments` cross at a point interior to both (touching, shared
@@ -79,7 +79,7 @@ pub fn check_no_crossings(segments: &[Segment2]) -> Result<()> {
 /// The first pair of `segments` (by index, `a < b`) crossing at a point interior to
 /// both, and the crossing rounded; `None` when no two cross (as [`check_no_crossings`]).
 pub(crate) fn first_crossing(segments: &[Segment2]) -> Result<Option<(usize, usize, Point2)>> {
-    let p = any_intersection_where(segments, |p| matches!(p.exact, ExactPoint::Crossing(_)))?;
+    let p = any_intersection_where(segments, IntersectionPoint::is_crossing)?;
     Ok(p.map(|p| {
         let (a, b) = pair(&p);
         (a, b, p.point)
@@ -96,7 +96,7 @@ fn report(
         Some(p) => {
             let (a, b) = pair(&p);
             let (a, b) = (input[a].min(input[b]), input[a].max(input[b]));
-            let what = if p.interior.len() >= 2 {
+            let what = if p.interior().len() >= 2 {
                 "cross at about"
             } else {
                 "share a point that is not a common endpoint:"

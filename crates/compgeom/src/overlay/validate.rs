@@ -110,10 +110,10 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         });
     }
     for p in &found.points {
-        let rs: Vec<usize> = p.segments.iter().map(|&s| owner[s]).collect();
-        if !p.interior.is_empty() {
-            let other = rs.iter().copied().find(|&k| k != owner[p.interior[0]]);
-            let what = if p.interior.len() >= 2 || p.lower.len() + p.upper.len() == 0 {
+        let rs: Vec<usize> = p.segments().iter().map(|&s| owner[s]).collect();
+        if !p.interior().is_empty() {
+            let other = rs.iter().copied().find(|&k| k != owner[p.interior()[0]]);
+            let what = if p.interior().len() >= 2 || p.lower().len() + p.upper().len() == 0 {
                 "edges cross"
             } else {
                 "a vertex lies on an edge"
@@ -121,7 +121,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             out.push(Problem {
                 message: format!(
                     "{what} ({}{})",
-                    name(owner[p.interior[0]]),
+                    name(owner[p.interior()[0]]),
                     other
                         .map(|k| format!(" and {}", name(k)))
                         .unwrap_or_default()

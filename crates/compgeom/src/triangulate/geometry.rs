@@ -192,10 +192,10 @@ impl Geometry {
                 segments.push(Segment2::new(ring[k], ring[(k + 1) % ring.len()]));
             }
         }
-        let p = any_intersection_where(&segments, |p| !p.interior.is_empty()).ok()??;
-        let a = p.interior[0];
-        let b = p.segments.iter().copied().find(|&s| s != a).unwrap_or(a);
-        let how = if p.interior.contains(&b) {
+        let p = any_intersection_where(&segments, |p| !p.interior().is_empty()).ok()??;
+        let a = p.interior()[0];
+        let b = p.segments().iter().copied().find(|&s| s != a).unwrap_or(a);
+        let how = if p.interior().contains(&b) {
             "cross at"
         } else {
             "touch (a vertex inside the second edge) at"

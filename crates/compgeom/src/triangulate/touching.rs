@@ -54,14 +54,14 @@ pub(crate) fn split_touching(polygon: &Polygon) -> Result<Option<Polygon>> {
     let found = find_intersections(&segments)?;
     let mut splits: Vec<(usize, Point2)> = Vec::new();
     for p in &found.points {
-        if p.interior.is_empty() {
+        if p.interior().is_empty() {
             continue;
         }
         // The point must be a vertex (an endpoint of some edge), else two edges cross.
-        if p.upper.is_empty() && p.lower.is_empty() {
+        if p.upper().is_empty() && p.lower().is_empty() {
             return Ok(None);
         }
-        splits.extend(p.interior.iter().map(|&s| (s, p.point)));
+        splits.extend(p.interior().iter().map(|&s| (s, p.point)));
     }
     splits.sort_by_key(|a| a.0);
     // The directed edges after splitting.

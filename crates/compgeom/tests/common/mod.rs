@@ -86,7 +86,7 @@ pub fn assert_valid_with(m: &MultiPolygon, collinear_check: bool) {
     for p in &found.points {
         // Rings touch only at vertices of both.
         assert!(
-            p.interior.is_empty(),
+            p.interior().is_empty(),
             "edges cross or touch inside at {:?}",
             p.point
         );
