@@ -29,6 +29,7 @@
 //! (compgeom's `pair_count` for both methods and `pairs` of the count, against the
 //! number of pairs geo yields).
 //!
+//! `COMPGEOM_BENCH_ONLY=short|long|grid` runs one of the three inputs.
 //! `COMPGEOM_BENCH_LONG_N=n` runs only the counts on n long random segments (compgeom
 //! against geo's `count()`, alternating), for the growth of the dense case.
 //!
@@ -266,8 +267,21 @@ pub fn run(quick: bool) -> Result<(), String> {
         "| input | n | intersection points | overlaps | meeting pairs (= geo's) | compgeom count s | geo sweep count() s | geo count / compgeom count | compgeom find s | geo sweep collect() s | geo collect / compgeom find | compgeom sweep s | geo O(n²) s | O(n²) / compgeom find |"
     );
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
-    case("short random", &short_segments(&mut rng, 100_000 / k), 1)?;
-    case("long random", &long_segments(&mut rng, 1_000 / k), 3)?;
-    case("100×100 grid", &grid_segments(&mut rng, 10_000 / k), 3)?;
+    // `COMPGEOM_BENCH_ONLY=short|long|grid` runs one input (the others are still
+    // generated, so that every input is the same as in a full run).
+    let only = std::env::var("COMPGEOM_BENCH_ONLY").unwrap_or_default();
+    let wanted = |name: &str| only.is_empty() || name.starts_with(only.as_str());
+    let short = short_segments(&mut rng, 100_000 / k);
+    if wanted("short") {
+        case("short random", &short, 1)?;
+    }
+    let long = long_segments(&mut rng, 1_000 / k);
+    if wanted("long") {
+        case("long random", &long, 3)?;
+    }
+    let grid = grid_segments(&mut rng, 10_000 / k);
+    if wanted("grid") {
+        case("100×100 grid", &grid, 3)?;
+    }
     Ok(())
 }

@@ -100,33 +100,97 @@ fn two_sum(a: f64, b: f64) -> (f64, f64) {
     (s, (a - (s - bb)) + (b - bb))
 }
 
-/// A double-double value `hi + lo`.
+/// Two lanes: the same operation on both (the `x` and `y` coordinates, or a
+/// denominator and a numerator). Written as arrays so that the compiler can use one
+/// two-wide vector instruction per operation; each lane performs exactly the operations
+/// of the scalar analysis in the module docs.
+type F2 = [f64; 2];
+
+#[inline(always)]
+fn add(a: F2, b: F2) -> F2 {
+    [a[0] + b[0], a[1] + b[1]]
+}
+
+#[inline(always)]
+fn sub(a: F2, b: F2) -> F2 {
+    [a[0] - b[0], a[1] - b[1]]
+}
+
+#[inline(always)]
+fn mul(a: F2, b: F2) -> F2 {
+    [a[0] * b[0], a[1] * b[1]]
+}
+
+#[inline(always)]
+fn abs2(a: F2) -> F2 {
+    [a[0].abs(), a[1].abs()]
+}
+
+/// [`two_sum`] in both lanes.
+#[inline(always)]
+fn two_sum2(a: F2, b: F2) -> (F2, F2) {
+    let s = add(a, b);
+    let bb = sub(s, a);
+    (s, add(sub(a, sub(s, bb)), sub(b, bb)))
+}
+
+/// [`two_prod`] in both lanes.
+#[cfg(target_feature = "fma")]
+#[inline(always)]
+fn two_prod2(a: F2, b: F2) -> (F2, F2) {
+    let p = mul(a, b);
+    (p, [a[0].mul_add(b[0], -p[0]), a[1].mul_add(b[1], -p[1])])
+}
+
+/// [`two_prod`] in both lanes.
+#[cfg(not(target_feature = "fma"))]
+#[inline(always)]
+fn two_prod2(a: F2, b: F2) -> (F2, F2) {
+    let p = mul(a, b);
+    let split2 = |v: F2| {
+        let c = mul([SPLITTER; 2], v);
+        let hi = sub(c, sub(c, v));
+        (hi, sub(v, hi))
+    };
+    let (ah, al) = split2(a);
+    let (bh, bl) = split2(b);
+    let e = add(
+        add(add(sub(mul(ah, bh), p), mul(ah, bl)), mul(al, bh)),
+        mul(al, bl),
+    );
+    (p, e)
+}
+
+/// Double-double values `hi + lo`, one per lane.
 #[derive(Clone, Copy)]
-struct Dd {
-    hi: f64,
-    lo: f64,
+struct Dd2 {
+    hi: F2,
+    lo: F2,
 }
 
+/// `a - b` exactly, per lane.
 #[inline(always)]
-fn diff(a: f64, b: f64) -> Dd {
-    let (hi, lo) = two_sum(a, -b);
-    Dd { hi, lo }
+fn diff2(a: F2, b: F2) -> Dd2 {
+    let (hi, lo) = two_sum2(a, [-b[0], -b[1]]);
+    Dd2 { hi, lo }
 }
 
-/// `x·y - z·w`, normalised; error at most `22u²·(|x.hi·y.hi| + |z.hi·w.hi|)`.
+/// `x·y - z·w` per lane, normalised; error at most `22u²·(|x.hi·y.hi| + |z.hi·w.hi|)`
+/// in each lane (the scalar operations of the module docs, lane by lane).
 #[inline(always)]
-fn cross(x: Dd, y: Dd, z: Dd, w: Dd) -> Dd {
-    let (p1, e1) = two_prod(x.hi, y.hi);
-    let (p2, e2) = two_prod(z.hi, w.hi);
-    let c1 = x.hi * y.lo + x.lo * y.hi;
-    let c2 = z.hi * w.lo + z.lo * w.hi;
-    let (s, r) = two_sum(p1, -p2);
-    let lo = r + (e1 - e2) + (c1 - c2);
-    let (hi, lo) = two_sum(s, lo);
-    Dd { hi, lo }
+fn cross2(x: Dd2, y: Dd2, z: Dd2, w: Dd2) -> Dd2 {
+    let (p1, e1) = two_prod2(x.hi, y.hi);
+    let (p2, e2) = two_prod2(z.hi, w.hi);
+    let c1 = add(mul(x.hi, y.lo), mul(x.lo, y.hi));
+    let c2 = add(mul(z.hi, w.lo), mul(z.lo, w.hi));
+    let (s, r) = two_sum2(p1, [-p2[0], -p2[1]]);
+    let lo = add(add(r, sub(e1, e2)), sub(c1, c2));
+    let (hi, lo) = two_sum2(s, lo);
+    Dd2 { hi, lo }
 }
 
-/// Half the smaller gap between `f` and its neighbours (`f` normal, `|f| > 2^-900`).
+/// Half the smaller gap between `f` and its neighbours (`f` normal, `|f| > 2^-900`;
+/// 0 or less for smaller `f`).
 #[inline(always)]
 fn half_gap(f: f64) -> f64 {
     let bits = f.abs().to_bits();
@@ -134,7 +198,8 @@ fn half_gap(f: f64) -> f64 {
     // ulp(f) = 2^(exp - 1075); half of it has exponent field exp - 53, and a quarter
     // (half the gap below a power of two) exp - 54.
     let shift = if bits & ((1 << 52) - 1) == 0 { 54 } else { 53 };
-    f64::from_bits((exp - shift) << 52)
+    // (Saturating: zero, subnormal or tiny `f` give 0, which certifies nothing.)
+    f64::from_bits(exp.saturating_sub(shift) << 52)
 }
 
 fn in_range(v: f64) -> bool {
@@ -147,13 +212,14 @@ const T_MIN: f64 = 1.499_696_813_895_631_3e-241;
 /// The parameter `T = N/D` of the crossing along `s` as `t_hi + t_lo`, with a bound on
 /// `|T - (t_hi + t_lo)|` (see the module docs), or `None` when uncertain.
 #[inline(always)]
-fn parameter(num: Dd, den: Dd, m_num: f64, m_den: f64) -> Option<(f64, f64, f64)> {
-    let t_hi = num.hi / den.hi;
-    let (p, pe) = two_prod(t_hi, den.hi);
-    let (s1, s1l) = two_sum(num.hi, -p);
-    let r = s1 + ((s1l + num.lo) - (pe + t_hi * den.lo));
-    let t_lo = r / den.hi;
-    let den_low = den.hi.abs() - den.lo.abs();
+fn parameter(num: (f64, f64), den: (f64, f64), m_num: f64, m_den: f64) -> Option<(f64, f64, f64)> {
+    let ((num_hi, num_lo), (den_hi, den_lo)) = (num, den);
+    let t_hi = num_hi / den_hi;
+    let (p, pe) = two_prod(t_hi, den_hi);
+    let (s1, s1l) = two_sum(num_hi, -p);
+    let r = s1 + ((s1l + num_lo) - (pe + t_hi * den_lo));
+    let t_lo = r / den_hi;
+    let den_low = den_hi.abs() - den_lo.abs();
     let e_t = (32.0 * U * U * t_hi.abs() + ERR_DEN * (m_num + 1.01 * t_hi.abs() * m_den) / den_low)
         * SAFE;
     // (NaN fails the comparisons too.)
@@ -161,48 +227,63 @@ fn parameter(num: Dd, den: Dd, m_num: f64, m_den: f64) -> Option<(f64, f64, f64)
     ok.then_some((t_hi, t_lo, e_t))
 }
 
-/// The nearest `f64` to `a + d·T` for `T = t_hi + t_lo` within `e_t` (one coordinate),
-/// or `None` when the certificate does not hold.
+/// The nearest `f64` to `a + d·T` for `T = t_hi + t_lo` within `e_t`, in both lanes
+/// (the two coordinates), or `None` when a lane's certificate does not hold.
 #[inline(always)]
-fn coordinate(a: f64, d: Dd, t_hi: f64, t_lo: f64, e_t: f64) -> Option<f64> {
-    let (p, pe) = two_prod(d.hi, t_hi);
-    let c = d.hi * t_lo + d.lo * t_hi;
-    let (s, sl) = two_sum(a, p);
-    let lo = sl + (pe + c);
-    let (f, fe) = two_sum(s, lo);
-    if !(f.abs() >= TINY && f.abs() <= HI) {
-        return None;
-    }
-    let q = (d.hi * t_hi).abs();
-    let bound =
-        (d.hi.abs() * (1.0 + 2.0 * U) * e_t + 48.0 * U * U * q + 2.0 * U * U * s.abs() + 1e-300)
+fn coordinates(a: F2, d: Dd2, t_hi: f64, t_lo: f64, e_t: f64) -> Option<F2> {
+    let (p, pe) = two_prod2(d.hi, [t_hi; 2]);
+    let c = add(mul(d.hi, [t_lo; 2]), mul(d.lo, [t_hi; 2]));
+    let (s, sl) = two_sum2(a, p);
+    let lo = add(sl, add(pe, c));
+    let (f, fe) = two_sum2(s, lo);
+    let q = abs2(mul(d.hi, [t_hi; 2]));
+    let (ad, as_) = (abs2(d.hi), abs2(s));
+    let mut ok = true;
+    for k in 0..2 {
+        let bound = (ad[k] * (1.0 + 2.0 * U) * e_t
+            + 48.0 * U * U * q[k]
+            + 2.0 * U * U * as_[k]
+            + 1e-300)
             * SAFE;
-    ((fe.abs() + bound) * SAFE < half_gap(f)).then_some(f)
+        // (Non-short-circuit `&`: both lanes are checked the same way.)
+        ok &= (f[k].abs() >= TINY)
+            & (f[k].abs() <= HI)
+            & ((fe[k].abs() + bound) * SAFE < half_gap(f[k]));
+    }
+    ok.then_some(f)
 }
 
 /// The certified fast path: `None` when [`Crossing::approx`] must decide.
 fn fast(c: &Crossing) -> Option<Point2> {
     let (s, t) = (c.s, c.t);
     let coords = [s.a.x, s.a.y, s.b.x, s.b.y, t.a.x, t.a.y, t.b.x, t.b.y];
-    if !coords.iter().all(|&v| in_range(v)) {
+    // (Non-short-circuit: a straight line of comparisons.)
+    if !coords.iter().fold(true, |ok, &v| ok & in_range(v)) {
         return None;
     }
-    let (dx, dy) = (diff(s.b.x, s.a.x), diff(s.b.y, s.a.y));
-    let (ex, ey) = (diff(t.b.x, t.a.x), diff(t.b.y, t.a.y));
-    let (wx, wy) = (diff(t.a.x, s.a.x), diff(t.a.y, s.a.y));
-    let den = cross(dx, ey, dy, ex);
-    let num = cross(wx, ey, wy, ex);
-    let m_den = (dx.hi * ey.hi).abs() + (dy.hi * ex.hi).abs();
-    let m_num = (wx.hi * ey.hi).abs() + (wy.hi * ex.hi).abs();
+    // Lanes (x, y): d = s.b - s.a, e = t.b - t.a, w = t.a - s.a, each exact.
+    let d = diff2([s.b.x, s.b.y], [s.a.x, s.a.y]);
+    let e = diff2([t.b.x, t.b.y], [t.a.x, t.a.y]);
+    let w = diff2([t.a.x, t.a.y], [s.a.x, s.a.y]);
+    // Lanes (den, num): den = dx·ey - dy·ex, num = wx·ey - wy·ex.
+    let lane = |a: &Dd2, b: &Dd2, k: usize, l: usize| Dd2 {
+        hi: [a.hi[k], b.hi[l]],
+        lo: [a.lo[k], b.lo[l]],
+    };
+    let (x, z) = (lane(&d, &w, 0, 0), lane(&d, &w, 1, 1));
+    let (y, v) = (lane(&e, &e, 1, 1), lane(&e, &e, 0, 0));
+    let dn = cross2(x, y, z, v);
+    let m = add(abs2(mul(x.hi, y.hi)), abs2(mul(z.hi, v.hi)));
+    let (m_den, m_num) = (m[0], m[1]);
+    let (den, num) = ((dn.hi[0], dn.lo[0]), (dn.hi[1], dn.lo[1]));
     // A crossing of segments that meet has a nonzero denominator well above its error
     // (NaN, from overflow, fails the test too).
-    let den_clear = den.hi.abs() > 4.0 * ERR_DEN * m_den;
+    let den_clear = den.0.abs() > 4.0 * ERR_DEN * m_den;
     if !den_clear {
         return None;
     }
     let (t_hi, t_lo, e_t) = parameter(num, den, m_num, m_den)?;
-    let x = coordinate(s.a.x, dx, t_hi, t_lo, e_t)?;
-    let y = coordinate(s.a.y, dy, t_hi, t_lo, e_t)?;
+    let [x, y] = coordinates([s.a.x, s.a.y], d, t_hi, t_lo, e_t)?;
     Some(Point2::new(x, y))
 }
 
