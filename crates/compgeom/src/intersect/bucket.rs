@@ -8,18 +8,24 @@
 //! fine bucket is sorted by the full order. One pass with random writes over millions
 //! of buckets was memory-bound (two cache misses per record at 25 million records).
 
+use rayon::prelude::*;
 use std::cmp::Ordering;
 
 /// At most this many coarse buckets.
 const COARSE: usize = 2048;
 
+/// From this many items on, the coarse buckets are finished on the rayon pool.
+const PARALLEL_FROM: usize = 1 << 16;
+
 /// Sort `items` by `cmp`, where `key` is a monotone `f64` summary of the order:
 /// `key(a) < key(b)` implies `cmp(a, b) == Less` (`-inf` allowed, NaN not expected: it
 /// goes to the first bucket). O(K) for keys spread over their range, O(K log K) at worst.
-pub(super) fn sort_by_key_then<T: Copy>(
+/// Large inputs finish their coarse buckets in parallel (the result does not depend on
+/// it: each bucket is sorted by `cmp`, as an unstable sort would).
+pub(super) fn sort_by_key_then<T: Copy + Send + Sync>(
     items: &mut [T],
-    key: impl Fn(&T) -> f64,
-    cmp: impl Fn(&T, &T) -> Ordering + Copy,
+    key: impl Fn(&T) -> f64 + Sync,
+    cmp: impl Fn(&T, &T) -> Ordering + Copy + Sync,
 ) {
     let n = items.len();
     // (Bucket offsets are u32: beyond that, a plain sort.)
@@ -57,33 +63,53 @@ pub(super) fn sort_by_key_then<T: Copy>(
         parted[fill[c] as usize] = *t;
         fill[c] += 1;
     }
-    // Each coarse bucket spread over its fine buckets, back into `items`.
+    // Each coarse bucket spread over its fine buckets, back into `items`: disjoint
+    // pieces, so they can be finished independently.
     let width = 1usize << shift;
-    let mut local = vec![0u32; width + 1];
-    for c in 0..coarse_count {
-        let (a, b) = (start[c] as usize, start[c + 1] as usize);
-        if b - a <= 1 {
-            items[a..b].copy_from_slice(&parted[a..b]);
-            continue;
+    let finish = |c: usize, from: &[T], to: &mut [T], local: &mut Vec<u32>| {
+        if from.len() <= 1 {
+            to.copy_from_slice(from);
+            return;
         }
         let base = c << shift;
-        local.iter_mut().for_each(|v| *v = 0);
-        for t in &parted[a..b] {
+        local.clear();
+        local.resize(width + 1, 0);
+        for t in from {
             local[fine(t) - base + 1] += 1;
         }
         for f in 0..width {
             local[f + 1] += local[f];
         }
         let mut at = local.clone();
-        for t in &parted[a..b] {
+        for t in from {
             let f = fine(t) - base;
-            items[a + at[f] as usize] = *t;
+            to[at[f] as usize] = *t;
             at[f] += 1;
         }
         for w in local.windows(2) {
             if w[1] - w[0] > 1 {
-                items[a + w[0] as usize..a + w[1] as usize].sort_unstable_by(cmp);
+                to[w[0] as usize..w[1] as usize].sort_unstable_by(cmp);
             }
+        }
+    };
+    let mut pieces = Vec::with_capacity(coarse_count);
+    let mut rest = &mut items[..];
+    for c in 0..coarse_count {
+        let len = (start[c + 1] - start[c]) as usize;
+        let (piece, tail) = rest.split_at_mut(len);
+        rest = tail;
+        pieces.push((c, piece));
+    }
+    let from = |c: usize| &parted[start[c] as usize..start[c + 1] as usize];
+    if n >= PARALLEL_FROM {
+        pieces
+            .into_par_iter()
+            .with_min_len(16)
+            .for_each_init(Vec::new, |local, (c, to)| finish(c, from(c), to, local));
+    } else {
+        let mut local = Vec::new();
+        for (c, to) in pieces {
+            finish(c, from(c), to, &mut local);
         }
     }
 }
@@ -101,7 +127,7 @@ mod tests {
                 .wrapping_add(1442695040888963407);
             state >> 11
         };
-        for n in [0, 1, 63, 64, 65, 1000, 5000, 100_000] {
+        for n in [0, 1, 63, 64, 65, 1000, 5000, 100_000, 300_000] {
             for kind in 0..4 {
                 let v: Vec<(f64, u64)> = (0..n)
                     .map(|k| {
