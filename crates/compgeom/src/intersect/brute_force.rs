@@ -189,32 +189,43 @@ impl PairResults {
         let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
         let parallel = self.records.len() >= PARALLEL_ASSEMBLY_FROM;
         sort_records(&mut self.records);
-        let records = &mut self.records;
         // Sorted by rounded points, which is the exact sweep order except within a run
         // of equal rounded y that holds a crossing: there the exact y may differ. Such
-        // runs are re-sorted exactly; elsewhere equal keys mean equal points.
-        let mut starts = Vec::new();
-        let mut k = 0;
-        while k < records.len() {
-            let ky = records[k].ky;
-            let mut end = k + 1;
-            while end < records.len() && records[end].ky == ky {
-                end += 1;
-            }
-            let run = &mut records[k..end];
-            if run.len() >= 2 && run.iter().any(Record::is_crossing) {
-                for g in exact_groups(segments, run) {
-                    starts.push(k + g);
+        // runs are re-sorted exactly; elsewhere equal keys mean equal points. Runs are
+        // independent: large inputs are cut into pieces at run starts, done in parallel.
+        let records = &mut self.records;
+        let pieces = if parallel { 64 } else { 1 };
+        let mut cuts: Vec<usize> = (0..pieces)
+            .map(|k| {
+                let mut at = k * records.len() / pieces;
+                while at > 0 && at < records.len() && records[at].ky == records[at - 1].ky {
+                    at += 1;
                 }
-            } else {
-                for m in k..end {
-                    if m == k || records[m].kx != records[m - 1].kx {
-                        starts.push(m);
-                    }
-                }
-            }
-            k = end;
+                at
+            })
+            .collect();
+        cuts.push(records.len());
+        cuts.dedup();
+        let mut parts: Vec<(usize, &mut [Record])> = Vec::with_capacity(cuts.len());
+        let mut rest = &mut records[..];
+        for w in cuts.windows(2) {
+            let (piece, tail) = rest.split_at_mut(w[1] - w[0]);
+            rest = tail;
+            parts.push((w[0], piece));
         }
+        let group = |(offset, piece): (usize, &mut [Record])| {
+            let mut starts = Vec::new();
+            group_starts(segments, piece, &mut starts);
+            starts.iter_mut().for_each(|s| *s += offset);
+            starts
+        };
+        let mut starts: Vec<usize> = if parallel {
+            let per: Vec<Vec<usize>> = parts.into_par_iter().map(group).collect();
+            per.concat()
+        } else {
+            parts.into_iter().flat_map(group).collect()
+        };
+        let records = &self.records;
         starts.push(records.len());
         let records = &self.records;
         let point = |w: &[usize]| point_of(segments, &segs, &records[w[0]..w[1]]);
@@ -230,6 +241,32 @@ impl PairResults {
             overlaps,
             segments: segments.len(),
         }
+    }
+}
+
+/// Where the groups of equal points of sorted `records` (whole runs of equal rounded
+/// y) start; runs of equal rounded y holding a crossing are re-sorted exactly first.
+fn group_starts(segments: &[Segment2], records: &mut [Record], starts: &mut Vec<usize>) {
+    let mut k = 0;
+    while k < records.len() {
+        let ky = records[k].ky;
+        let mut end = k + 1;
+        while end < records.len() && records[end].ky == ky {
+            end += 1;
+        }
+        let run = &mut records[k..end];
+        if run.len() >= 2 && run.iter().any(Record::is_crossing) {
+            for g in exact_groups(segments, run) {
+                starts.push(k + g);
+            }
+        } else {
+            for m in k..end {
+                if m == k || records[m].kx != records[m - 1].kx {
+                    starts.push(m);
+                }
+            }
+        }
+        k = end;
     }
 }
 

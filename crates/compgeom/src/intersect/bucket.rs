@@ -49,49 +49,63 @@ pub(super) fn sort_by_key_then<T: Copy + Send + Sync>(
         shift += 1;
     }
     let coarse_count = ((n - 1) >> shift) + 1;
+    // Each item's fine bucket, computed once (n < 2^32).
+    let fines: Vec<u32> = items.iter().map(|t| fine(t) as u32).collect();
     let mut start = vec![0u32; coarse_count + 1];
-    for t in items.iter() {
-        start[(fine(t) >> shift) + 1] += 1;
+    for &f in &fines {
+        start[(f as usize >> shift) + 1] += 1;
     }
     for c in 0..coarse_count {
         start[c + 1] += start[c];
     }
     let mut fill = start.clone();
     let mut parted = items.to_vec();
-    for t in items.iter() {
-        let c = fine(t) >> shift;
+    let mut parted_fines = vec![0u32; n];
+    for (t, &f) in items.iter().zip(&fines) {
+        let c = f as usize >> shift;
         parted[fill[c] as usize] = *t;
+        parted_fines[fill[c] as usize] = f;
         fill[c] += 1;
     }
+    drop(fines);
     // Each coarse bucket spread over its fine buckets, back into `items`: disjoint
     // pieces, so they can be finished independently.
     let width = 1usize << shift;
-    let finish = |c: usize, from: &[T], to: &mut [T], local: &mut Vec<u32>| {
-        if from.len() <= 1 {
-            to.copy_from_slice(from);
-            return;
-        }
-        let base = c << shift;
-        local.clear();
-        local.resize(width + 1, 0);
-        for t in from {
-            local[fine(t) - base + 1] += 1;
-        }
-        for f in 0..width {
-            local[f + 1] += local[f];
-        }
-        let mut at = local.clone();
-        for t in from {
-            let f = fine(t) - base;
-            to[at[f] as usize] = *t;
-            at[f] += 1;
-        }
-        for w in local.windows(2) {
-            if w[1] - w[0] > 1 {
-                to[w[0] as usize..w[1] as usize].sort_unstable_by(cmp);
+    let finish =
+        |c: usize, (from, from_fines): (&[T], &[u32]), to: &mut [T], local: &mut Vec<u32>| {
+            if from.len() <= 1 {
+                to.copy_from_slice(from);
+                return;
             }
-        }
-    };
+            let base = c << shift;
+            local.clear();
+            local.resize(width + 1, 0);
+            for &f in from_fines {
+                local[f as usize - base + 1] += 1;
+            }
+            for f in 0..width {
+                local[f + 1] += local[f];
+            }
+            let mut at = local.clone();
+            for (t, &f) in from.iter().zip(from_fines) {
+                let f = f as usize - base;
+                to[at[f] as usize] = *t;
+                at[f] += 1;
+            }
+            for w in local.windows(2) {
+                let bucket = &mut to[w[0] as usize..w[1] as usize];
+                match bucket.len() {
+                    0 | 1 => {}
+                    // Most multi-item buckets hold two: one comparison.
+                    2 => {
+                        if cmp(&bucket[1], &bucket[0]) == Ordering::Less {
+                            bucket.swap(0, 1);
+                        }
+                    }
+                    _ => bucket.sort_unstable_by(cmp),
+                }
+            }
+        };
     let mut pieces = Vec::with_capacity(coarse_count);
     let mut rest = &mut items[..];
     for c in 0..coarse_count {
@@ -100,7 +114,10 @@ pub(super) fn sort_by_key_then<T: Copy + Send + Sync>(
         rest = tail;
         pieces.push((c, piece));
     }
-    let from = |c: usize| &parted[start[c] as usize..start[c + 1] as usize];
+    let from = |c: usize| {
+        let r = start[c] as usize..start[c + 1] as usize;
+        (&parted[r.clone()], &parted_fines[r])
+    };
     if n >= PARALLEL_FROM {
         pieces
             .into_par_iter()
