@@ -57,6 +57,33 @@
 //! (allocation-free points, bucket sort, shared double-double parameter in the rounding,
 //! static filter), count 160M → 115M. Without FMA the certified rounding of a crossing
 //! still costs about 550 instructions (Dekker products): the find gap on the dense case.
+//!
+//! Session 6 (branch s6-isect), 2-core machine shared with three other helpers' builds
+//! (load 6.7–9: wall figures swing ×2–3 between runs, geo's included). Full run, same
+//! binary pair run back to back, ratio = geo / compgeom:
+//!
+//! | input | n | count vs geo count() | find vs geo collect() | load |
+//! |---|---:|---|---|---:|
+//! | short random, before | 1e5 | 0.0615 vs 0.3926 (6.38×) | 0.0805 vs 0.3873 (4.81×) | 7.3 |
+//! | short random, after | 1e5 | 0.0636 vs 0.3139 (4.93×) | 0.0647 vs 0.3069 (4.74×) | 6.8 |
+//! | long random, before | 1e3 | 0.0170 vs 0.0160 (0.94×) | 0.0701 vs 0.0191 (0.27×) | 7.3 |
+//! | long random, after | 1e3 | 0.0224 vs 0.0160 (0.71×) | 0.0413 vs 0.0178 (0.43×) | 6.8 |
+//! | 100×100 grid, before | 1e4 | 0.0373 vs 0.0621 (1.67×) | 0.0242 vs 0.0527 (2.18×) | 7.3 |
+//! | 100×100 grid, after | 1e4 | 0.0338 vs 0.0319 (0.94×) | 0.0285 vs 0.0335 (1.18×) | 6.8 |
+//!
+//! (The grid row's geo time halved between the two runs: load, not code.) Figures that
+//! hold under this load, long random 1e3 (`examples/intersect_profile`, one thread):
+//! instructions (callgrind) find 333M → 283M, count 140M → 128M; CPU time per call
+//! (`perf stat` task-clock, 20 calls) find 60 → 32 ms, count 31 → 24 ms. The find gain
+//! is mostly memory: `IntersectionPoint` went from 184 to 56 bytes (no exact point copy,
+//! lists inline as ranges into the sorted pair), which took the page faults of a call
+//! from ~11k to ~1k (sys time 25 ms → 2 ms per call). Also: the rounding runs in two
+//! lanes (SSE2; 590 → 480 instructions per crossing), and the bucket sort and the
+//! grouping of the sorted records run on the rayon pool. Count at 1e4 (25.1M points):
+//! CPU 2.7–4.1 s before, 3.1–3.9 s after (no change measurable under this load).
+//! Still missing: find on long random is below geo (geo's whole `count()` is ~109M
+//! instructions by callgrind, compgeom's rounding alone ~120M: about 480 instructions per
+//! crossing for correct rounding without FMA).
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
