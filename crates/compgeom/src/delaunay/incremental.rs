@@ -244,12 +244,27 @@ impl Dag {
     }
 
     /// Descends the history DAG to the current triangle containing point `p` (closed).
+    ///
+    /// The descent is a chain of dependent loads and tests, so it runs two levels per
+    /// step: the node's test and both of its children's tests are independent and overlap,
+    /// and only the chosen grandchild is followed. (The unused child's test is a wasted
+    /// but harmless orientation.) Steps next to the leaves take one level.
     #[inline]
     fn locate<const G: bool>(&self, p: Point2) -> u32 {
+        let rays = &self.rays[..];
         let mut r = self.root;
         while r & LEAF == 0 {
-            let n = &self.rays[r as usize];
-            r = n.next[usize::from(ray_side::<G>(n.q, n.x, p) > 0)];
+            let n = &rays[r as usize];
+            let [c0, c1] = n.next;
+            if (c0 | c1) & LEAF != 0 {
+                r = n.next[usize::from(ray_side::<G>(n.q, n.x, p) > 0)];
+                continue;
+            }
+            let (a, b) = (&rays[c0 as usize], &rays[c1 as usize]);
+            let s = ray_side::<G>(n.q, n.x, p) > 0;
+            let sa = usize::from(ray_side::<G>(a.q, a.x, p) > 0);
+            let sb = usize::from(ray_side::<G>(b.q, b.x, p) > 0);
+            r = if s { b.next[sb] } else { a.next[sa] };
         }
         r & !LEAF
     }
