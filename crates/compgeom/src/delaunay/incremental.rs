@@ -534,3 +534,192 @@ fn brio(pts: &[Point2], ids: Vec<u32>) -> Vec<u32> {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::delaunay::{delaunay, verify_delaunay};
+    use crate::kernel::{orient2d, Orientation};
+    use proptest::prelude::*;
+
+    fn exact(a: Point2, b: Point2, c: Point2) -> i8 {
+        match orient2d(a, b, c) {
+            Orientation::CounterClockwise => 1,
+            Orientation::Clockwise => -1,
+            Orientation::Collinear => 0,
+        }
+    }
+
+    /// The book variant is Delaunay (exact verifier) and has the default's triangle count
+    /// (unique even with cocircular points).
+    fn check(pts: &[Point2]) -> Result<(), TestCaseError> {
+        let book = triangulate(pts);
+        prop_assert!(verify_delaunay(&book).is_ok(), "{:?}", verify_delaunay(&book));
+        let fast = delaunay(pts).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert_eq!(book.triangles().len(), fast.triangles().len());
+        prop_assert_eq!(book.input_to_vertex(), fast.input_to_vertex());
+        Ok(())
+    }
+
+    #[test]
+    fn negative_zero_is_ordered_as_zero() {
+        // (5, −0) and (3, +0) lie on one horizontal line: the symbolic rule must order them
+        // by x, as `lex` does once −0.0 is normalized.
+        let sets = [
+            vec![(5.0, -0.0), (3.0, 0.0), (0.0, 1.0), (4.0, -1.0), (8.0, 0.0)],
+            vec![(-0.0, 2.0), (0.0, -0.0), (1.0, -0.0), (-1.0, 0.0), (0.0, 1.0)],
+            vec![(-0.0, -0.0), (2.0, 0.0), (-2.0, -0.0), (0.0, 3.0), (0.0, -3.0)],
+        ];
+        for s in sets {
+            let pts: Vec<Point2> = s.into_iter().map(Point2::from).collect();
+            check(&pts).unwrap();
+        }
+    }
+
+    /// Real and symbolic vertex ids over a small point set, for the predicate tests.
+    fn ids_and_points() -> impl Strategy<Value = (Vec<Point2>, [u32; 3])> {
+        let scale = prop_oneof![
+            Just((1.0, 0.0)),
+            Just((1.0, 1e15)),
+            Just((0.5, -3.0)),
+            Just((2f64.powi(-40), 1.0)),
+            Just((2f64.powi(-1000), 0.0)),
+            Just((2f64.powi(900), 0.0)),
+            Just((1e-3, 0.0)),
+        ];
+        (
+            scale,
+            prop::collection::vec((-3i32..4, -3i32..4, any::<bool>()), 3..7),
+            prop::collection::vec(0u32..9, 3),
+        )
+            .prop_map(|((step, off), v, pick)| {
+                let pts: Vec<Point2> = v
+                    .iter()
+                    .map(|&(x, y, nudge)| {
+                        let px = off + f64::from(x) * step;
+                        let py = off + f64::from(y) * step;
+                        Point2::new(if nudge { px.next_up() } else { px }, py)
+                    })
+                    .collect();
+                let n = pts.len() as u32;
+                // Ids 0..n are real; 7 and 8 pick the symbolic points.
+                let id = |k: u32| match k {
+                    7 => M1,
+                    8 => M2,
+                    _ => k % n,
+                };
+                (pts, [id(pick[0]), id(pick[1]), id(pick[2])])
+            })
+    }
+
+    fn dag(pts: &[Point2]) -> Dag {
+        Dag {
+            pts: pts.iter().map(|p| Point2::new(p.x + 0.0, p.y + 0.0)).collect(),
+            v: Vec::new(),
+            twin: Vec::new(),
+            up: Vec::new(),
+            rays: Vec::new(),
+            root: LEAF,
+            stack: Vec::new(),
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        /// The descent's ray test (static filter, grid and NaN-coded symbolic paths) equals
+        /// the general symbolic orientation on degenerate input: collinear and repeated
+        /// points, equal x or y (ties of the lexicographic rule), ±1 ulp, tiny and huge
+        /// dyadic grids, large offsets.
+        #[test]
+        fn ray_tests_equal_the_symbolic_orientation((pts, [q, x, p]) in ids_and_points()) {
+            let d = dag(&pts);
+            // The descent only tests real q and p.
+            let (q, p) = (if real(q) { q } else { 0 }, if real(p) { p } else { 1 });
+            let want = d.orient_sym_slow(q, x, p);
+            let (cq, cx, cp) = (d.p(q), d.coords(x), d.p(p));
+            prop_assert_eq!(ray_side::<false>(cq, cx, cp), want);
+            if small_integer_grid(&d.pts) {
+                prop_assert_eq!(ray_side::<true>(cq, cx, cp), want);
+                prop_assert_eq!(d.orient_sym::<true>(q, x, p), want);
+            }
+            prop_assert_eq!(d.orient_sym::<false>(q, x, p), want);
+            if real(x) {
+                prop_assert_eq!(want, exact(cq, cx, cp));
+                if let Some(s) = orient_filter(cq, cx, cp) {
+                    prop_assert_eq!(s, want);
+                }
+            }
+        }
+
+        /// Whole triangulations on degenerate sets: small grids at several scales and
+        /// offsets (integer, dyadic, beyond 2^53), with duplicates, collinear runs and
+        /// points on common horizontal lines (the directions of p₋₁ and p₋₂).
+        #[test]
+        fn book_is_delaunay_on_degenerate_sets(
+            v in prop::collection::vec((-4i32..5, -4i32..5), 0..45),
+            scale in prop_oneof![
+                Just((1.0, 0.0)),
+                Just((1.0, 2f64.powi(60))),
+                Just((0.25, 1e6)),
+                Just((2f64.powi(-30), -0.0)),
+                Just((2f64.powi(-1060), 0.0)),
+                Just((1e250, 0.0)),
+                Just((3.0, -4e15)),
+            ],
+        ) {
+            let (step, off) = scale;
+            let pts: Vec<Point2> = v
+                .iter()
+                .map(|&(x, y)| Point2::new(off + f64::from(x) * step, off + f64::from(y) * step))
+                .collect();
+            check(&pts)?;
+        }
+
+        /// Integer points on a circle with many lattice points (x² + y² = 5525), shifted,
+        /// plus its centre and some duplicates: heavy cocircularity.
+        #[test]
+        fn book_is_delaunay_on_lattice_circles(
+            pick in prop::collection::vec(0usize..64, 3..40),
+            shift in prop_oneof![Just(0.0), Just(1e9), Just(-(2f64.powi(55)))],
+            centre in any::<bool>(),
+        ) {
+            let mut on: Vec<(f64, f64)> = Vec::new();
+            for x in -74i32..=74 {
+                for y in -74i32..=74 {
+                    if x * x + y * y == 5525 {
+                        on.push((f64::from(x), f64::from(y)));
+                    }
+                }
+            }
+            let mut pts: Vec<Point2> = pick
+                .iter()
+                .map(|&k| {
+                    let (x, y) = on[k % on.len()];
+                    Point2::new(x + shift, y + shift)
+                })
+                .collect();
+            if centre {
+                pts.push(Point2::new(shift, shift));
+            }
+            check(&pts)?;
+        }
+    }
+
+    #[test]
+    fn larger_uniform_and_grid_inputs_verify() {
+        let mut r = SplitMix(7);
+        let u: Vec<Point2> = (0..3000)
+            .map(|_| {
+                let a = (r.next() >> 11) as f64 / (1u64 << 53) as f64;
+                let b = (r.next() >> 11) as f64 / (1u64 << 53) as f64;
+                Point2::new(a, b)
+            })
+            .collect();
+        check(&u).unwrap();
+        let g: Vec<Point2> = (0..60 * 60)
+            .map(|i| Point2::new(f64::from(i % 60), f64::from(i / 60)))
+            .collect();
+        check(&g).unwrap();
+    }
+}
