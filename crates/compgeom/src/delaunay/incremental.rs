@@ -43,7 +43,10 @@
 //!
 //! Expected O(n log n) time and O(n) space for a random insertion order; the order is a
 //! biased randomized insertion order (`brio`, fixed seed, so runs are reproducible).
-//! Duplicates are merged before insertion; collinear input gives no triangles.
+//! Duplicates are merged during insertion: a copy of a vertex is located on two edges of
+//! a triangle, i.e. at their common corner, and changes nothing (no separate sorting pass);
+//! every vertex then stands for the smallest input index among its copies. Collinear input
+//! (checked first) gives no triangles.
 
 use super::fast::{dedup, hilbert_order};
 use super::mesh::{next, prev, NONE};
@@ -269,7 +272,9 @@ impl Dag {
         r & !LEAF
     }
 
-    fn insert<const G: bool>(&mut self, p: u32) {
+    /// Inserts point `p`; returns `NONE`, or the vertex `p` is equal to (then nothing
+    /// changes: duplicates are merged here, where the location finds them anyway).
+    fn insert<const G: bool>(&mut self, p: u32) -> u32 {
         let t = self.locate::<G>(self.p(p));
         // The zero mask of p against the edges of t.
         let mut mask = 0u32;
@@ -280,14 +285,18 @@ impl Dag {
                 mask |= 1 << k;
             }
         }
-        match mask.count_ones() {
+        match mask {
             0 => self.split_face(t, p),
-            1 => self.split_edge(3 * t + mask.trailing_zeros(), p),
-            _ => return, // equal to a vertex: impossible after merging duplicates
+            1 | 2 | 4 => self.split_edge(3 * t + mask.trailing_zeros(), p),
+            // On two edges: p is their common corner (edge k runs from corner k to k + 1).
+            3 => return self.v[3 * t as usize + 1],
+            6 => return self.v[3 * t as usize + 2],
+            _ => return self.v[3 * t as usize],
         }
         while let Some(h) = self.stack.pop() {
             self.legalize::<G>(h);
         }
+        NONE
     }
 
     /// p strictly inside triangle t = (a, b, c): children (a, b, p), (b, c, p), (c, a, p),
@@ -441,36 +450,30 @@ impl SplitMix {
 /// Triangulates finite `pts` (fewer than `u32::MAX - 2`) by the book's algorithm.
 pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
     let n = pts.len();
-    let rep = dedup(pts);
-    let mut distinct: Vec<u32> = (0..n as u32).filter(|&i| rep[i as usize] == i).collect();
-    let collinear = distinct.len() < 3 || {
-        let (a, b) = (pts[distinct[0] as usize], pts[distinct[1] as usize]);
-        distinct[2..]
-            .iter()
-            .all(|&i| orient(a, b, pts[i as usize]) == 0)
+    // Adding +0.0 turns −0.0 into +0.0 (and changes nothing else), so that `lex` orders
+    // equal coordinates as equal.
+    let norm = |i: u32| {
+        let p = pts[i as usize];
+        Point2::new(p.x + 0.0, p.y + 0.0)
+    };
+    // p0: the lexicographically highest point.
+    let Some(k0) = (0..n as u32).max_by(|&i, &j| lex(norm(i), norm(j))) else {
+        return Triangulation::from_triangles(pts, &[], &[]);
+    };
+    let a = pts[k0 as usize];
+    let collinear = match pts.iter().find(|&&p| p != a) {
+        None => true,
+        Some(&b) => pts.iter().all(|&p| orient(a, b, p) == 0),
     };
     if collinear {
-        return Triangulation::from_triangles(pts, &[], &rep);
+        return Triangulation::from_triangles(pts, &[], &dedup(pts));
     }
-    // p0: the lexicographically highest point.
-    let k0 = (0..distinct.len())
-        .max_by(|&i, &j| lex(pts[distinct[i] as usize], pts[distinct[j] as usize]))
-        .unwrap_or(0);
-    let p0 = distinct.swap_remove(k0);
-    // Local ids: 0 is p0, then the insertion order. Adding +0.0 turns −0.0 into +0.0 (and
-    // changes nothing else), so that `lex` orders equal coordinates as equal.
-    let mut order = vec![p0];
-    order.extend(brio(pts, distinct));
-    let local: Vec<Point2> = order
-        .iter()
-        .map(|&i| {
-            let p = pts[i as usize];
-            Point2::new(p.x + 0.0, p.y + 0.0)
-        })
-        .collect();
-    let m = local.len();
+    // Local ids: 0 is p0, then the insertion order.
+    let mut order = vec![k0];
+    order.extend(brio(pts, (0..n as u32).filter(|&i| i != k0).collect()));
+    let m = order.len();
     let mut dag = Dag {
-        pts: local,
+        pts: order.iter().map(|&i| norm(i)).collect(),
         v: Vec::with_capacity(6 * m),
         twin: Vec::with_capacity(6 * m),
         up: Vec::with_capacity(2 * m),
@@ -479,10 +482,33 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
         stack: Vec::new(),
     };
     dag.put(NONE, [0, M2, M1], [ROOT, NONE]);
-    if small_integer_grid(&dag.pts) {
-        (1..m as u32).for_each(|p| dag.insert::<true>(p));
-    } else {
-        (1..m as u32).for_each(|p| dag.insert::<false>(p));
+    // (local id, the vertex it equals) for every repeated point.
+    let mut copies: Vec<(u32, u32)> = Vec::new();
+    let mut run = |dag: &mut Dag, grid: bool| {
+        for p in 1..m as u32 {
+            let v = if grid {
+                dag.insert::<true>(p)
+            } else {
+                dag.insert::<false>(p)
+            };
+            if v != NONE {
+                copies.push((p, v));
+            }
+        }
+    };
+    let grid = small_integer_grid(&dag.pts);
+    run(&mut dag, grid);
+    // Every vertex stands for the smallest input index among its copies (first seen).
+    let mut first: Vec<u32> = order.clone();
+    for &(p, v) in &copies {
+        first[v as usize] = first[v as usize].min(order[p as usize]);
+    }
+    let mut rep = vec![0u32; n];
+    for (l, &i) in order.iter().enumerate() {
+        rep[i as usize] = first[l];
+    }
+    for &(p, v) in &copies {
+        rep[order[p as usize] as usize] = first[v as usize];
     }
     // The current triangles with real corners are the result; their twins give the
     // neighbours directly (no edge matching).
@@ -493,7 +519,7 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
         let c = [dag.v[3 * t], dag.v[3 * t + 1], dag.v[3 * t + 2]];
         if c.iter().all(|&v| real(v)) {
             *slot = tris.len() as u32;
-            tris.push(c.map(|v| order[v as usize]));
+            tris.push(c.map(|v| first[v as usize]));
         }
     }
     let mut nbs: Vec<[u32; 3]> = Vec::with_capacity(tris.len());
