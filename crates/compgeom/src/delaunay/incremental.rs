@@ -246,36 +246,77 @@ impl Dag {
         r
     }
 
-    /// Descends the history DAG to the current triangle containing point `p` (closed).
+    /// One step of a descent from inner node `r` towards point `p`: returns the successor
+    /// reached and the entry (`2r + k`) that names it.
     ///
-    /// The descent is a chain of dependent loads and tests, so it runs two levels per
-    /// step: the node's test and both of its children's tests are independent and overlap,
-    /// and only the chosen grandchild is followed. (The unused child's test is a wasted
-    /// but harmless orientation.) Steps next to the leaves take one level.
-    #[inline]
-    fn locate<const G: bool>(&self, p: Point2) -> u32 {
+    /// A descent is a chain of dependent loads and tests, so a step takes two levels: the
+    /// node's test and both of its children's tests are independent and overlap, and only
+    /// the chosen grandchild is followed. (The unused child's test is a wasted but
+    /// harmless orientation.) Steps next to the leaves take one level.
+    #[inline(always)]
+    fn step<const G: bool>(&self, p: Point2, r: u32) -> (u32, u32) {
         let rays = &self.rays[..];
-        let mut r = self.root;
+        let n = &rays[r as usize];
+        let [c0, c1] = n.next;
+        if (c0 | c1) & LEAF != 0 {
+            let k = u32::from(ray_side::<G>(n.q, n.x, p) > 0);
+            return (n.next[k as usize], 2 * r + k);
+        }
+        let (a, b) = (&rays[c0 as usize], &rays[c1 as usize]);
+        let s = ray_side::<G>(n.q, n.x, p) > 0;
+        let ka = u32::from(ray_side::<G>(a.q, a.x, p) > 0);
+        let kb = u32::from(ray_side::<G>(b.q, b.x, p) > 0);
+        if s {
+            (b.next[kb as usize], 2 * c1 + kb)
+        } else {
+            (a.next[ka as usize], 2 * c0 + ka)
+        }
+    }
+
+    /// The successor named by entry `at` (`2r + k`, or `ROOT`).
+    fn entry(&self, at: u32) -> u32 {
+        if at == ROOT {
+            self.root
+        } else {
+            self.rays[(at / 2) as usize].next[(at % 2) as usize]
+        }
+    }
+
+    /// Descends the history DAG from entry `at` to the current triangle containing point
+    /// `p` (closed). `at` may come from an earlier descent of `p` in a smaller DAG: the
+    /// region an entry names never changes (a destroyed leaf's entries are redirected to
+    /// the nodes that partition it), so the descent just continues from there.
+    fn locate_from<const G: bool>(&self, p: Point2, at: u32) -> u32 {
+        let mut r = self.entry(at);
         while r & LEAF == 0 {
-            let n = &rays[r as usize];
-            let [c0, c1] = n.next;
-            if (c0 | c1) & LEAF != 0 {
-                r = n.next[usize::from(ray_side::<G>(n.q, n.x, p) > 0)];
-                continue;
-            }
-            let (a, b) = (&rays[c0 as usize], &rays[c1 as usize]);
-            let s = ray_side::<G>(n.q, n.x, p) > 0;
-            let sa = usize::from(ray_side::<G>(a.q, a.x, p) > 0);
-            let sb = usize::from(ray_side::<G>(b.q, b.x, p) > 0);
-            r = if s { b.next[sb] } else { a.next[sa] };
+            r = self.step::<G>(p, r).0;
         }
         r & !LEAF
     }
 
-    /// Inserts point `p`; returns `NONE`, or the vertex `p` is equal to (then nothing
-    /// changes: duplicates are merged here, where the location finds them anyway).
-    fn insert<const G: bool>(&mut self, p: u32) -> u32 {
-        let t = self.locate::<G>(self.p(p));
+    /// Descends for two points at once, alternating their steps so that the two chains of
+    /// dependent loads overlap; returns the entries naming the leaves they reach.
+    fn locate2<const G: bool>(&self, p: Point2, q: Point2) -> (u32, u32) {
+        let (mut r, mut at_r) = (self.root, ROOT);
+        let (mut s, mut at_s) = (self.root, ROOT);
+        while r & LEAF == 0 && s & LEAF == 0 {
+            (r, at_r) = self.step::<G>(p, r);
+            (s, at_s) = self.step::<G>(q, s);
+        }
+        while r & LEAF == 0 {
+            (r, at_r) = self.step::<G>(p, r);
+        }
+        while s & LEAF == 0 {
+            (s, at_s) = self.step::<G>(q, s);
+        }
+        (at_r, at_s)
+    }
+
+    /// Inserts point `p`, located from entry `at` on; returns `NONE`, or the vertex `p`
+    /// is equal to (then nothing changes: duplicates are merged here, where the location
+    /// finds them anyway).
+    fn insert<const G: bool>(&mut self, p: u32, at: u32) -> u32 {
+        let t = self.locate_from::<G>(self.p(p), at);
         // The zero mask of p against the edges of t.
         let mut mask = 0u32;
         for k in 0..3 {
@@ -447,6 +488,32 @@ impl SplitMix {
     }
 }
 
+/// Inserts points 1, 2, … in order, recording repeated points in `copies`. Points are
+/// located in pairs by one interleaved descent of the same DAG; the second of a pair then
+/// finishes its descent after the first is inserted (usually a few steps, as the first
+/// insertion changed only the triangles near it). The insertions, and so the DAG, are
+/// those of one point at a time.
+fn insert_all<const G: bool>(dag: &mut Dag, copies: &mut Vec<(u32, u32)>) {
+    let m = dag.pts.len() as u32;
+    let mut p = 1;
+    while p < m {
+        let (at_p, at_q) = if p + 1 < m {
+            dag.locate2::<G>(dag.p(p), dag.p(p + 1))
+        } else {
+            (ROOT, ROOT)
+        };
+        for (k, at) in [(p, at_p), (p + 1, at_q)] {
+            if k < m {
+                let v = dag.insert::<G>(k, at);
+                if v != NONE {
+                    copies.push((k, v));
+                }
+            }
+        }
+        p += 2;
+    }
+}
+
 /// Triangulates finite `pts` (fewer than `u32::MAX - 2`) by the book's algorithm.
 pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
     let n = pts.len();
@@ -484,20 +551,11 @@ pub(crate) fn triangulate(pts: &[Point2]) -> Triangulation {
     dag.put(NONE, [0, M2, M1], [ROOT, NONE]);
     // (local id, the vertex it equals) for every repeated point.
     let mut copies: Vec<(u32, u32)> = Vec::new();
-    let mut run = |dag: &mut Dag, grid: bool| {
-        for p in 1..m as u32 {
-            let v = if grid {
-                dag.insert::<true>(p)
-            } else {
-                dag.insert::<false>(p)
-            };
-            if v != NONE {
-                copies.push((p, v));
-            }
-        }
-    };
-    let grid = small_integer_grid(&dag.pts);
-    run(&mut dag, grid);
+    if small_integer_grid(&dag.pts) {
+        insert_all::<true>(&mut dag, &mut copies);
+    } else {
+        insert_all::<false>(&mut dag, &mut copies);
+    }
     // Every vertex stands for the smallest input index among its copies (first seen).
     let mut first: Vec<u32> = order.clone();
     for &(p, v) in &copies {
