@@ -449,8 +449,7 @@ impl Dag {
             let ij = book_index(a).min(book_index(b));
             // The flip must keep both triangles counter-clockwise (the book shows it does
             // for an illegal edge; checked exactly so that no inverted triangle can appear).
-            if kl < ij || self.orient_sym::<G>(p, a, d) <= 0 || self.orient_sym::<G>(p, d, b) <= 0
-            {
+            if kl < ij || self.orient_sym::<G>(p, a, d) <= 0 || self.orient_sym::<G>(p, d, b) <= 0 {
                 return;
             }
         }
@@ -638,7 +637,11 @@ mod tests {
     /// (unique even with cocircular points).
     fn check(pts: &[Point2]) -> Result<(), TestCaseError> {
         let book = triangulate(pts);
-        prop_assert!(verify_delaunay(&book).is_ok(), "{:?}", verify_delaunay(&book));
+        prop_assert!(
+            verify_delaunay(&book).is_ok(),
+            "{:?}",
+            verify_delaunay(&book)
+        );
         let fast = delaunay(pts).map_err(|e| TestCaseError::fail(e.to_string()))?;
         prop_assert_eq!(book.triangles().len(), fast.triangles().len());
         prop_assert_eq!(book.input_to_vertex(), fast.input_to_vertex());
@@ -651,8 +654,20 @@ mod tests {
         // by x, as `lex` does once −0.0 is normalized.
         let sets = [
             vec![(5.0, -0.0), (3.0, 0.0), (0.0, 1.0), (4.0, -1.0), (8.0, 0.0)],
-            vec![(-0.0, 2.0), (0.0, -0.0), (1.0, -0.0), (-1.0, 0.0), (0.0, 1.0)],
-            vec![(-0.0, -0.0), (2.0, 0.0), (-2.0, -0.0), (0.0, 3.0), (0.0, -3.0)],
+            vec![
+                (-0.0, 2.0),
+                (0.0, -0.0),
+                (1.0, -0.0),
+                (-1.0, 0.0),
+                (0.0, 1.0),
+            ],
+            vec![
+                (-0.0, -0.0),
+                (2.0, 0.0),
+                (-2.0, -0.0),
+                (0.0, 3.0),
+                (0.0, -3.0),
+            ],
         ];
         for s in sets {
             let pts: Vec<Point2> = s.into_iter().map(Point2::from).collect();
@@ -698,7 +713,10 @@ mod tests {
 
     fn dag(pts: &[Point2]) -> Dag {
         Dag {
-            pts: pts.iter().map(|p| Point2::new(p.x + 0.0, p.y + 0.0)).collect(),
+            pts: pts
+                .iter()
+                .map(|p| Point2::new(p.x + 0.0, p.y + 0.0))
+                .collect(),
             v: Vec::new(),
             twin: Vec::new(),
             up: Vec::new(),
