@@ -49,6 +49,8 @@ struct Row {
     delaunator: Duration,
     /// Median over the rounds of (default / fastest peer in the same round).
     median_ratio: f64,
+    /// Median over the rounds of (book / default in the same round).
+    book_median: f64,
 }
 
 fn uniform(n: usize, seed: u64) -> Vec<Point2> {
@@ -114,7 +116,9 @@ fn measure(name: String, pts: &[Point2], runs: usize, verify: bool) -> Result<Ro
             .map(|r| ms(r[0]) / ms(r[2].min(r[3])))
             .collect(),
     );
+    let book_median = median(times.iter().map(|r| ms(r[1]) / ms(r[0])).collect());
     Ok(Row {
+        book_median,
         default: best(0),
         book: best(1),
         spade: best(2),
@@ -190,13 +194,22 @@ pub fn run(quick: bool) -> Result<(), String> {
     ];
     println!("Delaunay: times in ms (best of {runs} alternating rounds); ratio = compgeom default / fastest peer (< 1 = compgeom faster), of the best times and the median of the per-round ratios");
     println!(
-        "{:<18} {:>9} {:>10} {:>10} {:>10} {:>11} {:>7} {:>7} {:>10}",
-        "input", "n", "default", "book", "spade", "delaunator", "ratio", "median", "book/def"
+        "{:<18} {:>9} {:>10} {:>10} {:>10} {:>11} {:>7} {:>7} {:>10} {:>8}",
+        "input",
+        "n",
+        "default",
+        "book",
+        "spade",
+        "delaunator",
+        "ratio",
+        "median",
+        "book/def",
+        "median"
     );
     for r in &rows {
         let peer = r.spade.min(r.delaunator);
         println!(
-            "{:<18} {:>9} {:>10.1} {:>10.1} {:>10.1} {:>11.1} {:>7.2} {:>7.2} {:>10.2}",
+            "{:<18} {:>9} {:>10.1} {:>10.1} {:>10.1} {:>11.1} {:>7.2} {:>7.2} {:>10.2} {:>8.2}",
             r.name,
             r.n,
             ms(r.default),
@@ -205,7 +218,8 @@ pub fn run(quick: bool) -> Result<(), String> {
             ms(r.delaunator),
             ms(r.default) / ms(peer),
             r.median_ratio,
-            ms(r.book) / ms(r.default)
+            ms(r.book) / ms(r.default),
+            r.book_median
         );
     }
     cdt(quick)?;
