@@ -24,6 +24,21 @@
 //! | uniform 1e6 (load 6.2) | 1493.9 | 4138.0 | 1687.9 | 1882.4 | 0.89 | 0.84 | 2.77 |
 //! | grid 1000² (load 6.2) | 280.8 | 1220.4 | 897.8 | 401.5 | 0.70 | 0.79 | 4.35 |
 //!
+//! The book variant after its DAG rework (ray nodes with cached coordinates, two levels per
+//! step, paired descents, duplicates merged in the descent); load 6–8, same runs for all
+//! four; book/def of the best times, then the median of the per-round ratios:
+//!
+//! | input | default | book | spade | delaunator | book/def | median | before (load 7) |
+//! |---|---|---|---|---|---|---|---|
+//! | uniform 1e5 | 67.4 | 112.8 | 66.6 | 57.6 | 1.67 | 1.58 | 3.50 |
+//! | uniform 1e6 | 1044.9 | 1723.3 | 1094.7 | 1212.9 | 1.65 | 1.65 | 2.66 |
+//! | grid 1000² | 592.1 | 1527.3 | 1387.7 | 746.5 | 2.58 | 2.61 | 3.66 |
+//!
+//! (A second run at load 8: 1.97 / 1.61, 1.70 / 1.56, 2.84 / 2.88.) Callgrind, 1e5 points:
+//! book uniform 870 M → 694 M instructions, grid 682 M → 473 M (default 343 M / 257 M). The
+//! book still executes twice the default's instructions and runs at a lower rate: the
+//! descent (~45 steps per point) is a chain of dependent loads.
+//!
 //! CDT (900 holes, 110k vertices): compgeom full 470 ms vs spade `bulk_load_cdt` 385 ms
 //! (1.22; was 1.38–1.42). Callgrind instructions, 90 000 points: default grid 353 M → 215 M
 //! and uniform 431 M → 294 M this session (delaunator 245 M / 241 M, spade 1435 M / 485 M,
@@ -49,6 +64,8 @@ struct Row {
     delaunator: Duration,
     /// Median over the rounds of (default / fastest peer in the same round).
     median_ratio: f64,
+    /// Median over the rounds of (book / default in the same round).
+    book_median: f64,
 }
 
 fn uniform(n: usize, seed: u64) -> Vec<Point2> {
@@ -114,7 +131,9 @@ fn measure(name: String, pts: &[Point2], runs: usize, verify: bool) -> Result<Ro
             .map(|r| ms(r[0]) / ms(r[2].min(r[3])))
             .collect(),
     );
+    let book_median = median(times.iter().map(|r| ms(r[1]) / ms(r[0])).collect());
     Ok(Row {
+        book_median,
         default: best(0),
         book: best(1),
         spade: best(2),
@@ -190,13 +209,22 @@ pub fn run(quick: bool) -> Result<(), String> {
     ];
     println!("Delaunay: times in ms (best of {runs} alternating rounds); ratio = compgeom default / fastest peer (< 1 = compgeom faster), of the best times and the median of the per-round ratios");
     println!(
-        "{:<18} {:>9} {:>10} {:>10} {:>10} {:>11} {:>7} {:>7} {:>10}",
-        "input", "n", "default", "book", "spade", "delaunator", "ratio", "median", "book/def"
+        "{:<18} {:>9} {:>10} {:>10} {:>10} {:>11} {:>7} {:>7} {:>10} {:>8}",
+        "input",
+        "n",
+        "default",
+        "book",
+        "spade",
+        "delaunator",
+        "ratio",
+        "median",
+        "book/def",
+        "median"
     );
     for r in &rows {
         let peer = r.spade.min(r.delaunator);
         println!(
-            "{:<18} {:>9} {:>10.1} {:>10.1} {:>10.1} {:>11.1} {:>7.2} {:>7.2} {:>10.2}",
+            "{:<18} {:>9} {:>10.1} {:>10.1} {:>10.1} {:>11.1} {:>7.2} {:>7.2} {:>10.2} {:>8.2}",
             r.name,
             r.n,
             ms(r.default),
@@ -205,7 +233,8 @@ pub fn run(quick: bool) -> Result<(), String> {
             ms(r.delaunator),
             ms(r.default) / ms(peer),
             r.median_ratio,
-            ms(r.book) / ms(r.default)
+            ms(r.book) / ms(r.default),
+            r.book_median
         );
     }
     cdt(quick)?;

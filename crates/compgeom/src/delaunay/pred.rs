@@ -50,6 +50,22 @@ pub(crate) fn orient(a: Point2, b: Point2, c: Point2) -> i8 {
     }
 }
 
+/// Stage A of [`orient`] alone: the sign of orient2d(a, b, c) when the static error bound
+/// certifies it, `None` otherwise (also for non-finite or NaN input, where every comparison
+/// fails). A `Some` is always the exact sign (nonzero); the caller decides the `None` cases.
+#[inline(always)]
+pub(crate) fn orient_filter(a: Point2, b: Point2, c: Point2) -> Option<i8> {
+    let l = (a.x - c.x) * (b.y - c.y);
+    let r = (a.y - c.y) * (b.x - c.x);
+    let det = l - r;
+    let sum = l.abs() + r.abs();
+    if det.abs() > CCW_BOUND * sum && sum > TINY && sum < f64::MAX {
+        Some(if det > 0.0 { 1 } else { -1 })
+    } else {
+        None
+    }
+}
+
 /// Sign of incircle(a, b, c, d) for counter-clockwise a, b, c: > 0 inside, < 0 outside,
 /// 0 on the circle. Exact.
 #[inline(always)]
