@@ -194,6 +194,26 @@ pub fn boolean_with(
     op: BooleanOp,
     opts: &BooleanOptions,
 ) -> Result<MultiPolygon> {
+    let rule = opts.fill_rule;
+    let mut segs = oriented_segments(a, rule)?;
+    let na = segs.len();
+    segs.extend(oriented_segments(b, rule)?);
+    super::trace::traced_boolean(
+        &segs,
+        na,
+        |wa, wb| op.apply(rule.inside(wa), rule.inside(wb)),
+        opts.keep_collinear,
+    )
+}
+
+/// [`boolean_with`] by the DCEL: [`boolean_dcel`] and [`faces_to_polygons`] (the
+/// reference the traced path is tested against).
+pub(crate) fn boolean_via_dcel(
+    a: &MultiPolygon,
+    b: &MultiPolygon,
+    op: BooleanOp,
+    opts: &BooleanOptions,
+) -> Result<MultiPolygon> {
     let d = boolean_dcel(a, b, opts.fill_rule)?;
     let rule = opts.fill_rule;
     let inside = |f| {

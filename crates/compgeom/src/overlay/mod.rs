@@ -53,6 +53,7 @@
 //!
 mod boolean;
 mod result;
+mod trace;
 mod validate;
 
 pub use boolean::{

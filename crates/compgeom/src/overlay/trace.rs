@@ -1,0 +1,446 @@
+//! The boolean-only path (book §2.4 without building the DCEL records): from the flat
+//! arrangement of both inputs' rings straight to the result's rings, on compact arrays.
+//!
+//! 1. *Arrangement*: [`Flat::of_segments`] (exact noding: vertices, edges, the ring edges
+//!    carrying each edge).
+//! 2. *Links*: the outgoing half-edges of each vertex; only at vertices of degree > 2 are
+//!    they sorted by exact angle (from the directions of the input segments carrying them,
+//!    as in [`crate::dcel`]); `next(e)` is the half-edge just clockwise of `twin(e)`.
+//!    Half-edges `2i` and `2i + 1` are the two ways along edge `i`.
+//! 3. *Winding numbers*: the cycles of `next` are face boundaries; crossing half-edge `h`
+//!    from its right to its left changes the winding numbers `(w_A, w_B)` by the sum of
+//!    ±1 over the ring edges carrying it. One walk over all half-edges labels every cycle
+//!    relative to the first cycle of its connected component (a depth-first search across
+//!    twins). Each component's exterior is the cycle left of the out-edge just clockwise
+//!    of direction −x at the component's lexicographically smallest vertex (an input
+//!    point: a crossing lies inside a segment, whose smaller end is in the component).
+//!    When there is more than one component, the face around each one is the face just
+//!    left of that vertex, read from one sweep (the book's graph G, `dcel/holes.rs`);
+//!    components are resolved in lexicographic order of their smallest vertex, so the
+//!    face found is already labelled. All decisions are exact; no point is rounded here.
+//! 4. *Rings*: an edge is on the result's boundary when the fill rule puts exactly one of
+//!    its sides in the result. The boundary is traced with the result on the left (after
+//!    boundary half-edge `h` comes the first boundary half-edge clockwise around its end),
+//!    cycles are split at repeated vertices into simple rings, each ring is oriented by its
+//!    turn at its lowest vertex, and each belongs to the region (classes of chosen cycles
+//!    joined across non-boundary edges and around holes, union–find) on its left: one
+//!    counter-clockwise shell per region, the clockwise rings are its holes. Vertices where
+//!    the ring goes straight on are dropped unless asked to keep them or where more than
+//!    two boundary edges meet.
+//!
+//! The output is the same as the DCEL path ([`super::boolean_dcel`] with
+//! [`super::faces_to_polygons`]) up to ring start, ring order and polygon order (tested
+//! against it on degenerate input). Cost: that of the noding plus O(V + E) and the angular
+//! sorts at vertices of degree > 2, plus the hole sweep when there are several components.
+use crate::dcel::{compare_xy_filtered, faces_left_of, Carrier, Flat, Rounded};
+use crate::kernel::{ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2};
+use crate::Result;
+use std::cmp::Ordering;
+
+const NONE: u32 = u32::MAX;
+
+/// Per edge: the input segment of its first source and whether half-edge `2i` runs that
+/// segment's way, and the winding changes `(da, db)` across half-edge `2i`.
+#[derive(Clone, Copy)]
+struct EdgeInfo {
+    seg: u32,
+    fwd: bool,
+    da: i32,
+    db: i32,
+}
+
+/// 0 for directions in [0°, 180°), 1 for [180°, 360°) (as [`Carrier::angle_cmp`]).
+fn half(c: &Carrier) -> u8 {
+    let (a, b) = if c.forward {
+        (c.seg.a, c.seg.b)
+    } else {
+        (c.seg.b, c.seg.a)
+    };
+    u8::from(!(b.y > a.y || (b.y == a.y && b.x > a.x)))
+}
+
+fn find(p: &mut [u32], mut x: u32) -> u32 {
+    while p[x as usize] != x {
+        let up = p[p[x as usize] as usize];
+        p[x as usize] = up;
+        x = up;
+    }
+    x
+}
+
+/// The region of the arrangement of `segs` (the first `na` from A, the rest from B) whose
+/// winding numbers `inside` accepts, as valid polygons (see the module docs).
+/// `inside(0, 0)` must be false (the unbounded face is never in a result).
+pub(super) fn traced_boolean(
+    segs: &[Segment2],
+    na: usize,
+    inside: impl Fn(i32, i32) -> bool,
+    keep_collinear: bool,
+) -> Result<MultiPolygon> {
+    let flat = Flat::of_segments(segs)?;
+    let nv = flat.vertices.len();
+    let ne = flat.edge_count();
+    let m = 2 * ne;
+    if ne == 0 {
+        return Ok(MultiPolygon::default());
+    }
+    let info: Vec<EdgeInfo> = (0..ne)
+        .map(|i| {
+            let src = flat.sources_of(i);
+            let (mut da, mut db) = (0, 0);
+            for s in src {
+                // Crossing a ring edge a → b from its right to its left adds one.
+                let w = if s.forward { 1 } else { -1 };
+                if s.segment < na {
+                    da += w;
+                } else {
+                    db += w;
+                }
+            }
+            EdgeInfo {
+                seg: src[0].segment as u32,
+                fwd: src[0].forward,
+                da,
+                db,
+            }
+        })
+        .collect();
+    let carrier = |h: u32| {
+        let e = &info[(h >> 1) as usize];
+        Carrier {
+            seg: segs[e.seg as usize],
+            forward: e.fwd == (h & 1 == 0),
+        }
+    };
+    // Winding change crossing half-edge h from its right to its left.
+    let delta = |h: u32| {
+        let e = &info[(h >> 1) as usize];
+        if h & 1 == 0 {
+            (e.da, e.db)
+        } else {
+            (-e.da, -e.db)
+        }
+    };
+    let origin = |h: u32| flat.edges[(h >> 1) as usize][(h & 1) as usize];
+    // Outgoing half-edges per vertex (one array cut into slices).
+    let mut out_start = vec![0u32; nv + 1];
+    for [u, v] in &flat.edges {
+        out_start[*u as usize + 1] += 1;
+        out_start[*v as usize + 1] += 1;
+    }
+    for v in 0..nv {
+        out_start[v + 1] += out_start[v];
+    }
+    let mut out = vec![0u32; m];
+    {
+        let mut fill = out_start.clone();
+        for (i, [u, v]) in flat.edges.iter().enumerate() {
+            out[fill[*u as usize] as usize] = 2 * i as u32;
+            fill[*u as usize] += 1;
+            out[fill[*v as usize] as usize] = 2 * i as u32 + 1;
+            fill[*v as usize] += 1;
+        }
+    }
+    let slice = |v: usize| (out_start[v] as usize, out_start[v + 1] as usize);
+    let mut next = vec![0u32; m];
+    for v in 0..nv {
+        let (a, b) = slice(v);
+        let list = &mut out[a..b];
+        let k = list.len();
+        if k > 2 {
+            list.sort_unstable_by(|&x, &y| carrier(x).angle_cmp(&carrier(y)));
+        }
+        for j in 0..k {
+            next[(list[j] ^ 1) as usize] = list[(j + k - 1) % k];
+        }
+    }
+    // Cycles labelled relative to their component (depth-first across twins).
+    let mut cyc = vec![NONE; m];
+    let mut label: Vec<(i32, i32)> = Vec::new();
+    let mut comp_of: Vec<u32> = Vec::new();
+    let mut ncomp = 0u32;
+    let mut stack: Vec<(u32, i32, i32)> = Vec::new();
+    for h0 in 0..m as u32 {
+        if cyc[h0 as usize] != NONE {
+            continue;
+        }
+        stack.push((h0, 0, 0));
+        while let Some((s, wa, wb)) = stack.pop() {
+            if cyc[s as usize] != NONE {
+                continue;
+            }
+            let c = label.len() as u32;
+            label.push((wa, wb));
+            comp_of.push(ncomp);
+            let mut e = s;
+            loop {
+                cyc[e as usize] = c;
+                let t = e ^ 1;
+                if cyc[t as usize] == NONE {
+                    let (da, db) = delta(t);
+                    stack.push((t, wa + da, wb + db));
+                }
+                e = next[e as usize];
+                if e == s {
+                    break;
+                }
+            }
+        }
+        ncomp += 1;
+    }
+    let ncycles = label.len();
+    // Each component's smallest vertex (an input point, see the module docs).
+    let mut low = vec![NONE; ncomp as usize];
+    for v in 0..nv {
+        let (a, b) = slice(v);
+        if a == b {
+            continue;
+        }
+        let ExactPoint::Input(p) = flat.vertices[v] else {
+            continue;
+        };
+        let k = comp_of[cyc[out[a] as usize] as usize] as usize;
+        let better = low[k] == NONE || {
+            let ExactPoint::Input(q) = flat.vertices[low[k] as usize] else {
+                unreachable!("only input points are kept")
+            };
+            p.x < q.x || (p.x == q.x && p.y < q.y)
+        };
+        if better {
+            low[k] = v as u32;
+        }
+    }
+    // The exterior cycle of each component: left of the out-edge at its smallest vertex
+    // just clockwise of direction −x (all out-edges point into (−90°, 90°]).
+    let exterior: Vec<u32> = low
+        .iter()
+        .map(|&v| {
+            let (a, b) = slice(v as usize);
+            let mut best = out[a];
+            for &h in &out[a + 1..b] {
+                let (cb, ch) = (carrier(best), carrier(h));
+                let (hb, hh) = (half(&cb), half(&ch));
+                let later = if hb != hh {
+                    hh == 0
+                } else {
+                    cb.angle_cmp(&ch) == Ordering::Less
+                };
+                if later {
+                    best = h;
+                }
+            }
+            cyc[best as usize]
+        })
+        .collect();
+    // Offsets making the labels absolute: the exterior of a component gets the label of
+    // the face around it.
+    let mut offset: Vec<(i32, i32)> = exterior
+        .iter()
+        .map(|&c| {
+            let (wa, wb) = label[c as usize];
+            (-wa, -wb)
+        })
+        .collect();
+    // Cycles (of another component) whose face holds each component: joined to its
+    // exterior in the regions below.
+    let mut around: Vec<u32> = vec![NONE; ncomp as usize];
+    if ncomp > 1 {
+        let points = &flat.vertices;
+        let approx: Vec<Rounded> = points.iter().map(|p| Rounded::of(p, p.approx())).collect();
+        let origins: Vec<u32> = (0..m as u32).map(origin).collect();
+        let carriers: Vec<Carrier> = (0..m as u32).map(carrier).collect();
+        let starts: Vec<usize> = out_start.iter().map(|&s| s as usize).collect();
+        // The sweep needs every list in counter-clockwise order (those of two too).
+        let mut outs: Vec<usize> = out.iter().map(|&h| h as usize).collect();
+        for v in 0..nv {
+            let (a, b) = slice(v);
+            if b - a == 2 && carriers[outs[a]].angle_cmp(&carriers[outs[a + 1]]) == Ordering::Greater
+            {
+                outs.swap(a, a + 1);
+            }
+        }
+        let mut query = vec![false; nv];
+        for &v in &low {
+            query[v as usize] = true;
+        }
+        let left = faces_left_of(points, &approx, &origins, &carriers, &starts, &outs, &query);
+        let mut order: Vec<u32> = (0..ncomp).collect();
+        order.sort_unstable_by(|&x, &y| {
+            let (p, q) = (
+                flat.vertices[low[x as usize] as usize].approx(),
+                flat.vertices[low[y as usize] as usize].approx(),
+            );
+            p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
+        });
+        for k in order {
+            if let Some(h) = left[low[k as usize] as usize] {
+                let c = cyc[h] as usize;
+                let o = offset[comp_of[c] as usize];
+                let (wa, wb) = label[c];
+                let (ea, eb) = label[exterior[k as usize] as usize];
+                offset[k as usize] = (wa + o.0 - ea, wb + o.1 - eb);
+                around[k as usize] = c as u32;
+            }
+        }
+    }
+    let chosen: Vec<bool> = (0..ncycles)
+        .map(|c| {
+            let (wa, wb) = label[c];
+            let o = offset[comp_of[c] as usize];
+            inside(wa + o.0, wb + o.1)
+        })
+        .collect();
+    // Regions: chosen cycles joined across non-boundary edges and around holes.
+    let mut class: Vec<u32> = (0..ncycles as u32).collect();
+    let mut degree = vec![0u32; nv];
+    let mut any = false;
+    for i in 0..ne {
+        let (f, g) = (cyc[2 * i], cyc[2 * i + 1]);
+        let (cf, cg) = (chosen[f as usize], chosen[g as usize]);
+        if cf != cg {
+            let [u, v] = flat.edges[i];
+            degree[u as usize] += 1;
+            degree[v as usize] += 1;
+            any = true;
+        } else if cf && f != g {
+            let (a, b) = (find(&mut class, f), find(&mut class, g));
+            class[a as usize] = b;
+        }
+    }
+    if !any {
+        return Ok(MultiPolygon::default());
+    }
+    for k in 0..ncomp as usize {
+        let (c, e) = (around[k], exterior[k]);
+        if c != NONE && chosen[c as usize] {
+            let (a, b) = (find(&mut class, c), find(&mut class, e));
+            class[a as usize] = b;
+        }
+    }
+    // Rounded points and exactness flags of the boundary's vertices.
+    let mut rounded: Vec<Option<Rounded>> = vec![None; nv];
+    let point_of = |v: usize, rounded: &mut Vec<Option<Rounded>>| -> Rounded {
+        *rounded[v].get_or_insert_with(|| {
+            let p = &flat.vertices[v];
+            Rounded::of(p, p.approx())
+        })
+    };
+    let on_boundary =
+        |h: u32| chosen[cyc[h as usize] as usize] && !chosen[cyc[(h ^ 1) as usize] as usize];
+    let mut seen = vec![false; m];
+    let mut region_of = vec![NONE; ncycles];
+    let mut regions: Vec<(Option<Vec<Point2>>, Vec<Vec<Point2>>)> = Vec::new();
+    let mut pos = vec![NONE; nv];
+    let mut cycle: Vec<u32> = Vec::new();
+    let mut stack: Vec<u32> = Vec::new();
+    let mut rings: Vec<(usize, usize)> = Vec::new();
+    let mut flat_rings: Vec<u32> = Vec::new();
+    for start in 0..m as u32 {
+        if seen[start as usize] || !on_boundary(start) {
+            continue;
+        }
+        cycle.clear();
+        let mut h = start;
+        loop {
+            seen[h as usize] = true;
+            cycle.push(h);
+            // Clockwise around the end of h, over edges inside the region, to the first
+            // boundary edge.
+            let mut e = next[h as usize];
+            while !on_boundary(e) {
+                e = next[(e ^ 1) as usize];
+            }
+            h = e;
+            if h == start {
+                break;
+            }
+        }
+        let r = find(&mut class, cyc[start as usize]) as usize;
+        if region_of[r] == NONE {
+            region_of[r] = regions.len() as u32;
+            regions.push((None, Vec::new()));
+        }
+        let k = region_of[r] as usize;
+        // Split at repeated vertices into simple rings.
+        rings.clear();
+        flat_rings.clear();
+        stack.clear();
+        for &h in &cycle {
+            let v = origin(h) as usize;
+            if pos[v] != NONE {
+                let at = pos[v] as usize;
+                let from = flat_rings.len();
+                for &e in &stack[at..] {
+                    pos[origin(e) as usize] = NONE;
+                    flat_rings.push(e);
+                }
+                stack.truncate(at);
+                rings.push((from, flat_rings.len()));
+            }
+            pos[v] = stack.len() as u32;
+            stack.push(h);
+        }
+        if !stack.is_empty() {
+            let from = flat_rings.len();
+            for &e in &stack {
+                pos[origin(e) as usize] = NONE;
+                flat_rings.push(e);
+            }
+            rings.push((from, flat_rings.len()));
+        }
+        for &(a, b) in &rings {
+            let ring = &flat_rings[a..b];
+            let n = ring.len();
+            // Counter-clockwise iff it turns left at its lowest vertex.
+            let mut lowest = 0;
+            let mut best_v = origin(ring[0]) as usize;
+            let mut best_r = point_of(best_v, &mut rounded);
+            for (j, &h) in ring.iter().enumerate().skip(1) {
+                let v = origin(h) as usize;
+                let rv = point_of(v, &mut rounded);
+                let o =
+                    compare_xy_filtered(&flat.vertices[v], &rv, &flat.vertices[best_v], &best_r);
+                if o == Ordering::Less {
+                    lowest = j;
+                    best_v = v;
+                    best_r = rv;
+                }
+            }
+            let ccw = carrier(ring[(lowest + n - 1) % n]).turn(&carrier(ring[lowest]))
+                == Orientation::CounterClockwise;
+            let mut pts: Vec<Point2> = Vec::with_capacity(n);
+            for j in 0..n {
+                let h = ring[j];
+                let v = origin(h) as usize;
+                if !keep_collinear && degree[v] <= 2 {
+                    let (p, c) = (carrier(ring[(j + n - 1) % n]), carrier(h));
+                    if p.turn(&c) == Orientation::Collinear && p.angle_cmp(&c) == Ordering::Equal
+                    {
+                        continue;
+                    }
+                }
+                let q = point_of(v, &mut rounded).point();
+                if pts.last() != Some(&q) {
+                    pts.push(q);
+                }
+            }
+            while pts.len() > 1 && pts.first() == pts.last() {
+                pts.pop();
+            }
+            if pts.len() < 3 {
+                continue;
+            }
+            if ccw && regions[k].0.is_none() {
+                regions[k].0 = Some(pts);
+            } else {
+                regions[k].1.push(pts);
+            }
+        }
+    }
+    Ok(MultiPolygon(
+        regions
+            .into_iter()
+            .filter_map(|(shell, holes)| shell.map(|s| Polygon::new(s, holes)))
+            .collect(),
+    ))
+}
