@@ -133,6 +133,9 @@ fn row(name: &str, n: usize, ours: f64, io: f64, geo: f64, dev_io: f64) {
 /// Run the group.
 pub fn run(quick: bool) -> Result<(), String> {
     let mut rng = Rng::new(4);
+    if let Ok(who) = std::env::var("BOOLEAN_ONE") {
+        return one(&mut rng, &who);
+    }
     let sizes: &[usize] = if quick {
         &[1_000, 10_000]
     } else {
@@ -236,5 +239,63 @@ pub fn run(quick: bool) -> Result<(), String> {
         ms(t_geo),
         (x - y).abs() / x,
     );
+    Ok(())
+}
+
+/// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5; `BOOLEAN_INPUT=star|squares`):
+/// run one contender once on the star union or the squares input, for instruction counts
+/// (`valgrind --tool=callgrind`).
+fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
+    let n: usize = std::env::var("BOOLEAN_N")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(100_000);
+    let squares = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "squares");
+    if squares {
+        let sq = MultiPolygon(
+            (0..n)
+                .map(|_| {
+                    let (x, y, w) = (rng.unit(), rng.unit(), 0.005 + 0.02 * rng.unit());
+                    Polygon::new(
+                        vec![
+                            Point2::new(x, y),
+                            Point2::new(x + w, y),
+                            Point2::new(x + w, y + w),
+                            Point2::new(x, y + w),
+                        ],
+                        vec![],
+                    )
+                })
+                .collect(),
+        );
+        let ps = io_paths(&sq);
+        let empty: Vec<Vec<[f64; 2]>> = Vec::new();
+        let gs: Vec<geo::Polygon<f64>> = geo_poly(&sq).0;
+        match who {
+            "ours" => drop(black_box(union_all(&sq).map_err(|e| e.to_string())?)),
+            "io" => drop(black_box(ps.overlay(
+                &empty,
+                OverlayRule::Subject,
+                FillRule::NonZero,
+            ))),
+            _ => drop(black_box(geo::unary_union(gs.iter()))),
+        }
+        return Ok(());
+    }
+    let a = MultiPolygon(vec![Polygon::new(star(rng, n, 0.0, 0.0), vec![])]);
+    let b = MultiPolygon(vec![Polygon::new(star(rng, n, 0.3, 0.0), vec![])]);
+    match who {
+        "ours" => drop(black_box(
+            boolean(&a, &b, BooleanOp::Union).map_err(|e| e.to_string())?,
+        )),
+        "io" => {
+            let (pa, pb) = (io_paths(&a), io_paths(&b));
+            drop(black_box(pa.overlay(&pb, OverlayRule::Union, FillRule::EvenOdd)))
+        }
+        _ => {
+            let (ga, gb) = (geo_poly(&a), geo_poly(&b));
+            drop(black_box(ga.boolean_op(&gb, geo::OpType::Union)))
+        }
+    }
     Ok(())
 }
