@@ -107,7 +107,7 @@ pub struct BooleanEdge {
 }
 
 /// The segments of a polygon set, oriented for the fill rule.
-fn oriented_segments(p: &MultiPolygon, rule: FillRule) -> Result<Vec<Segment2>> {
+pub(super) fn oriented_segments(p: &MultiPolygon, rule: FillRule) -> Result<Vec<Segment2>> {
     if rule != FillRule::Positive {
         return Ok(polygon_segments(p)?.0);
     }

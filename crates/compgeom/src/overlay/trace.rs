@@ -33,7 +33,7 @@
 //! against it on degenerate input). Cost: that of the noding plus O(V + E) and the angular
 //! sorts at vertices of degree > 2, plus the hole sweep when there are several components.
 use crate::dcel::{compare_xy_filtered, faces_left_of, Carrier, Flat, Rounded};
-use crate::kernel::{ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2};
+use crate::kernel::{orient2d, ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2};
 use crate::Result;
 use std::cmp::Ordering;
 
@@ -76,6 +76,18 @@ pub(super) fn traced_boolean(
     na: usize,
     inside: impl Fn(i32, i32) -> bool,
     keep_collinear: bool,
+) -> Result<MultiPolygon> {
+    traced(segs, na, inside, keep_collinear, true)
+}
+
+/// [`traced_boolean`]; with `strips` false the labels of components always come from the
+/// hole sweep (tests check both ways agree).
+fn traced(
+    segs: &[Segment2],
+    na: usize,
+    inside: impl Fn(i32, i32) -> bool,
+    keep_collinear: bool,
+    strips: bool,
 ) -> Result<MultiPolygon> {
     let flat = Flat::of_segments(segs)?;
     let nv = flat.vertices.len();
@@ -241,10 +253,9 @@ pub(super) fn traced_boolean(
             (-wa, -wb)
         })
         .collect();
-    // Cycles (of another component) whose face holds each component: joined to its
-    // exterior in the regions below.
-    let mut around: Vec<u32> = vec![NONE; ncomp as usize];
-    if ncomp > 1 {
+    // The cycle (of another component) whose face holds each component, from the hole
+    // sweep: its exterior is joined to it in the regions below.
+    let sweep_around = || -> Vec<u32> {
         let points = &flat.vertices;
         let approx: Vec<Rounded> = points.iter().map(|p| Rounded::of(p, p.approx())).collect();
         let origins: Vec<u32> = (0..m as u32).map(origin).collect();
@@ -264,22 +275,41 @@ pub(super) fn traced_boolean(
             query[v as usize] = true;
         }
         let left = faces_left_of(points, &approx, &origins, &carriers, &starts, &outs, &query);
-        let mut order: Vec<u32> = (0..ncomp).collect();
-        order.sort_unstable_by(|&x, &y| {
-            let (p, q) = (
-                flat.vertices[low[x as usize] as usize].approx(),
-                flat.vertices[low[y as usize] as usize].approx(),
-            );
-            p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
-        });
-        for k in order {
-            if let Some(h) = left[low[k as usize] as usize] {
-                let c = cyc[h] as usize;
-                let o = offset[comp_of[c] as usize];
-                let (wa, wb) = label[c];
-                let (ea, eb) = label[exterior[k as usize] as usize];
-                offset[k as usize] = (wa + o.0 - ea, wb + o.1 - eb);
-                around[k as usize] = c as u32;
+        low.iter()
+            .map(|&v| left[v as usize].map_or(NONE, |h| cyc[h]))
+            .collect()
+    };
+    let mut around: Vec<u32> = vec![NONE; ncomp as usize];
+    let mut swept = false;
+    if ncomp > 1 {
+        let input = |v: u32| match flat.vertices[v as usize] {
+            ExactPoint::Input(p) => p,
+            ExactPoint::Crossing(_) => unreachable!("a component's smallest vertex is an input point"),
+        };
+        let queries: Vec<Point2> = low.iter().map(|&v| input(v)).collect();
+        if let Some(w) = windings_left_of(segs, na, &queries).filter(|_| strips) {
+            for k in 0..ncomp as usize {
+                let (ea, eb) = label[exterior[k] as usize];
+                offset[k] = (w[k].0 - ea, w[k].1 - eb);
+            }
+        } else {
+            around = sweep_around();
+            swept = true;
+            // Components in lexicographic order of their smallest vertex: the face found
+            // for one lies left of it, in a component already resolved.
+            let mut order: Vec<u32> = (0..ncomp).collect();
+            order.sort_unstable_by(|&x, &y| {
+                let (p, q) = (input(low[x as usize]), input(low[y as usize]));
+                p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
+            });
+            for k in order {
+                let c = around[k as usize];
+                if c != NONE {
+                    let o = offset[comp_of[c as usize] as usize];
+                    let (wa, wb) = label[c as usize];
+                    let (ea, eb) = label[exterior[k as usize] as usize];
+                    offset[k as usize] = (wa + o.0 - ea, wb + o.1 - eb);
+                }
             }
         }
     }
@@ -294,6 +324,7 @@ pub(super) fn traced_boolean(
     let mut class: Vec<u32> = (0..ncycles as u32).collect();
     let mut degree = vec![0u32; nv];
     let mut any = false;
+    let mut has_boundary = vec![false; ncomp as usize];
     for i in 0..ne {
         let (f, g) = (cyc[2 * i], cyc[2 * i + 1]);
         let (cf, cg) = (chosen[f as usize], chosen[g as usize]);
@@ -302,6 +333,7 @@ pub(super) fn traced_boolean(
             degree[u as usize] += 1;
             degree[v as usize] += 1;
             any = true;
+            has_boundary[comp_of[f as usize] as usize] = true;
         } else if cf && f != g {
             let (a, b) = (find(&mut class, f), find(&mut class, g));
             class[a as usize] = b;
@@ -309,6 +341,11 @@ pub(super) fn traced_boolean(
     }
     if !any {
         return Ok(MultiPolygon::default());
+    }
+    // A component inside a chosen face with boundary edges gives a hole of the region
+    // around it: only then is the cycle around it needed.
+    if !swept && (0..ncomp as usize).any(|k| has_boundary[k] && chosen[exterior[k] as usize]) {
+        around = sweep_around();
     }
     for k in 0..ncomp as usize {
         let (c, e) = (around[k], exterior[k]);
@@ -445,9 +482,97 @@ pub(super) fn traced_boolean(
     ))
 }
 
+/// The winding numbers `(w_A, w_B)` of the rings `segs` (the first `na` from A) at the
+/// points just left of each query point `q` (`(q.x − ε, q.y + δ)` for infinitesimals
+/// `0 < δ ≪ ε`), or `None` when the strips below would do too much work (the caller then
+/// sweeps). A query must not lie in the interior of a face's boundary of another
+/// component, which holds for a component's smallest vertex: the points just left of it
+/// are inside one face, and its winding numbers are its label.
+///
+/// Exact and on input points only: a ring edge a → b counts +1 when it crosses the line
+/// `y = q.y + δ` upwards (`a.y ≤ q.y < b.y`) with that point on its left, −1 when it
+/// crosses downwards (`b.y ≤ q.y < a.y`) with the point on its right; the side is
+/// `orient2d(a, b, q)`, and when q is on the edge's line the ε term decides (left for an
+/// upward edge, right for a downward one). Only the edges of q's horizontal strip are
+/// looked at: an edge is listed in every strip its y range meets, the strip of a y value
+/// is a monotone function of it (rounding is monotone), so the edges whose closed y
+/// range holds q.y are all in q's strip.
+fn windings_left_of(segs: &[Segment2], na: usize, queries: &[Point2]) -> Option<Vec<(i32, i32)>> {
+    let ns = segs.len();
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for s in segs {
+        lo = lo.min(s.a.y.min(s.b.y));
+        hi = hi.max(s.a.y.max(s.b.y));
+    }
+    let strips = (ns / 4).next_power_of_two().clamp(1, 1 << 16);
+    let scale = strips as f64 / (hi - lo);
+    if !(scale.is_finite() && scale > 0.0) {
+        // All edges horizontal (no crossing anywhere), or a y range too small to cut.
+        return (hi == lo).then(|| vec![(0, 0); queries.len()]);
+    }
+    let strip = |y: f64| (((y - lo) * scale) as usize).min(strips - 1);
+    let mut start = vec![0u32; strips + 1];
+    let mut total = 0usize;
+    for s in segs {
+        if s.a.y != s.b.y {
+            let (a, b) = (strip(s.a.y.min(s.b.y)), strip(s.a.y.max(s.b.y)));
+            total += b - a + 1;
+            if total > 8 * ns + 4096 {
+                return None;
+            }
+            for c in &mut start[a + 1..=b + 1] {
+                *c += 1;
+            }
+        }
+    }
+    // (start[k + 1] holds the count of strip k here.)
+    let work: usize = queries.iter().map(|q| start[strip(q.y) + 1] as usize).sum();
+    if work > 16 * ns + 4096 {
+        return None;
+    }
+    for k in 0..strips {
+        start[k + 1] += start[k];
+    }
+    let mut fill = start.clone();
+    let mut list = vec![0u32; total];
+    for (i, s) in segs.iter().enumerate() {
+        if s.a.y != s.b.y {
+            for k in strip(s.a.y.min(s.b.y))..=strip(s.a.y.max(s.b.y)) {
+                list[fill[k] as usize] = i as u32;
+                fill[k] += 1;
+            }
+        }
+    }
+    Some(
+        queries
+            .iter()
+            .map(|q| {
+                let k = strip(q.y);
+                let (mut wa, mut wb) = (0, 0);
+                for &i in &list[start[k] as usize..start[k + 1] as usize] {
+                    let s = segs[i as usize];
+                    let w = if s.a.y <= q.y && s.b.y > q.y {
+                        i32::from(orient2d(s.a, s.b, *q) != Orientation::Clockwise)
+                    } else if s.b.y <= q.y && s.a.y > q.y {
+                        -i32::from(orient2d(s.a, s.b, *q) != Orientation::CounterClockwise)
+                    } else {
+                        0
+                    };
+                    if (i as usize) < na {
+                        wa += w;
+                    } else {
+                        wb += w;
+                    }
+                }
+                (wa, wb)
+            })
+            .collect(),
+    )
+}
+
 #[cfg(test)]
 mod tests {
-    use super::super::boolean::{boolean_via_dcel, boolean_with};
+    use super::super::boolean::{boolean_via_dcel, boolean_with, oriented_segments};
     use super::super::{BooleanOp, BooleanOptions, FillRule};
     use crate::kernel::{MultiPolygon, Point2, Polygon};
     use proptest::prelude::*;
@@ -498,6 +623,12 @@ mod tests {
                 for op in OPS {
                     let fast = boolean_with(a, b, op, &opts).unwrap();
                     let slow = boolean_via_dcel(a, b, op, &opts).unwrap();
+                    let mut segs = oriented_segments(a, rule).unwrap();
+                    let na = segs.len();
+                    segs.extend(oriented_segments(b, rule).unwrap());
+                    let inside = |wa, wb| op.apply(rule.inside(wa), rule.inside(wb));
+                    let swept = super::traced(&segs, na, inside, keep_collinear, false).unwrap();
+                    prop_assert_eq!(canonical(&swept), canonical(&slow));
                     prop_assert_eq!(
                         canonical(&fast),
                         canonical(&slow),
