@@ -290,7 +290,11 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         )),
         "io" => {
             let (pa, pb) = (io_paths(&a), io_paths(&b));
-            drop(black_box(pa.overlay(&pb, OverlayRule::Union, FillRule::EvenOdd)))
+            drop(black_box(pa.overlay(
+                &pb,
+                OverlayRule::Union,
+                FillRule::EvenOdd,
+            )))
         }
         _ => {
             let (ga, gb) = (geo_poly(&a), geo_poly(&b));

@@ -27,6 +27,7 @@
 //!
 //! Cost: O((n + k) log n) for n input edges and k intersection points, plus the
 //! hole-linking sweep (see [`crate::dcel`]).
+#[cfg(test)]
 use super::result::faces_to_polygons;
 use crate::dcel::{polygon_segments, Carrier, Dcel, Flat};
 use crate::io::ring_orientation;
@@ -208,6 +209,7 @@ pub fn boolean_with(
 
 /// [`boolean_with`] by the DCEL: [`boolean_dcel`] and [`faces_to_polygons`] (the
 /// reference the traced path is tested against).
+#[cfg(test)]
 pub(crate) fn boolean_via_dcel(
     a: &MultiPolygon,
     b: &MultiPolygon,

@@ -160,7 +160,39 @@ fn traced(
         let list = &mut out[a..b];
         let k = list.len();
         if k > 2 {
-            list.sort_unstable_by(|&x, &y| carrier(x).angle_cmp(&carrier(y)));
+            // Horizontal and vertical directions (grid data) sort by their quadrant
+            // alone; any other list by the exact angle comparison.
+            let axis = |h: u32| {
+                let c = carrier(h);
+                let (a, b) = if c.forward {
+                    (c.seg.a, c.seg.b)
+                } else {
+                    (c.seg.b, c.seg.a)
+                };
+                match (b.x.partial_cmp(&a.x), b.y.partial_cmp(&a.y)) {
+                    (Some(Ordering::Greater), Some(Ordering::Equal)) => 0u8,
+                    (Some(Ordering::Equal), Some(Ordering::Greater)) => 1,
+                    (Some(Ordering::Less), Some(Ordering::Equal)) => 2,
+                    (Some(Ordering::Equal), Some(Ordering::Less)) => 3,
+                    _ => 4,
+                }
+            };
+            let mut slot = [NONE; 4];
+            let placed = k <= 4
+                && list.iter().all(|&h| {
+                    let q = axis(h) as usize;
+                    q < 4 && std::mem::replace(&mut slot[q], h) == NONE
+                });
+            if placed {
+                // Distinct quadrants: their order is the angular order.
+                let mut j = 0;
+                for h in slot.into_iter().filter(|&h| h != NONE) {
+                    list[j] = h;
+                    j += 1;
+                }
+            } else {
+                list.sort_unstable_by(|&x, &y| carrier(x).angle_cmp(&carrier(y)));
+            }
         }
         for j in 0..k {
             next[(list[j] ^ 1) as usize] = list[(j + k - 1) % k];
@@ -265,7 +297,8 @@ fn traced(
         let mut outs: Vec<usize> = out.iter().map(|&h| h as usize).collect();
         for v in 0..nv {
             let (a, b) = slice(v);
-            if b - a == 2 && carriers[outs[a]].angle_cmp(&carriers[outs[a + 1]]) == Ordering::Greater
+            if b - a == 2
+                && carriers[outs[a]].angle_cmp(&carriers[outs[a + 1]]) == Ordering::Greater
             {
                 outs.swap(a, a + 1);
             }
@@ -284,7 +317,9 @@ fn traced(
     if ncomp > 1 {
         let input = |v: u32| match flat.vertices[v as usize] {
             ExactPoint::Input(p) => p,
-            ExactPoint::Crossing(_) => unreachable!("a component's smallest vertex is an input point"),
+            ExactPoint::Crossing(_) => {
+                unreachable!("a component's smallest vertex is an input point")
+            }
         };
         let queries: Vec<Point2> = low.iter().map(|&v| input(v)).collect();
         if let Some(w) = windings_left_of(segs, na, &queries).filter(|_| strips) {
@@ -451,8 +486,7 @@ fn traced(
                 let v = origin(h) as usize;
                 if !keep_collinear && degree[v] <= 2 {
                     let (p, c) = (carrier(ring[(j + n - 1) % n]), carrier(h));
-                    if p.turn(&c) == Orientation::Collinear && p.angle_cmp(&c) == Ordering::Equal
-                    {
+                    if p.turn(&c) == Orientation::Collinear && p.angle_cmp(&c) == Ordering::Equal {
                         continue;
                     }
                 }
@@ -504,7 +538,10 @@ fn windings_left_of(segs: &[Segment2], na: usize, queries: &[Point2]) -> Option<
         lo = lo.min(s.a.y.min(s.b.y));
         hi = hi.max(s.a.y.max(s.b.y));
     }
-    let strips = (ns / 4).next_power_of_two().clamp(1, 1 << 16);
+    // As many strips as keep the edges' spans near one strip each on average (the
+    // count is a heuristic; correctness does not depend on it).
+    let heights: f64 = segs.iter().map(|s| (s.a.y - s.b.y).abs()).sum::<f64>() / (hi - lo);
+    let strips = (ns as f64 / heights.max(1.0)).clamp(1.0, 65536.0) as usize;
     let scale = strips as f64 / (hi - lo);
     if !(scale.is_finite() && scale > 0.0) {
         // All edges horizontal (no crossing anywhere), or a y range too small to cut.
@@ -600,15 +637,14 @@ mod tests {
 
     /// A polygon set up to ring start, hole order and polygon order.
     fn canonical(m: &MultiPolygon) -> Vec<(Vec<Key>, Vec<Vec<Key>>)> {
-        let mut v: Vec<_> = m
-            .0
-            .iter()
-            .map(|p| {
-                let mut holes: Vec<_> = p.holes.iter().map(|h| ring_key(h)).collect();
-                holes.sort();
-                (ring_key(&p.exterior), holes)
-            })
-            .collect();
+        let mut v: Vec<_> =
+            m.0.iter()
+                .map(|p| {
+                    let mut holes: Vec<_> = p.holes.iter().map(|h| ring_key(h)).collect();
+                    holes.sort();
+                    (ring_key(&p.exterior), holes)
+                })
+                .collect();
         v.sort();
         v
     }
@@ -694,7 +730,10 @@ mod tests {
     #[test]
     fn identical_and_nested_inputs_agree() {
         let sq = |x: i32, y: i32, w: i32| {
-            Polygon::new(vec![p(x, y), p(x + w, y), p(x + w, y + w), p(x, y + w)], vec![])
+            Polygon::new(
+                vec![p(x, y), p(x + w, y), p(x + w, y + w), p(x, y + w)],
+                vec![],
+            )
         };
         let a = MultiPolygon(vec![sq(0, 0, 4), sq(10, 0, 2), sq(1, 1, 1)]);
         // Identical; nested islands inside holes; disjoint components in every face.
