@@ -39,6 +39,9 @@ use std::cmp::Ordering;
 
 const NONE: u32 = u32::MAX;
 
+/// A region of the result: its shell (once found) and its holes.
+type Region = (Option<Vec<Point2>>, Vec<Vec<Point2>>);
+
 /// Per edge: the input segment of its first source and whether half-edge `2i` runs that
 /// segment's way, and the winding changes `(da, db)` across half-edge `2i`.
 #[derive(Clone, Copy)]
@@ -185,10 +188,8 @@ fn traced(
                 });
             if placed {
                 // Distinct quadrants: their order is the angular order.
-                let mut j = 0;
-                for h in slot.into_iter().filter(|&h| h != NONE) {
+                for (j, h) in slot.into_iter().filter(|&h| h != NONE).enumerate() {
                     list[j] = h;
-                    j += 1;
                 }
             } else {
                 list.sort_unstable_by(|&x, &y| carrier(x).angle_cmp(&carrier(y)));
@@ -401,7 +402,7 @@ fn traced(
         |h: u32| chosen[cyc[h as usize] as usize] && !chosen[cyc[(h ^ 1) as usize] as usize];
     let mut seen = vec![false; m];
     let mut region_of = vec![NONE; ncycles];
-    let mut regions: Vec<(Option<Vec<Point2>>, Vec<Vec<Point2>>)> = Vec::new();
+    let mut regions: Vec<Region> = Vec::new();
     let mut pos = vec![NONE; nv];
     let mut cycle: Vec<u32> = Vec::new();
     let mut stack: Vec<u32> = Vec::new();
