@@ -420,7 +420,10 @@ impl Flat {
                 vertices.push(ExactPoint::Input(point(1, x, unkey(cuts[c].1))));
             }
         }
-        let verticals = &lines[first_vertical..];
+        // The vertical lines' positions, contiguous for the binary searches.
+        let verticals: Vec<u64> = (first_vertical..lines.len())
+            .map(|l| okey(line_across(l)))
+            .collect();
         for l in 0..first_vertical {
             debug_assert_eq!(line_axis(l), 0);
             let y = line_across(l);
@@ -428,7 +431,7 @@ impl Flat {
             for c in cut_start[l]..cut_start[l + 1] {
                 let kx = cuts[c].1;
                 let at = verticals
-                    .binary_search_by(|&(r0, _)| okey(segs[order[r0] as usize].across).cmp(&kx))
+                    .binary_search(&kx)
                     .ok()
                     .map(|i| first_vertical + i)
                     .and_then(|v| {
@@ -467,8 +470,9 @@ impl Flat {
             for &k in &order[r0..r1] {
                 let s = &segs[k as usize];
                 let find = |v: f64| {
+                    let k = okey(v);
                     along
-                        .binary_search_by(|c| c.1.cmp(&okey(v)))
+                        .binary_search_by(|c| c.1.cmp(&k))
                         .expect("endpoints are cuts")
                 };
                 let (i0, i1) = (find(s.lo), find(s.hi));
