@@ -38,6 +38,8 @@ use crate::Result;
 use std::cmp::Ordering;
 
 const NONE: u32 = u32::MAX;
+/// Not an axis direction (see [`EdgeInfo::quad`]).
+const AXIS_NONE: u8 = 4;
 
 /// A region of the result: its shell (once found) and its holes.
 type Region = (Option<Vec<Point2>>, Vec<Vec<Point2>>);
@@ -48,6 +50,9 @@ type Region = (Option<Vec<Point2>>, Vec<Vec<Point2>>);
 struct EdgeInfo {
     seg: u32,
     fwd: bool,
+    /// The direction of half-edge `2i` when axis-parallel: 0 = +x, 1 = +y, 2 = −x,
+    /// 3 = −y (counter-clockwise order from +x), else [`AXIS_NONE`].
+    quad: u8,
     da: i32,
     db: i32,
 }
@@ -112,9 +117,23 @@ fn traced(
                     db += w;
                 }
             }
+            let seg = segs[src[0].segment];
+            let (a, b) = if src[0].forward {
+                (seg.a, seg.b)
+            } else {
+                (seg.b, seg.a)
+            };
+            let quad = match (b.x.partial_cmp(&a.x), b.y.partial_cmp(&a.y)) {
+                (Some(Ordering::Greater), Some(Ordering::Equal)) => 0,
+                (Some(Ordering::Equal), Some(Ordering::Greater)) => 1,
+                (Some(Ordering::Less), Some(Ordering::Equal)) => 2,
+                (Some(Ordering::Equal), Some(Ordering::Less)) => 3,
+                _ => AXIS_NONE,
+            };
             EdgeInfo {
                 seg: src[0].segment as u32,
                 fwd: src[0].forward,
+                quad,
                 da,
                 db,
             }
@@ -125,6 +144,15 @@ fn traced(
         Carrier {
             seg: segs[e.seg as usize],
             forward: e.fwd == (h & 1 == 0),
+        }
+    };
+    // The axis direction of half-edge h (the reverse of 2i's for 2i + 1).
+    let quad = |h: u32| {
+        let q = info[(h >> 1) as usize].quad;
+        if q == AXIS_NONE || h & 1 == 0 {
+            q
+        } else {
+            q ^ 2
         }
     };
     // Winding change crossing half-edge h from its right to its left.
@@ -165,25 +193,10 @@ fn traced(
         if k > 2 {
             // Horizontal and vertical directions (grid data) sort by their quadrant
             // alone; any other list by the exact angle comparison.
-            let axis = |h: u32| {
-                let c = carrier(h);
-                let (a, b) = if c.forward {
-                    (c.seg.a, c.seg.b)
-                } else {
-                    (c.seg.b, c.seg.a)
-                };
-                match (b.x.partial_cmp(&a.x), b.y.partial_cmp(&a.y)) {
-                    (Some(Ordering::Greater), Some(Ordering::Equal)) => 0u8,
-                    (Some(Ordering::Equal), Some(Ordering::Greater)) => 1,
-                    (Some(Ordering::Less), Some(Ordering::Equal)) => 2,
-                    (Some(Ordering::Equal), Some(Ordering::Less)) => 3,
-                    _ => 4,
-                }
-            };
             let mut slot = [NONE; 4];
             let placed = k <= 4
                 && list.iter().all(|&h| {
-                    let q = axis(h) as usize;
+                    let q = quad(h) as usize;
                     q < 4 && std::mem::replace(&mut slot[q], h) == NONE
                 });
             if placed {
@@ -486,8 +499,15 @@ fn traced(
                 let h = ring[j];
                 let v = origin(h) as usize;
                 if !keep_collinear && degree[v] <= 2 {
-                    let (p, c) = (carrier(ring[(j + n - 1) % n]), carrier(h));
-                    if p.turn(&c) == Orientation::Collinear && p.angle_cmp(&c) == Ordering::Equal {
+                    let prev = ring[(j + n - 1) % n];
+                    let (qp, qc) = (quad(prev), quad(h));
+                    let straight = if qp != AXIS_NONE && qc != AXIS_NONE {
+                        qp == qc
+                    } else {
+                        let (p, c) = (carrier(prev), carrier(h));
+                        p.turn(&c) == Orientation::Collinear && p.angle_cmp(&c) == Ordering::Equal
+                    };
+                    if straight {
                         continue;
                     }
                 }
