@@ -175,13 +175,18 @@ fn traced(
         out_start[v + 1] += out_start[v];
     }
     let mut out = vec![0u32; m];
+    // The axis direction of each entry of `out`, beside it (the sorts below then read
+    // no per-edge record).
+    let mut out_quad = vec![AXIS_NONE; m];
     {
         let mut fill = out_start.clone();
         for (i, [u, v]) in flat.edges.iter().enumerate() {
-            out[fill[*u as usize] as usize] = 2 * i as u32;
-            fill[*u as usize] += 1;
-            out[fill[*v as usize] as usize] = 2 * i as u32 + 1;
-            fill[*v as usize] += 1;
+            for h in [2 * i as u32, 2 * i as u32 + 1] {
+                let o = if h & 1 == 0 { *u } else { *v } as usize;
+                out[fill[o] as usize] = h;
+                out_quad[fill[o] as usize] = quad(h);
+                fill[o] += 1;
+            }
         }
     }
     let slice = |v: usize| (out_start[v] as usize, out_start[v + 1] as usize);
@@ -195,8 +200,8 @@ fn traced(
             // alone; any other list by the exact angle comparison.
             let mut slot = [NONE; 4];
             let placed = k <= 4
-                && list.iter().all(|&h| {
-                    let q = quad(h) as usize;
+                && list.iter().zip(&out_quad[a..b]).all(|(&h, &q)| {
+                    let q = q as usize;
                     q < 4 && std::mem::replace(&mut slot[q], h) == NONE
                 });
             if placed {
