@@ -10,8 +10,11 @@
 //! polygon first oriented with its exterior counter-clockwise and holes clockwise by the
 //! exact sign of its area; inside when the winding is positive: polygons united, each its
 //! shell minus its holes).
-//! The result is the boundary between chosen and other faces, made into valid polygons
-//! ([`super::faces_to_polygons`]).
+//! The result is the boundary between chosen and other faces, made into valid polygons.
+//! [`boolean_with`] does this without building DCEL records (`trace.rs`: winding numbers
+//! per boundary cycle on compact arrays, rings traced from the edges whose two sides
+//! differ); [`boolean_dcel`] builds the labelled DCEL, from which
+//! [`super::faces_to_polygons`] gives the same polygons (tested against each other).
 //!
 //! ## Validity of the output
 //!
