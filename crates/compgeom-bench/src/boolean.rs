@@ -24,7 +24,7 @@
 //! CPU time (`perf stat` task-clock, `BOOLEAN_ONE`, input generation included): star 1e5
 //! union 107 ms against i_overlay's 93; squares 116–140 ms against 51–63.
 //! Callgrind (`BOOLEAN_ONE=ours|io`, one thread, all threads counted): star 1e5 union
-//! about 455 M instructions for compgeom (was about 515 M) and about 450 M for i_overlay
+//! about 455 M instructions for compgeom (was about 505 M) and about 450 M for i_overlay
 //! (which runs much of its work on the rayon pool, so its wall time gains more from the
 //! second core); squares 477 M for compgeom (was about 860 M with the worker thread)
 //! against about 300 M for i_overlay. Star 1e5 union by stage: noding about 295 M (grid,
