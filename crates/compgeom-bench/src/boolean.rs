@@ -9,22 +9,32 @@
 //! are compared once, outside the clock, by area (relative difference reported). The
 //! three are timed in alternating rounds (best of 5), so load spikes hit all alike.
 //!
-//! Measured (release, shared 2-core machine, load average 5.4–7.3; ms; ratio =
-//! compgeom / peer; "before" = the same group before the lean noding, quiet machine):
+//! Measured (release, shared 2-core machine with other jobs running, load average 5–6 at
+//! the time; ms, best of 5 alternating rounds, two runs; ratio = compgeom / peer, below 1
+//! = compgeom faster; "before" = the same group before the traced boolean path, quiet
+//! machine):
 //!
 //! | input | n | compgeom | i_overlay | geo | /i_overlay | /geo | before /i_overlay |
 //! |---|---:|---:|---:|---:|---:|---:|---:|
-//! | star, 4 ops | 1e3 | 0.49–0.54 | 0.17–0.20 | 0.18–0.21 | 2.6–2.8 | 2.5–2.8 | 3.3–4.5 |
-//! | star, 4 ops | 1e4 | 5.3–6.0 | 2.7–3.0 | 2.6–2.9 | 1.8–2.2 | 1.8–2.3 | 3.2–3.9 |
-//! | star, 4 ops | 1e5 | 70–125 | 26–36 | 26–38 | 2.3–3.5 | 2.4–3.3 | 4.4–4.8 |
-//! | union of squares | 1e4 | 335 | 35 | 30 | 9.5 | 11 | 7.1 |
+//! | star, 4 ops | 1e3 | 0.36–0.51 | 0.19–0.40 | 0.20–0.39 | 1.24–1.85 | 1.29–1.82 | 2.6–2.9 |
+//! | star, 4 ops | 1e4 | 4.3–6.6 (one 14) | 3.8–6.1 | 3.7–5.9 | 1.00–1.37 (one 2.4) | 1.08–1.24 (one 2.1) | 1.8–2.1 |
+//! | star, 4 ops | 1e5 | 47–70 | 31–55 | 30–54 | 1.12–1.51 | 1.00–1.54 | 2.5–3.0 |
+//! | union of squares | 1e4 | 62–96 | 31–44 | 33–39 | 2.0–2.2 | 1.9–2.5 | 5.4 |
 //!
-//! Squares: callgrind counts 1116 M → 894 M instructions (−20%) but wall times under
-//! this load did not separate from the noise (the ratio moved with the load). Where the
-//! time goes (callgrind, star 1e5 union, one thread: 405 M instructions, was about
-//! 1000 M): grid build 75 M, pair scan 105 M, vertex/cut assembly about 40 M, DCEL
-//! linking 145 M, output rings 63 M. Squares 1e4: axis-parallel arrangement 277 M
-//! (sorts 140 M), hole-linking sweep 267 M.
+//! CPU time (`perf stat` task-clock, `BOOLEAN_ONE`, input generation included): star 1e5
+//! union 107 ms against i_overlay's 93; squares 116–140 ms against 51–63.
+//! Callgrind (`BOOLEAN_ONE=ours|io`, one thread, all threads counted): star 1e5 union
+//! about 455 M instructions for compgeom (was about 505 M) and about 450 M for i_overlay
+//! (which runs much of its work on the rayon pool, so its wall time gains more from the
+//! second core); squares 477 M for compgeom (was about 860 M with the worker thread)
+//! against about 300 M for i_overlay. Star 1e5 union by stage: noding about 295 M (grid,
+//! pair scan, cuts), traced rings 149 M (was 213 M for DCEL linking, labels and output).
+//! Squares: the hole sweep (267 M) is gone (labels of separate components come from
+//! winding counts over horizontal strips), the global vertex sort of the axis-parallel
+//! arrangement is replaced by binary searches along lines (their key array kept
+//! contiguous: the first version missed cache and was slower in wall time despite fewer
+//! instructions). Our squares IPC is lower than i_overlay's (3× the CPU time for 1.6×
+//! the instructions; 18 k page faults against 7 k).
 
 use crate::util::{ms, Rng};
 use compgeom::overlay::{boolean, union_all, BooleanOp};
@@ -133,6 +143,9 @@ fn row(name: &str, n: usize, ours: f64, io: f64, geo: f64, dev_io: f64) {
 /// Run the group.
 pub fn run(quick: bool) -> Result<(), String> {
     let mut rng = Rng::new(4);
+    if let Ok(who) = std::env::var("BOOLEAN_ONE") {
+        return one(&mut rng, &who);
+    }
     let sizes: &[usize] = if quick {
         &[1_000, 10_000]
     } else {
@@ -236,5 +249,67 @@ pub fn run(quick: bool) -> Result<(), String> {
         ms(t_geo),
         (x - y).abs() / x,
     );
+    Ok(())
+}
+
+/// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5; `BOOLEAN_INPUT=star|squares`):
+/// run one contender once on the star union or the squares input, for instruction counts
+/// (`valgrind --tool=callgrind`).
+fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
+    let n: usize = std::env::var("BOOLEAN_N")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(100_000);
+    let squares = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "squares");
+    if squares {
+        let sq = MultiPolygon(
+            (0..n)
+                .map(|_| {
+                    let (x, y, w) = (rng.unit(), rng.unit(), 0.005 + 0.02 * rng.unit());
+                    Polygon::new(
+                        vec![
+                            Point2::new(x, y),
+                            Point2::new(x + w, y),
+                            Point2::new(x + w, y + w),
+                            Point2::new(x, y + w),
+                        ],
+                        vec![],
+                    )
+                })
+                .collect(),
+        );
+        let ps = io_paths(&sq);
+        let empty: Vec<Vec<[f64; 2]>> = Vec::new();
+        let gs: Vec<geo::Polygon<f64>> = geo_poly(&sq).0;
+        match who {
+            "ours" => drop(black_box(union_all(&sq).map_err(|e| e.to_string())?)),
+            "io" => drop(black_box(ps.overlay(
+                &empty,
+                OverlayRule::Subject,
+                FillRule::NonZero,
+            ))),
+            _ => drop(black_box(geo::unary_union(gs.iter()))),
+        }
+        return Ok(());
+    }
+    let a = MultiPolygon(vec![Polygon::new(star(rng, n, 0.0, 0.0), vec![])]);
+    let b = MultiPolygon(vec![Polygon::new(star(rng, n, 0.3, 0.0), vec![])]);
+    match who {
+        "ours" => drop(black_box(
+            boolean(&a, &b, BooleanOp::Union).map_err(|e| e.to_string())?,
+        )),
+        "io" => {
+            let (pa, pb) = (io_paths(&a), io_paths(&b));
+            drop(black_box(pa.overlay(
+                &pb,
+                OverlayRule::Union,
+                FillRule::EvenOdd,
+            )))
+        }
+        _ => {
+            let (ga, gb) = (geo_poly(&a), geo_poly(&b));
+            drop(black_box(ga.boolean_op(&gb, geo::OpType::Union)))
+        }
+    }
     Ok(())
 }

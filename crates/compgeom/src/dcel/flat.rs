@@ -31,7 +31,6 @@ use super::build::Source;
 use crate::intersect::find_intersections;
 use crate::kernel::{ExactPoint, Point2, Segment2};
 use crate::{Error, Result};
-use rayon::prelude::*;
 use std::collections::{BTreeSet, HashMap};
 
 /// The arrangement of `segments`: edge `i` runs `edges[i][0] → edges[i][1]` and is carried
@@ -390,12 +389,11 @@ impl Flat {
         }
         let mut cuts = by_line;
         cuts.dedup();
-        // Vertices: every cut as a point, each point once (sorted by x, then y), from
-        // one sort of the cuts by point.
-        let cut_point = |&(line, along): &(u32, u64)| {
-            let s = &segs[order[lines[line as usize].0] as usize];
-            (s.axis, s.across, along)
-        };
+        // Vertices: every cut as a point, each point once. A point lies on at most one
+        // horizontal and one vertical line, so the cuts of the vertical lines are distinct
+        // points; a cut of a horizontal line at (x, y) is the same point as the cut at
+        // y of the vertical line through x, if there is one (two binary searches: lines
+        // are sorted by axis then position, cuts by line then position).
         let unkey = |k: u64| {
             if k >> 63 == 1 {
                 f64::from_bits(k & !(1 << 63))
@@ -403,29 +401,55 @@ impl Flat {
                 f64::from_bits(!k)
             }
         };
-        let mut keyed: Vec<(u64, u64, u32)> = cuts
-            .iter()
-            .enumerate()
-            .map(|(i, c)| {
-                let (axis, across, along) = cut_point(c);
-                let p = point(axis, across, unkey(along));
-                (okey(p.x), okey(p.y), i as u32)
-            })
-            .collect();
-        if keyed.len() >= 100_000 {
-            keyed.par_sort_unstable();
-        } else {
-            keyed.sort_unstable();
+        let line_axis = |l: usize| segs[order[lines[l].0] as usize].axis;
+        let line_across = |l: usize| segs[order[lines[l].0] as usize].across;
+        let first_vertical = lines.partition_point(|&(r0, _)| segs[order[r0] as usize].axis == 0);
+        let mut cut_start = vec![0usize; lines.len() + 1];
+        for &(l, _) in &cuts {
+            cut_start[l as usize + 1] += 1;
         }
-        let mut vertices: Vec<ExactPoint> = Vec::new();
+        for l in 0..lines.len() {
+            cut_start[l + 1] += cut_start[l];
+        }
+        let mut vertices: Vec<ExactPoint> = Vec::with_capacity(cuts.len());
         let mut cut_vertex = vec![0u32; cuts.len()];
-        for (r, &(x, y, i)) in keyed.iter().enumerate() {
-            if r == 0 || (x, y) != (keyed[r - 1].0, keyed[r - 1].1) {
-                vertices.push(ExactPoint::Input(Point2::new(unkey(x), unkey(y))));
+        for l in first_vertical..lines.len() {
+            let x = line_across(l);
+            for c in cut_start[l]..cut_start[l + 1] {
+                cut_vertex[c] = vertices.len() as u32;
+                vertices.push(ExactPoint::Input(point(1, x, unkey(cuts[c].1))));
             }
-            cut_vertex[i as usize] = vertices.len() as u32 - 1;
         }
-        drop(keyed);
+        // The vertical lines' positions, contiguous for the binary searches.
+        let verticals: Vec<u64> = (first_vertical..lines.len())
+            .map(|l| okey(line_across(l)))
+            .collect();
+        for l in 0..first_vertical {
+            debug_assert_eq!(line_axis(l), 0);
+            let y = line_across(l);
+            let ky = okey(y);
+            for c in cut_start[l]..cut_start[l + 1] {
+                let kx = cuts[c].1;
+                let at = verticals
+                    .binary_search(&kx)
+                    .ok()
+                    .map(|i| first_vertical + i)
+                    .and_then(|v| {
+                        let range = cut_start[v]..cut_start[v + 1];
+                        cuts[range.clone()]
+                            .binary_search_by(|cut| cut.1.cmp(&ky))
+                            .ok()
+                            .map(|j| range.start + j)
+                    });
+                cut_vertex[c] = match at {
+                    Some(vc) => cut_vertex[vc],
+                    None => {
+                        vertices.push(ExactPoint::Input(point(0, y, unkey(kx))));
+                        vertices.len() as u32 - 1
+                    }
+                };
+            }
+        }
         // Pieces, line by line: between consecutive cuts, the segments covering them.
         let mut pieces = Pieces {
             edges: Vec::with_capacity(cuts.len()),
@@ -446,8 +470,9 @@ impl Flat {
             for &k in &order[r0..r1] {
                 let s = &segs[k as usize];
                 let find = |v: f64| {
+                    let k = okey(v);
                     along
-                        .binary_search_by(|c| c.1.cmp(&okey(v)))
+                        .binary_search_by(|c| c.1.cmp(&k))
                         .expect("endpoints are cuts")
                 };
                 let (i0, i1) = (find(s.lo), find(s.hi));

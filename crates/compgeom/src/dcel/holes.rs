@@ -26,7 +26,7 @@ use std::cmp::Ordering;
 /// just left of `v`, or `None` (unbounded face). `out[out_start[v]..out_start[v + 1]]`
 /// are `v`'s outgoing half-edges in counter-clockwise order from direction +x; `origin[h]`
 /// is the vertex half-edge `h` leaves.
-pub(super) fn faces_left_of(
+pub(crate) fn faces_left_of(
     points: &[ExactPoint],
     approx: &[Rounded],
     origin: &[u32],
@@ -157,6 +157,11 @@ pub(crate) struct Rounded {
 }
 
 impl Rounded {
+    /// The rounded point.
+    pub(crate) fn point(&self) -> Point2 {
+        self.p
+    }
+
     /// The rounded point of `e` (`approx` is its nearest `f64` point).
     pub(crate) fn of(e: &ExactPoint, approx: Point2) -> Rounded {
         match e {

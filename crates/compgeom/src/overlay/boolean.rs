@@ -10,8 +10,11 @@
 //! polygon first oriented with its exterior counter-clockwise and holes clockwise by the
 //! exact sign of its area; inside when the winding is positive: polygons united, each its
 //! shell minus its holes).
-//! The result is the boundary between chosen and other faces, made into valid polygons
-//! ([`super::faces_to_polygons`]).
+//! The result is the boundary between chosen and other faces, made into valid polygons.
+//! [`boolean_with`] does this without building DCEL records (`trace.rs`: winding numbers
+//! per boundary cycle on compact arrays, rings traced from the edges whose two sides
+//! differ); [`boolean_dcel`] builds the labelled DCEL, from which
+//! [`super::faces_to_polygons`] gives the same polygons (tested against each other).
 //!
 //! ## Validity of the output
 //!
@@ -27,6 +30,7 @@
 //!
 //! Cost: O((n + k) log n) for n input edges and k intersection points, plus the
 //! hole-linking sweep (see [`crate::dcel`]).
+#[cfg(test)]
 use super::result::faces_to_polygons;
 use crate::dcel::{polygon_segments, Carrier, Dcel, Flat};
 use crate::io::ring_orientation;
@@ -107,7 +111,7 @@ pub struct BooleanEdge {
 }
 
 /// The segments of a polygon set, oriented for the fill rule.
-fn oriented_segments(p: &MultiPolygon, rule: FillRule) -> Result<Vec<Segment2>> {
+pub(super) fn oriented_segments(p: &MultiPolygon, rule: FillRule) -> Result<Vec<Segment2>> {
     if rule != FillRule::Positive {
         return Ok(polygon_segments(p)?.0);
     }
@@ -189,6 +193,27 @@ pub fn boolean(a: &MultiPolygon, b: &MultiPolygon, op: BooleanOp) -> Result<Mult
 /// `op(A, B)` with options. Errors: non-finite coordinates, rings with fewer than three
 /// distinct points (named by polygon and ring).
 pub fn boolean_with(
+    a: &MultiPolygon,
+    b: &MultiPolygon,
+    op: BooleanOp,
+    opts: &BooleanOptions,
+) -> Result<MultiPolygon> {
+    let rule = opts.fill_rule;
+    let mut segs = oriented_segments(a, rule)?;
+    let na = segs.len();
+    segs.extend(oriented_segments(b, rule)?);
+    super::trace::traced_boolean(
+        &segs,
+        na,
+        |wa, wb| op.apply(rule.inside(wa), rule.inside(wb)),
+        opts.keep_collinear,
+    )
+}
+
+/// [`boolean_with`] by the DCEL: [`boolean_dcel`] and [`faces_to_polygons`] (the
+/// reference the traced path is tested against).
+#[cfg(test)]
+pub(crate) fn boolean_via_dcel(
     a: &MultiPolygon,
     b: &MultiPolygon,
     op: BooleanOp,

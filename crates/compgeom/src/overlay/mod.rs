@@ -37,7 +37,10 @@
 //! [`boolean`] builds the arrangement of the rings of both polygon sets once, labels
 //! each face with its winding numbers with respect to A and B (crossing a ring edge from
 //! right to left adds one), reads them with a [`FillRule`], and returns the boundary
-//! between faces inside and outside the result as valid polygons.
+//! between faces inside and outside the result as valid polygons. It works on the flat
+//! arrangement directly (no DCEL records: cycles of compact `next` links, labels spread
+//! across twins, rings traced from the edges whose two sides differ); [`boolean_dcel`]
+//! gives the same labels as a DCEL.
 //!
 //! ## Validity of the output
 //!
@@ -53,6 +56,7 @@
 //!
 mod boolean;
 mod result;
+mod trace;
 mod validate;
 
 pub use boolean::{
