@@ -49,7 +49,7 @@
 use crate::util::{alternate, best_of, median, ms, Rng};
 use compgeom::delaunay::{
     constrained_delaunay, delaunay, delaunay_with, polygon_delaunay, verify_delaunay,
-    DelaunayAlgorithm, DelaunayOptions,
+    DelaunayAlgorithm, DelaunayOptions, InsertionOrder,
 };
 use compgeom::Point2;
 use spade::Triangulation as _;
@@ -144,7 +144,8 @@ fn measure(name: String, pts: &[Point2], runs: usize, verify: bool) -> Result<Ro
     })
 }
 
-/// `COMPGEOM_DELAUNAY_SOLO=lib,input,n` (lib: default, book, spade or delaunator; input:
+/// `COMPGEOM_DELAUNAY_SOLO=lib,input,n` (lib: default, book, book-uniform (the book variant
+/// in a uniform random order), spade or delaunator; input:
 /// uniform or grid, n points, a grid of side √n): build that one triangulation once and
 /// stop — for instruction counts under `valgrind --tool=callgrind`, which stay comparable
 /// when the machine is loaded.
@@ -161,13 +162,20 @@ fn solo(spec: &str) -> Result<(), String> {
     };
     let count = match lib {
         "default" => delaunay(&pts).map_err(|e| e.to_string())?.triangles().len(),
-        "book" => delaunay_with(
-            &pts,
-            &DelaunayOptions::new().with_algorithm(DelaunayAlgorithm::Incremental),
-        )
-        .map_err(|e| e.to_string())?
-        .triangles()
-        .len(),
+        "book" | "book-uniform" => {
+            let order = if lib == "book" {
+                InsertionOrder::Biased
+            } else {
+                InsertionOrder::Uniform
+            };
+            let opts = DelaunayOptions::new()
+                .with_algorithm(DelaunayAlgorithm::Incremental)
+                .with_insertion_order(order);
+            delaunay_with(&pts, &opts)
+                .map_err(|e| e.to_string())?
+                .triangles()
+                .len()
+        }
         "spade" => {
             let sp: Vec<spade::Point2<f64>> =
                 pts.iter().map(|p| spade::Point2::new(p.x, p.y)).collect();

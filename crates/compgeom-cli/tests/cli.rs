@@ -1203,8 +1203,13 @@ mod delaunay_commands {
     #[test]
     fn delaunay_json_fields_and_duplicates() {
         let (_d, p) = input("pts.csv", "0 0\n1 0\n0 1\n1 1.5\n1 0\n");
-        for alg in ["default", "incremental"] {
-            let v = run_json(&["delaunay", "--verify", "--algorithm", alg], &p);
+        for (alg, order) in [
+            ("default", "biased"),
+            ("incremental", "biased"),
+            ("incremental", "uniform"),
+        ] {
+            let args = ["delaunay", "--verify", "--algorithm", alg];
+            let v = run_json(&[&args[..], &["--insertion-order", order]].concat(), &p);
             assert_eq!(v["vertices"].as_array().unwrap().len(), 4);
             assert_eq!(v["triangles"].as_array().unwrap().len(), 2);
             assert_eq!(v["input_to_vertex"], serde_json::json!([0, 1, 2, 3, 1]));

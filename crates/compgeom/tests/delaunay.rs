@@ -2,14 +2,21 @@
 //! random and degenerate input; the book variant against the default.
 
 use compgeom::delaunay::{
-    delaunay, delaunay_with, verify_delaunay, DelaunayAlgorithm, DelaunayOptions, Triangulation,
+    delaunay, delaunay_with, verify_delaunay, DelaunayAlgorithm, DelaunayOptions, InsertionOrder,
+    Triangulation,
 };
 use compgeom::kernel::{incircle, orient2d, CircleSide, Orientation};
 use compgeom::Point2;
 use proptest::prelude::*;
 
 fn book(pts: &[Point2]) -> Triangulation {
-    let o = DelaunayOptions::new().with_algorithm(DelaunayAlgorithm::Incremental);
+    book_in(pts, InsertionOrder::Biased)
+}
+
+fn book_in(pts: &[Point2], order: InsertionOrder) -> Triangulation {
+    let o = DelaunayOptions::new()
+        .with_algorithm(DelaunayAlgorithm::Incremental)
+        .with_insertion_order(order);
     delaunay_with(pts, &o).unwrap()
 }
 
@@ -49,6 +56,13 @@ fn check_both(pts: &[Point2]) -> (Triangulation, Triangulation) {
     assert_eq!(f.vertices(), b.vertices());
     assert_eq!(f.input_to_vertex(), b.input_to_vertex());
     assert_eq!(f.triangles().len(), b.triangles().len());
+    // The book's own uniform order: also Delaunay, and the same triangle set in general
+    // position (the caller compares `b`; here it is held to `b` where that is unique).
+    let u = book_in(pts, InsertionOrder::Uniform);
+    verify_delaunay(&u).unwrap();
+    oracle(pts, &u);
+    assert_eq!(u.input_to_vertex(), b.input_to_vertex());
+    assert_eq!(u.triangles().len(), b.triangles().len());
     (f, b)
 }
 
@@ -70,6 +84,8 @@ fn random_points_book_equals_default() {
         let pts: Vec<Point2> = (0..n).map(|_| Point2::new(r.f(), r.f())).collect();
         let (f, b) = check_both(&pts);
         assert_eq!(f.canonical_triangles(), b.canonical_triangles(), "n = {n}");
+        let u = book_in(&pts, InsertionOrder::Uniform);
+        assert_eq!(f.canonical_triangles(), u.canonical_triangles(), "n = {n}");
     }
 }
 

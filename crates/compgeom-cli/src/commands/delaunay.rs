@@ -8,7 +8,8 @@ use crate::progress::{Spinner, LARGE_INPUT};
 use clap::{Args, ValueEnum};
 use compgeom::delaunay::{
     constrained_delaunay, delaunay_with, polygon_delaunay_with_points, refine, verify_cdt,
-    verify_delaunay, Cdt, DelaunayAlgorithm, DelaunayOptions, RefineOptions, Triangulation,
+    verify_delaunay, Cdt, DelaunayAlgorithm, DelaunayOptions, InsertionOrder, RefineOptions,
+    Triangulation,
 };
 use compgeom::io::{write_shape, Shape};
 use compgeom::render::{Layer, Picture, Style};
@@ -65,6 +66,12 @@ pub struct DelaunayArgs {
     #[arg(long, value_enum, default_value_t = AlgorithmArg::Default)]
     pub algorithm: AlgorithmArg,
 
+    /// Insertion order of `--algorithm incremental`: `biased` (randomized rounds, each in
+    /// Hilbert-curve order: much faster on large inputs) or `uniform` (a uniform random
+    /// permutation, as in the book). Both are seeded, so runs are reproducible.
+    #[arg(long, value_enum, default_value_t = OrderArg::Biased)]
+    pub insertion_order: OrderArg,
+
     /// Segment constraints (x1,y1,x2,y2 lines, WKT or GeoJSON): the constrained Delaunay
     /// triangulation, with every segment a union of edges (split where input points lie on
     /// it, and at crossings with other segments: each crossing is a Steiner vertex at the
@@ -94,6 +101,15 @@ pub struct DelaunayArgs {
     pub circumcircles: usize,
 }
 
+/// The `--insertion-order` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum OrderArg {
+    /// Biased randomized insertion order (BRIO).
+    Biased,
+    /// A uniform random permutation.
+    Uniform,
+}
+
 /// The `--algorithm` values.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum AlgorithmArg {
@@ -113,11 +129,16 @@ impl AlgorithmArg {
     }
 
     /// The library options.
-    pub fn options(self) -> DelaunayOptions {
-        DelaunayOptions::new().with_algorithm(match self {
-            AlgorithmArg::Default => DelaunayAlgorithm::Default,
-            AlgorithmArg::Incremental => DelaunayAlgorithm::Incremental,
-        })
+    pub fn options(self, order: OrderArg) -> DelaunayOptions {
+        DelaunayOptions::new()
+            .with_algorithm(match self {
+                AlgorithmArg::Default => DelaunayAlgorithm::Default,
+                AlgorithmArg::Incremental => DelaunayAlgorithm::Incremental,
+            })
+            .with_insertion_order(match order {
+                OrderArg::Biased => InsertionOrder::Biased,
+                OrderArg::Uniform => InsertionOrder::Uniform,
+            })
     }
 }
 
@@ -167,7 +188,10 @@ pub fn run(args: &DelaunayArgs) -> Result<(), CliError> {
             Some(polygon_delaunay_with_points(&points, &polys.0)?)
         } else if refining {
             Some(Cdt {
-                triangulation: delaunay_with(&points, &args.algorithm.options())?,
+                triangulation: delaunay_with(
+                    &points,
+                    &args.algorithm.options(args.insertion_order),
+                )?,
                 constraints: Vec::new(),
             })
         } else {
@@ -191,7 +215,7 @@ pub fn run(args: &DelaunayArgs) -> Result<(), CliError> {
                 cdt.triangulation
             }
             None => {
-                let t = delaunay_with(&points, &args.algorithm.options())?;
+                let t = delaunay_with(&points, &args.algorithm.options(args.insertion_order))?;
                 if args.output.verify {
                     verify_delaunay(&t)?;
                 }

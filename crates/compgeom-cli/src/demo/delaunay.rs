@@ -5,7 +5,7 @@
 
 use super::samples::{disc, grid_with_duplicates};
 use super::{format_duration, timed, Demo};
-use crate::commands::delaunay::{add_constraints, delaunay_picture, AlgorithmArg};
+use crate::commands::delaunay::{add_constraints, delaunay_picture, AlgorithmArg, OrderArg};
 use crate::error::CliError;
 use compgeom::delaunay::{
     constrained_delaunay, delaunay_with, polygon_delaunay, refine, verify_cdt, verify_delaunay,
@@ -76,7 +76,7 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
         ),
     ];
     for (file, caption, points, algorithm, circles) in runs {
-        let (tri, time) = timed(|| delaunay_with(&points, &algorithm.options()));
+        let (tri, time) = timed(|| delaunay_with(&points, &algorithm.options(OrderArg::Biased)));
         let tri = tri?;
         verify_delaunay(&tri)?;
         let title = format!(

@@ -81,8 +81,25 @@ pub enum DelaunayAlgorithm {
     #[default]
     Default,
     /// The book's randomized incremental algorithm with the history DAG (§9.3–9.4). The
-    /// random order comes from a fixed seed, so results are reproducible.
+    /// random order comes from a fixed seed, so results are reproducible; see
+    /// [`InsertionOrder`] for how it is drawn.
     Incremental,
+}
+
+/// The random insertion order of [`DelaunayAlgorithm::Incremental`] (the default algorithm
+/// ignores it). Both come from a fixed seed, so results are reproducible, and both keep the
+/// expected O(n log n) time of §9.4.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum InsertionOrder {
+    /// A biased randomized insertion order (Amenta, Choi & Rote 2003): each point joins
+    /// round `k` with probability 2^-(k+1), rounds run from the smallest up, each in
+    /// Hilbert-curve order. Consecutive points then follow nearby DAG paths, which share
+    /// the cache: measured about 1.6× faster than a uniform order at 1e5 uniform points and
+    /// 4–5× at 1e6 (uniform points and a 1000×1000 grid).
+    #[default]
+    Biased,
+    /// A uniform random permutation, as in the book's text (§9.3) and its analysis.
+    Uniform,
 }
 
 /// Options for [`delaunay_with`].
@@ -91,6 +108,9 @@ pub enum DelaunayAlgorithm {
 pub struct DelaunayOptions {
     /// The algorithm. Default: [`DelaunayAlgorithm::Default`].
     pub algorithm: DelaunayAlgorithm,
+    /// The insertion order of [`DelaunayAlgorithm::Incremental`]. Default:
+    /// [`InsertionOrder::Biased`].
+    pub insertion_order: InsertionOrder,
 }
 
 impl DelaunayOptions {
@@ -98,7 +118,14 @@ impl DelaunayOptions {
     pub const fn new() -> Self {
         DelaunayOptions {
             algorithm: DelaunayAlgorithm::Default,
+            insertion_order: InsertionOrder::Biased,
         }
+    }
+
+    /// The same options with another insertion order for the incremental algorithm.
+    pub const fn with_insertion_order(mut self, insertion_order: InsertionOrder) -> Self {
+        self.insertion_order = insertion_order;
+        self
     }
 
     /// The same options with another algorithm.
@@ -139,7 +166,8 @@ pub fn delaunay(points: &[Point2]) -> Result<Triangulation> {
 /// As [`delaunay`].
 pub fn delaunay_with(points: &[Point2], options: &DelaunayOptions) -> Result<Triangulation> {
     ensure_finite(points, "point")?;
-    // Half-edge indices are u32: about 6n for the default mesh, 27n for the book's DAG.
+    // Indices are u32: about 6n half-edges for the default mesh; for the book's DAG about
+    // 4–6n ray nodes (up to ~14n on adversarial input).
     let limit = match options.algorithm {
         DelaunayAlgorithm::Default => MAX_POINTS,
         DelaunayAlgorithm::Incremental => MAX_POINTS_INCREMENTAL,
@@ -155,6 +183,6 @@ pub fn delaunay_with(points: &[Point2], options: &DelaunayOptions) -> Result<Tri
             let (mesh, rep) = fast::triangulate(points);
             Triangulation::from_mesh(points, mesh.as_ref(), &rep)
         }
-        DelaunayAlgorithm::Incremental => incremental::triangulate(points),
+        DelaunayAlgorithm::Incremental => incremental::triangulate(points, options.insertion_order),
     })
 }
