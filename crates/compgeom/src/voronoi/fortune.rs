@@ -26,8 +26,8 @@
 use super::beach_line::{Arc, BeachLine, NIL};
 use super::diagram::{HalfEdge, Vertex, VoronoiDiagram};
 use super::predicates::{
-    circle_event, circumcentre, cmp_event_site, cmp_events, left_of_breakpoint, Circle, Exact,
-    IntCircle, IntFrame,
+    circle_event, circumcentre, cmp_event_site, cmp_event_site_int, cmp_events, cmp_events_int,
+    left_of_breakpoint, Circle, Exact, IntCircle, IntFrame,
 };
 use crate::kernel::{ensure_finite, Point2};
 use crate::Result;
@@ -132,6 +132,15 @@ impl<'a> Sweep<'a> {
 
     /// Exact order of two events (`Less` = processed first).
     fn cmp_ids(&self, a: u32, b: u32) -> Ordering {
+        if self.frame.is_some() {
+            let (e, f) = (&self.events[a as usize], &self.events[b as usize]);
+            return cmp_events_int(
+                &e.circle,
+                &self.ints[a as usize],
+                &f.circle,
+                &self.ints[b as usize],
+            );
+        }
         cmp_events(
             &self.events[a as usize].circle,
             || self.exact(a),
@@ -328,7 +337,12 @@ impl<'a> Sweep<'a> {
             let event_first = match (site, top) {
                 (Some(q), Some(t)) => {
                     let e = &self.events[t.id as usize].circle;
-                    cmp_event_site(e, || self.exact(t.id), self.sites[q as usize]) == Ordering::Less
+                    let s = self.sites[q as usize];
+                    let o = match &self.frame {
+                        Some(f) => cmp_event_site_int(e, &self.ints[t.id as usize], f, s),
+                        None => cmp_event_site(e, || self.exact(t.id), s),
+                    };
+                    o == Ordering::Less
                 }
                 (None, Some(_)) => true,
                 (_, None) => false,

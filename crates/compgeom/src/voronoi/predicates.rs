@@ -436,10 +436,96 @@ fn mul_wide(a: u128, b: u128) -> (u128, u128) {
     (hi, lo)
 }
 
+/// Offsets between sites at most this large (and, if nonzero, at least [`OFFSET_MIN`])
+/// keep every product of up to three of them a normal number: no underflow, no overflow.
+const OFFSET_MAX: f64 = 2.037035976334486e90; // 2^300
+/// See [`OFFSET_MAX`].
+const OFFSET_MIN: f64 = 4.909093465297727e-91; // 2^-300
+/// `2⁻⁴⁸⁰`: a radius numerator at least this large has a square far above underflow.
+const NORM_MIN: f64 = 3.2138760885179806e-145; // 2^-480
+
 /// The circle event of the sites `a, b, c` (in beach-line order) if their breakpoints
-/// converge (`a, b, c` turn clockwise), else `None`: enclosures from the running-error
-/// filter.
+/// converge (`a, b, c` turn clockwise), else `None`.
+///
+/// Fast path, plain `f64` with error bounds computed alongside (`u = 2⁻⁵³`; products and
+/// sums named by their computed values). When the four offsets `b − a`, `c − a` are zero
+/// or within `[2⁻³⁰⁰, 2³⁰⁰]`, no product below underflows or overflows and every rounding
+/// is relative:
+/// - `D = 2(p₁ − p₂)`, `p₁ = B_x C_y`, `p₂ = B_y C_x`: each `p` carries three roundings,
+///   the difference one, so `|D̃ − D| ≤ e_D = 9u(|p₁| + |p₂|)`; `|D̃| > 4e_D` settles the
+///   orientation (`D < 0`: clockwise) and gives `|D| ≥ ¾|D̃|`.
+/// - `N_x = t₁ − t₂` with `t₁ = C_y|B|²`, `t₂ = B_y|C|²`: six roundings per term and one
+///   more, `e_N = 8u(|t₁| + |t₂|)`; likewise `N_y`.
+/// - `N/D − Ñ/D̃ = (ΔN·D − N·ΔD)/(D D̃)`, so the centre offset errs by at most
+///   `(e_N + (|Ñ| + e_N)·e_D·(4/3)/|D̃|)/|D̃|` plus the division's `u|ũ|`.
+/// - The radius numerator `R = |N|`: `||Ñ| − |N|| ≤ e_Nx + e_Ny` (triangle inequality) and
+///   computing `|Ñ|` (two squares, a sum, a square root) errs by `2.1u·R̃` once
+///   `R̃ ≥ 2⁻⁴⁸⁰` (an underflowed square is then negligible); `r = R/|D|` as for `ũ`.
+/// - `y = a.y + u_y − r` and `x = a.x + u_x`: two and one more roundings.
+///
+/// The total is scaled by `1 + 2⁻²⁰` for the bound's own roundings and padded by `1e-300`
+/// absolute (underflow in the bound). Anything else (tiny or huge offsets, nearly collinear
+/// sites, overflow) goes to [`circle_event_filtered`].
 pub(crate) fn circle_event(a: Point2, b: Point2, c: Point2) -> Option<Circle> {
+    const U: f64 = 1.0 / 9_007_199_254_740_992.0;
+    let (bx, by) = (b.x - a.x, b.y - a.y);
+    let (cx, cy) = (c.x - a.x, c.y - a.y);
+    let in_range = |v: f64| v == 0.0 || (v.abs() >= OFFSET_MIN && v.abs() <= OFFSET_MAX);
+    if !(in_range(bx) && in_range(by) && in_range(cx) && in_range(cy)) {
+        return circle_event_filtered(a, b, c);
+    }
+    let (p1, p2) = (bx * cy, by * cx);
+    let d = 2.0 * (p1 - p2);
+    let ed = 9.0 * U * (p1.abs() + p2.abs());
+    if d > 4.0 * ed {
+        return None; // counter-clockwise, certainly
+    }
+    if !(-d > 4.0 * ed) {
+        return circle_event_filtered(a, b, c);
+    }
+    let b2 = bx * bx + by * by;
+    let c2 = cx * cx + cy * cy;
+    let (tx1, tx2) = (cy * b2, by * c2);
+    let (ty1, ty2) = (bx * c2, cx * b2);
+    let nx = tx1 - tx2;
+    let ny = ty1 - ty2;
+    let enx = 8.0 * U * (tx1.abs() + tx2.abs());
+    let eny = 8.0 * U * (ty1.abs() + ty2.abs());
+    let ad = d.abs();
+    let k = ed * (4.0 / 3.0) / ad;
+    let ux = nx / d;
+    let uy = ny / d;
+    let eux = (enx + (nx.abs() + enx) * k) / ad + U * ux.abs();
+    let euy = (eny + (ny.abs() + eny) * k) / ad + U * uy.abs();
+    let rn = (nx * nx + ny * ny).sqrt();
+    if !(rn >= NORM_MIN) {
+        return circle_event_filtered(a, b, c);
+    }
+    let er_n = enx + eny + 2.1 * U * rn;
+    let r = rn / ad;
+    let er = (er_n + (rn + er_n) * k) / ad + U * r;
+    let x = a.x + ux;
+    let y = (a.y + uy) - r;
+    let safety = 1.0 + 1.0 / 1_048_576.0;
+    let ex = (eux + U * x.abs()) * safety + 1e-300;
+    let ey = (euy + er + 1.01 * U * (a.y.abs() + uy.abs() + y.abs())) * safety + 1e-300;
+    let circle = Circle {
+        y: (y - ey, y + ey),
+        x: (x - ex, x + ex),
+    };
+    if [circle.x.0, circle.x.1, circle.y.0, circle.y.1]
+        .iter()
+        .all(|v| v.is_finite())
+    {
+        Some(circle)
+    } else {
+        circle_event_filtered(a, b, c)
+    }
+}
+
+/// [`circle_event`] with the orientation from the exact `orient2d` and the enclosures from
+/// the running-error filter (slower, but never undecided).
+pub(crate) fn circle_event_filtered(a: Point2, b: Point2, c: Point2) -> Option<Circle> {
     if orient2d(a, b, c) != Orientation::Clockwise {
         return None;
     }
@@ -578,15 +664,7 @@ pub(crate) fn cmp_event_site(e: &Circle, exact: impl FnOnce() -> Exact, s: Point
     }
     let ex = exact();
     if let Some((ic, frame)) = ex.int {
-        let (sx, sy) = frame.coords(s);
-        return match cmp_event_y_site_int(&ic, sy) {
-            Ordering::Greater => Ordering::Less,
-            Ordering::Less => Ordering::Greater,
-            Ordering::Equal => match cmp_event_x_site_int(&ic, sx) {
-                Ordering::Greater => Ordering::Greater,
-                _ => Ordering::Less,
-            },
-        };
+        return cmp_event_site_int(e, &ic, &frame, s);
     }
     let t = &ex.sites;
     let dy = decide(
@@ -620,6 +698,31 @@ pub(crate) fn cmp_event_site(e: &Circle, exact: impl FnOnce() -> Exact, s: Point
                 _ => Ordering::Less,
             }
         }
+    }
+}
+
+/// [`cmp_event_site`] for an event in integer form (`s` a site of the frame).
+#[inline]
+pub(crate) fn cmp_event_site_int(
+    e: &Circle,
+    ic: &IntCircle,
+    frame: &IntFrame,
+    s: Point2,
+) -> Ordering {
+    if e.y.0 > s.y {
+        return Ordering::Less;
+    }
+    if e.y.1 < s.y {
+        return Ordering::Greater;
+    }
+    let (sx, sy) = frame.coords(s);
+    match cmp_event_y_site_int(ic, sy) {
+        Ordering::Greater => Ordering::Less,
+        Ordering::Less => Ordering::Greater,
+        Ordering::Equal => match cmp_event_x_site_int(ic, sx) {
+            Ordering::Greater => Ordering::Greater,
+            _ => Ordering::Less,
+        },
     }
 }
 
@@ -757,11 +860,7 @@ pub(crate) fn cmp_events(
     }
     let (ee, ff) = (exact_e(), exact_f());
     if let (Some((ie, _)), Some((jf, _))) = (ee.int, ff.int) {
-        return match cmp_events_y_int(&ie, &jf) {
-            Ordering::Greater => Ordering::Less,
-            Ordering::Less => Ordering::Greater,
-            Ordering::Equal => x_by_enclosure().unwrap_or_else(|| cmp_events_x_int(&ie, &jf)),
-        };
+        return cmp_events_int(e, &ie, f, &jf);
     }
     let (t, u) = (&ee.sites, &ff.sites);
     let dy = decide(
@@ -788,6 +887,30 @@ pub(crate) fn cmp_events(
     }
 }
 
+/// [`cmp_events`] for two events in integer form.
+#[inline]
+pub(crate) fn cmp_events_int(e: &Circle, ie: &IntCircle, f: &Circle, jf: &IntCircle) -> Ordering {
+    if e.y.0 > f.y.1 {
+        return Ordering::Less;
+    }
+    if e.y.1 < f.y.0 {
+        return Ordering::Greater;
+    }
+    match cmp_events_y_int(ie, jf) {
+        Ordering::Greater => Ordering::Less,
+        Ordering::Less => Ordering::Greater,
+        Ordering::Equal => {
+            if e.x.1 < f.x.0 {
+                Ordering::Less
+            } else if e.x.0 > f.x.1 {
+                Ordering::Greater
+            } else {
+                cmp_events_x_int(ie, jf)
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -796,6 +919,227 @@ mod tests {
     #[test]
     fn constants() {
         assert_eq!(NORMAL_ENOUGH, 2f64.powi(-960));
+    }
+
+    use proptest::prelude::*;
+
+    /// Lattice points on x² + y² = 5525 (many: a cocircular set).
+    fn lattice_circle() -> Vec<(i32, i32)> {
+        let mut v = Vec::new();
+        for x in -75i32..=75 {
+            for y in -75i32..=75 {
+                if x * x + y * y == 5525 {
+                    v.push((x, y));
+                }
+            }
+        }
+        v
+    }
+
+    /// Degenerate-on-purpose points: a small integer grid, lattice-circle points, random
+    /// reals; then scaled by a power of two and offset (per test case, all points alike).
+    fn raw_point() -> impl Strategy<Value = (f64, f64)> {
+        let circle = lattice_circle();
+        prop_oneof![
+            (0i32..7, 0i32..7).prop_map(|(x, y)| (x as f64, y as f64)),
+            (0..circle.len()).prop_map(move |i| (circle[i].0 as f64, circle[i].1 as f64)),
+            (-1e3f64..1e3, -1e3f64..1e3),
+            // One ulp away from a grid point.
+            (0i32..7, 0i32..7, any::<bool>()).prop_map(|(x, y, up)| {
+                let y = y as f64 + 1.0;
+                (x as f64, if up { y.next_up() } else { y.next_down() })
+            }),
+        ]
+    }
+
+    fn frame() -> impl Strategy<Value = (f64, f64)> {
+        prop_oneof![
+            Just((1.0, 0.0)),
+            Just((1.0, 1e6)),
+            Just((1.0, 2f64.powi(40))),
+            (-1000i32..900).prop_map(|k| (2f64.powi(k), 0.0)),
+            Just((0.5, 0.0)),
+            Just((2f64.powi(-1000), 0.0)),
+            Just((2f64.powi(900), 0.0)),
+        ]
+    }
+
+    fn points(n: usize) -> impl Strategy<Value = Vec<Point2>> {
+        (frame(), prop::collection::vec(raw_point(), n)).prop_map(|((k, off), v)| {
+            v.into_iter()
+                .map(|(x, y)| Point2::new(x * k + off, y * k + off))
+                .collect()
+        })
+    }
+
+    /// The enclosures of `c` contain the exact event `y` and centre `x` (decided by the
+    /// exact dyadic predicates).
+    fn assert_encloses(t: &[Point2; 3], c: &Circle) {
+        if !(c.y.0.is_finite() && c.y.1.is_finite() && c.x.0.is_finite() && c.x.1.is_finite()) {
+            return; // the "undecided" enclosure
+        }
+        let ys = |y: f64| cmp_event_y_site::<Dyadic>(t, Point2::new(0.0, y)).unwrap();
+        let xs = |x: f64| cmp_event_x_site::<Dyadic>(t, Point2::new(x, 0.0)).unwrap();
+        assert_ne!(
+            ys(c.y.0),
+            Ordering::Less,
+            "y below the enclosure for {t:?}: {c:?}"
+        );
+        assert_ne!(
+            ys(c.y.1),
+            Ordering::Greater,
+            "y above the enclosure for {t:?}: {c:?}"
+        );
+        assert_ne!(
+            xs(c.x.0),
+            Ordering::Less,
+            "x left of the enclosure for {t:?}: {c:?}"
+        );
+        assert_ne!(
+            xs(c.x.1),
+            Ordering::Greater,
+            "x right of the enclosure for {t:?}: {c:?}"
+        );
+    }
+
+    fn exact_order(e: &[Point2; 3], f: &[Point2; 3]) -> Ordering {
+        match cmp_events_y::<Dyadic>(e, f).unwrap() {
+            Ordering::Greater => Ordering::Less,
+            Ordering::Less => Ordering::Greater,
+            Ordering::Equal => cmp_events_x::<Dyadic>(e, f).unwrap(),
+        }
+    }
+
+    fn exact_order_site(e: &[Point2; 3], s: Point2) -> Ordering {
+        match cmp_event_y_site::<Dyadic>(e, s).unwrap() {
+            Ordering::Greater => Ordering::Less,
+            Ordering::Less => Ordering::Greater,
+            Ordering::Equal => match cmp_event_x_site::<Dyadic>(e, s).unwrap() {
+                Ordering::Greater => Ordering::Greater,
+                _ => Ordering::Less,
+            },
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        /// The fast circle event agrees with the exact orientation, and its enclosures
+        /// (and those of the filtered and the integer versions) contain the exact values.
+        #[test]
+        fn fast_circle_events_enclose_the_exact_event(p in points(3)) {
+            let t = [p[0], p[1], p[2]];
+            let cw = orient2d(t[0], t[1], t[2]) == Orientation::Clockwise;
+            let fast = circle_event(t[0], t[1], t[2]);
+            let slow = circle_event_filtered(t[0], t[1], t[2]);
+            prop_assert_eq!(fast.is_some(), cw);
+            prop_assert_eq!(slow.is_some(), cw);
+            if let (Some(f), Some(s)) = (fast, slow) {
+                assert_encloses(&t, &f);
+                assert_encloses(&t, &s);
+            }
+            if let Some(frame) = IntFrame::detect(&t) {
+                let int = frame.circle_event(t[0], t[1], t[2]);
+                prop_assert_eq!(int.is_some(), cw);
+                if let Some((c, _)) = int {
+                    assert_encloses(&t, &c);
+                }
+            }
+        }
+
+        /// The cheap breakpoint filter (and the integer shortcut) agree with the exact sign.
+        #[test]
+        fn fast_breakpoint_sign_is_exact(p in points(3)) {
+            let (q, pi, pj) = (p[0], p[1], p[2]);
+            let want = sign_exact(&lower_poly::<Dyadic>(q, pi, pj));
+            prop_assert_eq!(lower_sign(q, pi, pj, false), want);
+            if IntFrame::detect(&p).is_some() {
+                prop_assert_eq!(lower_sign(q, pi, pj, true), want);
+            }
+        }
+
+        /// Sites placed (to rounding) right on a breakpoint, and their float neighbours:
+        /// the cheap filter must never give a wrong sign there.
+        #[test]
+        fn breakpoint_sign_near_the_breakpoint(p in points(2), drop in 0.01f64..100.0, k in 0usize..3) {
+            let (pi, pj) = (p[0], p[1]);
+            let l = pi.y.min(pj.y) - drop * (pi.y - pj.y).abs().max(pi.x - pj.x).abs().max(1e-300);
+            prop_assume!(l.is_finite() && l < pi.y.min(pj.y));
+            let (dyi, dyj) = (l - pi.y, l - pj.y);
+            // F(x) = dyi·((x − pj.x)² + dyj²) − dyj·((x − pi.x)² + dyi²), a quadratic.
+            let a = dyi - dyj;
+            let b = -2.0 * (dyi * pj.x - dyj * pi.x);
+            let c = dyi * (pj.x * pj.x + dyj * dyj) - dyj * (pi.x * pi.x + dyi * dyi);
+            let mut roots = vec![];
+            if a == 0.0 {
+                roots.push(-c / b);
+            } else {
+                let disc = (b * b - 4.0 * a * c).max(0.0).sqrt();
+                roots.push((-b + disc) / (2.0 * a));
+                roots.push((-b - disc) / (2.0 * a));
+            }
+            for r in roots.into_iter().filter(|r| r.is_finite()) {
+                let x = [r, r.next_up(), r.next_down()][k];
+                let q = Point2::new(x, l);
+                let want = sign_exact(&lower_poly::<Dyadic>(q, pi, pj));
+                prop_assert_eq!(lower_sign(q, pi, pj, false), want);
+                if IntFrame::detect(&[q, pi, pj]).is_some() {
+                    prop_assert_eq!(lower_sign(q, pi, pj, true), want);
+                }
+            }
+        }
+
+        /// Integer event comparisons agree with the exact dyadic ones (grids, lattice
+        /// circles: many exact ties).
+        #[test]
+        fn integer_event_order_is_exact(p in prop::collection::vec(raw_point(), 7)) {
+            let p: Vec<Point2> = p.into_iter().map(|(x, y)| Point2::new(x.round(), y.round())).collect();
+            let Some(frame) = IntFrame::detect(&p) else { return Ok(()) };
+            let (e, f) = ([p[0], p[1], p[2]], [p[3], p[4], p[5]]);
+            let (Some((ce, ie)), Some((cf, jf))) = (
+                frame.circle_event(e[0], e[1], e[2]),
+                frame.circle_event(f[0], f[1], f[2]),
+            ) else {
+                return Ok(());
+            };
+            prop_assert_eq!(cmp_events_int(&ce, &ie, &cf, &jf), exact_order(&e, &f));
+            prop_assert_eq!(cmp_events_int(&ce, &ie, &ce, &ie), Ordering::Equal);
+            // The same circle through other sites of it compares equal.
+            let g = [e[1], e[2], e[0]];
+            if let Some((cg, ig)) = frame.circle_event(g[0], g[1], g[2]) {
+                prop_assert_eq!(cmp_events_int(&ce, &ie, &cg, &ig), Ordering::Equal);
+            }
+            prop_assert_eq!(cmp_event_site_int(&ce, &ie, &frame, p[6]), exact_order_site(&e, p[6]));
+            // The general comparisons (filter, exact-in-f64, dyadic) agree too.
+            let ex = |t: [Point2; 3]| move || Exact { sites: t, int: None };
+            let (ge, gf) = (circle_event(e[0], e[1], e[2]).unwrap(), circle_event(f[0], f[1], f[2]).unwrap());
+            prop_assert_eq!(cmp_events(&ge, ex(e), &gf, ex(f)), exact_order(&e, &f));
+            prop_assert_eq!(cmp_event_site(&ge, ex(e), p[6]), exact_order_site(&e, p[6]));
+        }
+    }
+
+    /// Events of a grid row tie exactly in `y`; at the same point they are equal.
+    #[test]
+    fn grid_ties() {
+        let p = |x: f64, y: f64| Point2::new(x, y);
+        let pts = [
+            p(0.0, 1.0),
+            p(0.0, 0.0),
+            p(1.0, 0.0),
+            p(5.0, 1.0),
+            p(5.0, 0.0),
+            p(6.0, 0.0),
+            p(1.0, 1.0),
+        ];
+        let frame = IntFrame::detect(&pts).unwrap();
+        // Clockwise triples (beach-line order).
+        let (ca, ia) = frame.circle_event(pts[2], pts[1], pts[0]).unwrap();
+        let (cb, ib) = frame.circle_event(pts[5], pts[4], pts[3]).unwrap();
+        let (cc, ic) = frame.circle_event(pts[6], pts[2], pts[0]).unwrap();
+        assert_eq!(cmp_events_y_int(&ia, &ib), Ordering::Equal);
+        assert_eq!(cmp_events_int(&ca, &ia, &cb, &ib), Ordering::Less);
+        assert_eq!(cmp_events_int(&cb, &ib, &ca, &ia), Ordering::Greater);
+        assert_eq!(cmp_events_int(&ca, &ia, &cc, &ic), Ordering::Equal);
     }
 
     #[test]
