@@ -35,37 +35,54 @@ use std::cmp::Ordering;
 
 /// Distinct sites in first-seen order, each site's first input index, the input-to-site
 /// map, and the sweep order (decreasing `y`, then increasing `x`) of the sites.
+///
+/// One unstable sort of `(y, x, index)` keys: coordinates become order-preserving `u64`s
+/// (`-0.0` is first made `+0.0`, so equal values get equal keys; inputs are finite), `y`
+/// negated for the decreasing order; the index makes the order total, so the first index
+/// of each group of equal points is its smallest. Renumbering groups by first index is a
+/// linear pass over a marker array.
 pub(crate) fn dedupe(points: &[Point2]) -> (Vec<Point2>, Vec<usize>, Vec<usize>, Vec<usize>) {
-    let sweep_cmp = |a: &Point2, b: &Point2| {
-        b.y.partial_cmp(&a.y)
-            .unwrap_or(Ordering::Equal)
-            .then(a.x.partial_cmp(&b.x).unwrap_or(Ordering::Equal))
-    };
-    let mut idx: Vec<usize> = (0..points.len()).collect();
-    idx.sort_by(|&i, &j| sweep_cmp(&points[i], &points[j]).then(i.cmp(&j)));
-    // Groups of equal points; the first index in each group is the smallest.
-    let mut group_of = vec![0usize; points.len()];
-    let mut firsts: Vec<usize> = Vec::new();
-    for (k, &i) in idx.iter().enumerate() {
-        if k > 0 && sweep_cmp(&points[idx[k - 1]], &points[i]) == Ordering::Equal {
-            group_of[i] = firsts.len() - 1;
+    fn key(v: f64) -> u64 {
+        let b = (v + 0.0).to_bits();
+        if b >> 63 == 1 {
+            !b
         } else {
-            firsts.push(i);
-            group_of[i] = firsts.len() - 1;
+            b | (1 << 63)
         }
     }
-    // Site ids in first-seen order.
-    let mut by_first: Vec<usize> = (0..firsts.len()).collect();
-    by_first.sort_by_key(|&g| firsts[g]);
-    let mut site_of_group = vec![0usize; firsts.len()];
-    for (s, &g) in by_first.iter().enumerate() {
-        site_of_group[g] = s;
+    let n = points.len();
+    let mut keys: Vec<(u64, u64, u32)> = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (!key(p.y), key(p.x), i as u32))
+        .collect();
+    keys.sort_unstable();
+    // Groups of equal points, in sweep order.
+    const NONE: usize = usize::MAX;
+    let mut group_of = vec![0usize; n];
+    let mut first_of_group: Vec<usize> = Vec::new();
+    let mut group_at_first = vec![NONE; n];
+    for (k, &(ky, kx, i)) in keys.iter().enumerate() {
+        let i = i as usize;
+        if k == 0 || (keys[k - 1].0, keys[k - 1].1) != (ky, kx) {
+            group_at_first[i] = first_of_group.len();
+            first_of_group.push(i);
+        }
+        group_of[i] = first_of_group.len() - 1;
     }
-    let sites: Vec<Point2> = by_first.iter().map(|&g| points[firsts[g]]).collect();
-    let site_input: Vec<usize> = by_first.iter().map(|&g| firsts[g]).collect();
+    // Site ids in first-seen order.
+    let mut site_of_group = vec![0usize; first_of_group.len()];
+    let mut sites = Vec::with_capacity(first_of_group.len());
+    let mut site_input = Vec::with_capacity(first_of_group.len());
+    for (i, &g) in group_at_first.iter().enumerate() {
+        if g != NONE {
+            site_of_group[g] = sites.len();
+            sites.push(points[i]);
+            site_input.push(i);
+        }
+    }
     let input_to_site: Vec<usize> = group_of.iter().map(|&g| site_of_group[g]).collect();
-    let order: Vec<usize> = (0..firsts.len()).map(|g| site_of_group[g]).collect();
-    (sites, site_input, input_to_site, order)
+    (sites, site_input, input_to_site, site_of_group)
 }
 
 /// A circle event in the queue: the enclosure of its `y` (so that most comparisons need
@@ -107,17 +124,21 @@ pub(crate) struct Sweep<'a> {
 
 impl<'a> Sweep<'a> {
     pub(crate) fn new(sites: &'a [Point2]) -> Self {
+        // Capacities: at most 3n edges (6n half-edges) and 2n vertices; about two circle
+        // events (most of them false alarms) per site and per vertex.
+        let n = sites.len();
+        let frame = IntFrame::detect(sites);
         Sweep {
             sites,
-            frame: IntFrame::detect(sites),
+            frame,
             beach: BeachLine::new(),
-            heap: Vec::new(),
-            events: Vec::new(),
-            ints: Vec::new(),
-            origin: Vec::new(),
-            next: Vec::new(),
-            face: Vec::new(),
-            vertex_event: Vec::new(),
+            heap: Vec::with_capacity(n / 4),
+            events: Vec::with_capacity(4 * n),
+            ints: Vec::with_capacity(if frame.is_some() { 4 * n } else { 0 }),
+            origin: Vec::with_capacity(6 * n),
+            next: Vec::with_capacity(6 * n),
+            face: Vec::with_capacity(6 * n),
+            vertex_event: Vec::with_capacity(2 * n),
         }
     }
 
@@ -179,30 +200,40 @@ impl<'a> Sweep<'a> {
         self.heap[i] = q;
     }
 
+    /// Remove the earliest event. Floyd's variant: the hole at the root moves down along
+    /// the earlier child to a leaf (one comparison per level), then the last element is
+    /// sifted up from there (usually a step or two), about half the comparisons of the
+    /// textbook sift-down.
     fn heap_pop(&mut self) -> Option<Queued> {
         let top = *self.heap.first()?;
         let last = self.heap.pop()?;
         let n = self.heap.len();
-        if n > 0 {
-            let mut i = 0;
-            loop {
-                let l = 2 * i + 1;
-                if l >= n {
-                    break;
-                }
-                let c = if l + 1 < n && self.before(&self.heap[l + 1], &self.heap[l]) {
-                    l + 1
-                } else {
-                    l
-                };
-                if !self.before(&self.heap[c], &last) {
-                    break;
-                }
-                self.heap[i] = self.heap[c];
-                i = c;
-            }
-            self.heap[i] = last;
+        if n == 0 {
+            return Some(top);
         }
+        let mut i = 0;
+        loop {
+            let l = 2 * i + 1;
+            if l >= n {
+                break;
+            }
+            let c = if l + 1 < n && self.before(&self.heap[l + 1], &self.heap[l]) {
+                l + 1
+            } else {
+                l
+            };
+            self.heap[i] = self.heap[c];
+            i = c;
+        }
+        while i > 0 {
+            let p = (i - 1) / 2;
+            if !self.before(&last, &self.heap[p]) {
+                break;
+            }
+            self.heap[i] = self.heap[p];
+            i = p;
+        }
+        self.heap[i] = last;
         Some(top)
     }
 
@@ -420,7 +451,7 @@ impl<'a> Sweep<'a> {
         }
         // Compact vertices (roots) and half-edges.
         let mut vmap = vec![NIL; nv];
-        let mut vertices: Vec<Vertex> = Vec::new();
+        let mut vertices: Vec<Vertex> = Vec::with_capacity(nv);
         for v in 0..nv as u32 {
             let r = find(&mut parent, v);
             if vmap[r as usize] == NIL {
@@ -428,7 +459,7 @@ impl<'a> Sweep<'a> {
                 let [a, b, c] = self.events[self.vertex_event[r as usize] as usize].sites;
                 vertices.push(Vertex {
                     point: circumcentre(sites[a as usize], sites[b as usize], sites[c as usize]),
-                    sites: Vec::new(),
+                    sites: Vec::with_capacity(3),
                 });
             }
             vmap[v as usize] = vmap[r as usize];

@@ -293,14 +293,14 @@ pub(crate) struct IntCircle {
     den: i64,
     cxn: i64,
     cyn: i64,
-    nx: i64,
-    ny: i64,
+    /// `Q = nx² + ny²`.
+    q: i128,
 }
 
 impl IntCircle {
+    #[inline]
     fn q(&self) -> i128 {
-        let (x, y) = (self.nx as i128, self.ny as i128);
-        x * x + y * y
+        self.q
     }
 }
 
@@ -396,8 +396,7 @@ impl IntFrame {
             den,
             cxn: ax * den - nx,
             cyn: ay * den - ny,
-            nx,
-            ny,
+            q: nx as i128 * nx as i128 + ny as i128 * ny as i128,
         };
         // Enclosures: den, cxn, cyn are exact in f64 (< 2⁵³); each of the quotients, the
         // conversion of Q, the square root and the final sums rounds once, a relative
@@ -811,6 +810,10 @@ fn cmp_events_y_int(e: &IntCircle, f: &IntCircle) -> Ordering {
     let a = e.q() * df * df;
     let b = f.q() * de * de;
     let sx = x.cmp(&0);
+    if sx == Ordering::Equal {
+        // The common exact tie (a grid row): the sign of √B − √A.
+        return b.cmp(&a);
+    }
     let st = if sx == Ordering::Less {
         (b - x * x).cmp(&0)
     } else {
