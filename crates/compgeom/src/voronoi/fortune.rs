@@ -1,12 +1,20 @@
 //! VORONOIDIAGRAM (book §7.2): Fortune's plane sweep, O(n log n) time, O(n) space.
 //!
 //! The sweep line moves downwards. The event queue holds the sites (sorted once, by
-//! decreasing `y`, then increasing `x`) and the circle events (a binary heap ordered by the
-//! exact comparison of their lowest points, [`super::predicates::cmp_events`]). The beach
-//! line is a balanced tree of arcs ([`super::beach_line`]). Each breakpoint traces a
-//! Voronoi edge; a circle event removes the vanishing arc and creates a vertex. An arc's
-//! pending circle event is cancelled (a false alarm, marked invalid and skipped when it
-//! reaches the top of the heap) when its neighbours change.
+//! decreasing `y`, then increasing `x`) and the circle events (a binary heap of 24-byte
+//! records — the enclosure of the event's `y` and its index — ordered by the exact
+//! comparison of their lowest points, [`super::predicates::cmp_events`], which usually
+//! needs only the enclosures). The beach line is a balanced tree of arcs
+//! ([`super::beach_line`]). Each breakpoint traces a Voronoi edge (DCEL half-edges); a
+//! circle event removes the vanishing arc and creates a vertex. An arc's pending circle
+//! event is cancelled (a false alarm) when its neighbours change: the arc forgets it, and
+//! the heap drops it lazily when it reaches the top (an event is valid only while its arc
+//! still points to it; event indices are never reused). The bounding box of §7.2 is applied
+//! afterwards by [`super::clip_cells`] to the unbounded edges.
+//!
+//! When all sites are small integers (within a `2¹¹` box) every predicate runs in exact
+//! machine integers ([`super::predicates`]); otherwise floating-point filters with proven
+//! bounds decide almost everything and exact arithmetic the rest.
 //!
 //! ## Degenerate input
 //!
@@ -19,8 +27,10 @@
 //!   are broken lexicographically (`y` then `x`, circle events first), a consistent limit
 //!   of an infinitesimally tilted sweep line.
 //! - Four or more cocircular sites produce several vertices at the same point joined by
-//!   zero-length edges; these are contracted afterwards (the "same point" test is the exact
-//!   in-circle test on the defining sites), giving one vertex of degree > 3.
+//!   zero-length edges; these are contracted afterwards, giving one vertex of degree > 3.
+//!   The "same point" test is the exact equality of the two end events in the sweep order:
+//!   both circles pass through the edge's two sites, and two such circles with the same
+//!   lowest point are the same circle.
 //! - Collinear sites: no circle events, parallel edges, no vertices.
 
 use super::beach_line::{Arc, BeachLine, NIL};

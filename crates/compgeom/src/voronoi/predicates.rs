@@ -24,9 +24,24 @@
 //! `P, Q, X, A, B`; these are decided by squaring with sign analysis (every step exact),
 //! see [`cmp_event_site`] and [`cmp_events`].
 //!
-//! Every polynomial is written once, generically over the kernel's arithmetic interface,
-//! and evaluated first in `f64` with a rigorous running error bound (the kernel's filter)
-//! and only when that cannot decide, with exact dyadic big-integer arithmetic.
+//! ## Evaluation stages
+//!
+//! 1. **Cheap filters** in plain `f64` with error bounds derived once (proofs at
+//!    [`lower_sign`] and [`circle_event`]): the breakpoint sign `F`, and each circle
+//!    event's enclosures of its `y` and centre `x`. Two events (or an event and a site)
+//!    whose enclosures are disjoint are ordered without further work — nearly always on
+//!    random input.
+//! 2. **Small-integer input** ([`IntFrame`]: all sites integers in a `2¹¹` box, e.g. the
+//!    1000 × 1000 grid, where every square gives exact ties): `F` is exact in `f64`, and
+//!    events carry an exact integer form ([`IntCircle`]) compared in `i128` (one 256-bit
+//!    product in the rarest branch), with the bounds proved where they are used.
+//! 3. Otherwise every polynomial, written once generically over the kernel's arithmetic
+//!    interface, is evaluated with a rigorous running error bound (the kernel's filter),
+//!    then exactly in `f64` when every operation happens to be exact (ties on dyadic
+//!    grids), and only then with exact dyadic big-integer arithmetic.
+//!
+//! Unit proptests hold the first two stages to the dyadic one on degenerate input (grids,
+//! lattice circles, ±1 ulp, scales 2⁻¹⁰⁰⁰ … 2⁹⁰⁰, offsets, points on a rounded breakpoint).
 
 use crate::kernel::arith::Arith;
 use crate::kernel::exact::Dyadic;
@@ -479,7 +494,8 @@ pub(crate) fn circle_event(a: Point2, b: Point2, c: Point2) -> Option<Circle> {
     if d > 4.0 * ed {
         return None; // counter-clockwise, certainly
     }
-    if !(-d > 4.0 * ed) {
+    // Also catches NaN (overflowed products).
+    if (-d).partial_cmp(&(4.0 * ed)) != Some(Ordering::Greater) {
         return circle_event_filtered(a, b, c);
     }
     let b2 = bx * bx + by * by;
@@ -497,7 +513,8 @@ pub(crate) fn circle_event(a: Point2, b: Point2, c: Point2) -> Option<Circle> {
     let eux = (enx + (nx.abs() + enx) * k) / ad + U * ux.abs();
     let euy = (eny + (ny.abs() + eny) * k) / ad + U * uy.abs();
     let rn = (nx * nx + ny * ny).sqrt();
-    if !(rn >= NORM_MIN) {
+    // Also catches NaN.
+    if !matches!(rn.partial_cmp(&NORM_MIN), Some(Ordering::Greater | Ordering::Equal)) {
         return circle_event_filtered(a, b, c);
     }
     let er_n = enx + eny + 2.1 * U * rn;
@@ -837,9 +854,9 @@ fn cmp_events_x_int(e: &IntCircle, f: &IntCircle) -> Ordering {
 }
 
 /// Order of two circle events in the sweep (`Less` = processed first): larger `y` first,
-/// then smaller centre `x`; `Equal` when both coincide (then, as two circles through the
-/// same two sites with the same lowest point are one circle, events sharing two sites
-/// have the same centre). `exact_*` are called only when the enclosures do not decide.
+/// then smaller centre `x`; `Equal` when the lowest points coincide (for two events that
+/// share two sites this means the same circle). `exact_*` are called only when the
+/// enclosures do not decide.
 pub(crate) fn cmp_events(
     e: &Circle,
     exact_e: impl FnOnce() -> Exact,
