@@ -25,7 +25,12 @@
 //! | grid 1000² (load 6.2) | 280.8 | 1220.4 | 897.8 | 401.5 | 0.70 | 0.79 | 4.35 |
 //!
 //! CDT (900 holes, 110k vertices): compgeom full 470 ms vs spade `bulk_load_cdt` 385 ms
-//! (1.22; was 1.38–1.42). Callgrind instructions, 90 000 points: default grid 353 M → 215 M
+//! (1.22; was 1.38–1.42). Later (session 6, load 7.2, `COMPGEOM_DELAUNAY_CDT_ONLY=1` runs
+//! only this row, with 5 alternating rounds): compgeom full 411.7 ms vs spade 552.4 ms,
+//! ratio 0.75 best-of / 0.71 median of rounds, after the Lawson restoration started from
+//! the triangles the constraint flips changed instead of every edge (callgrind 5.91 G →
+//! 3.31 G instructions; 2.5 G of the rest is `robust::incircleadapt` on the nearly
+//! cocircular ring vertices inside the Delaunay triangulation itself). Callgrind instructions, 90 000 points: default grid 353 M → 215 M
 //! and uniform 431 M → 294 M this session (delaunator 245 M / 241 M, spade 1435 M / 485 M,
 //! book 592 M / 771 M, before the curve rounds of the default). The default's wall time
 //! beats delaunator at 1e6 while executing more instructions: delaunator's hull-hash sweep

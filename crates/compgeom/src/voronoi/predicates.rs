@@ -514,7 +514,10 @@ pub(crate) fn circle_event(a: Point2, b: Point2, c: Point2) -> Option<Circle> {
     let euy = (eny + (ny.abs() + eny) * k) / ad + U * uy.abs();
     let rn = (nx * nx + ny * ny).sqrt();
     // Also catches NaN.
-    if !matches!(rn.partial_cmp(&NORM_MIN), Some(Ordering::Greater | Ordering::Equal)) {
+    if !matches!(
+        rn.partial_cmp(&NORM_MIN),
+        Some(Ordering::Greater | Ordering::Equal)
+    ) {
         return circle_event_filtered(a, b, c);
     }
     let er_n = enx + eny + 2.1 * U * rn;
