@@ -1,7 +1,7 @@
 //! Paired timing of Fortune's sweep against the default (dual) Voronoi diagram, for
 //! profiling the book variant.
 //!
-//! `cargo run --release --example fortune_profile -- <uniform N | grid K> [ROUNDS] [fortune|dual]`
+//! `cargo run --release --example fortune_profile -- <uniform N | grid K | halfgrid K> [ROUNDS] [fortune|dual]`
 //!
 //! With `fortune` or `dual` only that method runs once (for `valgrind --tool=callgrind`);
 //! otherwise the two alternate for ROUNDS rounds and the best times and the median of the
@@ -20,9 +20,11 @@ fn input(kind: &str, n: usize) -> Vec<Point2> {
         s >> 11
     };
     match kind {
-        "grid" => {
+        "grid" | "halfgrid" => {
+            // `halfgrid`: the same grid at step 0.5 (dyadic, not integer).
+            let step = if kind == "grid" { 1.0 } else { 0.5 };
             let mut v: Vec<Point2> = (0..n * n)
-                .map(|i| Point2::new((i % n) as f64, (i / n) as f64))
+                .map(|i| Point2::new((i % n) as f64 * step, (i / n) as f64 * step))
                 .collect();
             for i in (1..v.len()).rev() {
                 let j = (rnd() % (i as u64 + 1)) as usize;

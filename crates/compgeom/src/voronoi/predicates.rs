@@ -287,15 +287,23 @@ pub(crate) struct Exact {
     pub int: Option<(IntCircle, IntFrame)>,
 }
 
-/// All sites have integer coordinates within a `2¹¹ × 2¹¹` box: then the sweep's
-/// polynomials are evaluated in machine integers (`i64`/`i128`, one 256-bit product at the
-/// very end of one predicate), exactly and without any filter. Coordinates are taken
-/// relative to the box's lower-left corner `(x0, y0)`, so they lie in `[0, S)`, `S = 2¹¹`;
-/// the bounds this gives are stated where they are used.
+/// All sites lie on a small grid: `(x0 + i·2⁻ᵏ, y0 + j·2⁻ᵏ)` with integers
+/// `0 ≤ i, j < S = 2¹¹` and `0 ≤ k ≤ 300` (integer input has `k = 0`; `k > 0` covers dyadic
+/// steps such as 0.5). Then the sweep's polynomials are evaluated in machine integers on
+/// `(i, j)` (`i64`/`i128`, one 256-bit product at the very end of one predicate), exactly and
+/// without any filter — signs do not change under translation and scaling by `2ᵏ`; the
+/// bounds are stated where they are used. In `f64` every difference of two sites is a
+/// multiple of `2⁻ᵏ` below `2¹¹·2⁻ᵏ`, so it is representable and computed exactly, and
+/// the breakpoint polynomial (degree 3, at least `2⁻³ᵏ ≥ 2⁻⁹⁰⁰` when nonzero, below `2³⁵`
+/// units) is exact too.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct IntFrame {
     x0: f64,
     y0: f64,
+    /// `2ᵏ`.
+    scale: f64,
+    /// `2⁻ᵏ`.
+    inv: f64,
 }
 
 /// A circle event in integer form (coordinates relative to the [`IntFrame`]): with
@@ -360,30 +368,63 @@ impl IntFrame {
     /// The side of the box, `2¹¹`.
     const SPAN: f64 = 2048.0;
 
-    /// The frame of `sites` if they are all integers within a box of side below `2¹¹`.
-    /// (`max − min` is computed in `f64`: rounding is monotone and 2048 is a float, so the
-    /// test `< 2048` is exact.)
+    /// The frame of `sites` if they lie on a small grid (see [`IntFrame`]). Offsets from
+    /// the lower-left corner are checked to be exact (two-sum error zero), then the finest
+    /// binary step `2⁻ᵏ` among them is found; the spans times `2ᵏ` must stay below 2048.
+    /// (Spans are computed in `f64`: rounding is monotone and 2048 is a float, so the test
+    /// `< 2048` is exact; scaling by `2ᵏ` is exact.) Random input fails at its first point.
     pub(crate) fn detect(sites: &[Point2]) -> Option<IntFrame> {
+        const KMAX: i32 = 300;
         let first = sites.first()?;
         let (mut x0, mut y0, mut x1, mut y1) = (first.x, first.y, first.x, first.y);
         for p in sites {
-            if p.x != p.x.trunc() || p.y != p.y.trunc() {
-                return None;
-            }
             x0 = x0.min(p.x);
             x1 = x1.max(p.x);
             y0 = y0.min(p.y);
             y1 = y1.max(p.y);
         }
-        (x1 - x0 < Self::SPAN && y1 - y0 < Self::SPAN).then_some(IntFrame { x0, y0 })
+        let (wx, wy) = (x1 - x0, y1 - y0);
+        // The exact offset v − o, or None if the subtraction rounds.
+        let offset = |v: f64, o: f64| {
+            let d = v - o;
+            let bb = d - v;
+            let err = (v - (d - bb)) + (-o - bb);
+            (err == 0.0).then_some(d)
+        };
+        let mut k = 0i32;
+        let mut scale = 1.0f64;
+        for p in sites {
+            for d in [offset(p.x, x0)?, offset(p.y, y0)?] {
+                let mut t = d * scale;
+                while t != t.trunc() {
+                    t *= 2.0;
+                    scale *= 2.0;
+                    k += 1;
+                    if k > KMAX {
+                        return None;
+                    }
+                }
+            }
+            if !(wx * scale < Self::SPAN && wy * scale < Self::SPAN) {
+                return None;
+            }
+        }
+        Some(IntFrame {
+            x0,
+            y0,
+            scale,
+            inv: 2f64.powi(-k),
+        })
     }
 
-    /// Integer coordinates of a site relative to the frame. Exact: both are integers whose
-    /// difference is below 2¹¹; below 2¹² in magnitude everything is exact, above it the
-    /// two are within a factor 2 of each other (Sterbenz).
+    /// Integer coordinates of a site relative to the frame (exact: the offset is exact, see
+    /// [`IntFrame::detect`], and scaling by `2ᵏ` is exact).
     #[inline]
     fn coords(&self, p: Point2) -> (i64, i64) {
-        ((p.x - self.x0) as i64, (p.y - self.y0) as i64)
+        (
+            ((p.x - self.x0) * self.scale) as i64,
+            ((p.y - self.y0) * self.scale) as i64,
+        )
     }
 
     /// The circle event of the sites `a, b, c` (in beach-line order) if their breakpoints
@@ -422,13 +463,13 @@ impl IntFrame {
         let r = (ic.q() as f64).sqrt() / fd;
         let y = cyr - r;
         let slack = (cyr.abs() + r + y.abs()) * 1e-14 + 1e-300;
+        // Back to coordinates: times 2⁻ᵏ (exact unless it underflows, which the 1e-300 of
+        // `shift` covers), plus the corner.
+        let inv = self.inv;
+        let xs = cxr.abs() * 1e-14 + 1e-300;
         let circle = Circle {
-            y: shift(self.y0, y - slack, y + slack),
-            x: shift(
-                self.x0,
-                cxr - cxr.abs() * 1e-14 - 1e-300,
-                cxr + cxr.abs() * 1e-14 + 1e-300,
-            ),
+            y: shift(self.y0, (y - slack) * inv, (y + slack) * inv),
+            x: shift(self.x0, (cxr - xs) * inv, (cxr + xs) * inv),
         };
         Some((circle, ic))
     }
@@ -1115,8 +1156,9 @@ mod tests {
         /// Integer event comparisons agree with the exact dyadic ones (grids, lattice
         /// circles: many exact ties).
         #[test]
-        fn integer_event_order_is_exact(p in prop::collection::vec(raw_point(), 7)) {
-            let p: Vec<Point2> = p.into_iter().map(|(x, y)| Point2::new(x.round(), y.round())).collect();
+        fn integer_event_order_is_exact(p in prop::collection::vec(raw_point(), 7), k in -20i32..20, off in prop_oneof![Just(0.0), Just(3.0), Just(1e9)]) {
+            let s = 2f64.powi(k);
+            let p: Vec<Point2> = p.into_iter().map(|(x, y)| Point2::new(x.round() * s + off, y.round() * s + off)).collect();
             let Some(frame) = IntFrame::detect(&p) else { return Ok(()) };
             let (e, f) = ([p[0], p[1], p[2]], [p[3], p[4], p[5]]);
             let (Some((ce, ie)), Some((cf, jf))) = (
