@@ -27,7 +27,8 @@
 //! CDT (900 holes, 110k vertices): compgeom full 470 ms vs spade `bulk_load_cdt` 385 ms
 //! (1.22; was 1.38–1.42). Later (session 6, load 7.2, `COMPGEOM_DELAUNAY_CDT_ONLY=1` runs
 //! only this row, with 5 alternating rounds): compgeom full 411.7 ms vs spade 552.4 ms,
-//! ratio 0.75 best-of / 0.71 median of rounds, after the Lawson restoration started from
+//! ratio 0.75 best-of / 0.71 median of rounds (at load 3.5: 257.1 vs 332.2 ms, 0.77 / 0.78;
+//! polygon with holes removed 269.3 ms), after the Lawson restoration started from
 //! the triangles the constraint flips changed instead of every edge (callgrind 5.91 G →
 //! 3.31 G instructions; 2.5 G of the rest is `robust::incircleadapt` on the nearly
 //! cocircular ring vertices inside the Delaunay triangulation itself). Callgrind instructions, 90 000 points: default grid 353 M → 215 M
