@@ -43,7 +43,7 @@ pub fn beach_line_at(points: &[Point2], sweep_y: f64) -> Result<BeachLineSnapsho
     let (sites, _, _, order) = dedupe(points);
     let mut sweep = Sweep::new(&sites);
     sweep.run(&order, Some(sweep_y));
-    let arcs = sweep.beach.arcs().iter().map(|a| a.site).collect();
+    let arcs = sweep.beach.arcs().iter().map(|a| a.site as usize).collect();
     Ok(BeachLineSnapshot {
         sweep_y,
         sites,
