@@ -245,6 +245,37 @@ pub fn run(quick: bool) -> Result<(), String> {
             "  fortune / default (diagram): {:.2} best-of, {median:.2} median of {paired} alternating rounds",
             ms(t_fortune) / ms(t_dual)
         );
+        // Paired the same way: the like-for-like output (clipped cells) against voronoice.
+        let mut ratios = Vec::new();
+        for r in 0..paired {
+            let mut pair = [0.0f64; 2];
+            for k in 0..2 {
+                let ours = (r + k) % 2 == 0;
+                pair[usize::from(!ours)] = if ours {
+                    ms(best_of(1, || voronoi_cells(pts).map(|c| c.clip(&region))))
+                } else {
+                    ms(best_inner(1, || {
+                        let sites = vp.clone();
+                        let t0 = std::time::Instant::now();
+                        let v = voronoice::VoronoiBuilder::default()
+                            .set_sites(sites)
+                            .set_bounding_box(bbox.clone())
+                            .set_clip_behavior(voronoice::ClipBehavior::Clip)
+                            .build();
+                        let e = t0.elapsed();
+                        drop(v);
+                        e
+                    }))
+                };
+            }
+            ratios.push(pair[0] / pair[1]);
+        }
+        ratios.sort_by(f64::total_cmp);
+        let median = ratios.get(ratios.len() / 2).copied().unwrap_or(f64::NAN);
+        println!(
+            "  cells+clip / voronoice: {:.2} best-of, {median:.2} median of {paired} alternating rounds",
+            ms(t_compact_cells) / ms(t_voronoice)
+        );
         times.push([t_compact_cells, t_dual_cells, t_cells, t_voronoice]);
     }
     if times.len() >= 2 {

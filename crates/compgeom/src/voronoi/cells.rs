@@ -34,6 +34,10 @@ use crate::delaunay::pred::{in_circle_grid, small_integer_grid};
 use crate::delaunay::{delaunay, Triangulation, NO_NEIGHBOR};
 use crate::kernel::{compare_xy, incircle, CircleSide, Point2};
 use crate::Result;
+use rayon::prelude::*;
+
+/// From this many sites on, [`VoronoiCells::clip`] runs on the rayon pool.
+const PARALLEL_CLIP: usize = 20_000;
 
 /// Marks "at infinity" in [`CellEdge`]'s origin (and "unset" during construction).
 const NONE: u32 = u32::MAX;
@@ -161,32 +165,37 @@ impl VoronoiCells {
     /// [`super::clip_cells`] on [`Self::to_diagram`] (counter-clockwise rings, empty where a
     /// cell misses the region). A bounded cell whose vertices are all strictly inside the
     /// region is copied; only the others are cut (by the bisectors of their neighbours).
+    /// Cells are independent, so large diagrams are clipped on the rayon pool (the result
+    /// is the same, in the same order).
     pub fn clip(&self, region: &ClipRegion) -> Vec<Vec<Point2>> {
         let inside = super::clip::inside_test(region);
         let flags: Vec<bool> = self.vertices.iter().map(|&p| inside(p)).collect();
-        (0..self.sites.len())
-            .map(|s| {
-                let cell = self.cell(s);
-                let whole = cell.len() >= 3
-                    && cell
-                        .iter()
-                        .all(|e| e.origin != NONE && flags[e.origin as usize]);
-                if whole {
-                    return cell
-                        .iter()
-                        .map(|e| self.vertices[e.origin as usize])
-                        .collect();
+        let one = |s: usize| -> Vec<Point2> {
+            let cell = self.cell(s);
+            let whole = cell.len() >= 3
+                && cell
+                    .iter()
+                    .all(|e| e.origin != NONE && flags[e.origin as usize]);
+            if whole {
+                return cell
+                    .iter()
+                    .map(|e| self.vertices[e.origin as usize])
+                    .collect();
+            }
+            let mut poly = region.ring().to_vec();
+            for e in cell {
+                if poly.is_empty() {
+                    break;
                 }
-                let mut poly = region.ring().to_vec();
-                for e in cell {
-                    if poly.is_empty() {
-                        break;
-                    }
-                    poly = cut(&poly, self.sites[s], self.sites[e.neighbour as usize]);
-                }
-                poly
-            })
-            .collect()
+                poly = cut(&poly, self.sites[s], self.sites[e.neighbour as usize]);
+            }
+            poly
+        };
+        if self.sites.len() < PARALLEL_CLIP {
+            (0..self.sites.len()).map(one).collect()
+        } else {
+            (0..self.sites.len()).into_par_iter().map(one).collect()
+        }
     }
 
     /// The half-edge [`VoronoiDiagram`] of the same diagram.
@@ -672,13 +681,14 @@ mod tests {
         let mut r = lcg(3);
         let mut unit = move || (r() as f64) / (1u64 << 53) as f64;
         // Random.
-        for n in [3, 4, 10, 200, 3000] {
+        // (30 000 sites: `clip` takes its parallel path, see PARALLEL_CLIP.)
+        for n in [3, 4, 10, 200, 3000, 30_000] {
             let p: Vec<Point2> = (0..n).map(|_| Point2::new(unit(), unit())).collect();
             same_as_reference(&p);
         }
         // Grids (every square cocircular), shuffled, with duplicates.
         let mut r = lcg(5);
-        for k in [2usize, 3, 7, 40] {
+        for k in [2usize, 3, 7, 40, 150] {
             let mut p: Vec<Point2> = (0..k * k)
                 .map(|i| Point2::new((i % k) as f64, (i / k) as f64))
                 .collect();
