@@ -34,6 +34,10 @@
 //! | uniform 1e6 | 1044.9 | 1723.3 | 1094.7 | 1212.9 | 1.65 | 1.65 | 2.66 |
 //! | grid 1000² | 592.1 | 1527.3 | 1387.7 | 746.5 | 2.58 | 2.61 | 3.66 |
 //!
+//! Quiet (load ≈ 1, after all the session's changes; 3 rounds): uniform 1e5 49.6 / 89.5 /
+//! 45.7 / 41.0 ms, ratio 1.21, book/def 1.80; uniform 1e6 583.5 / 1048.3 / 600.6 / 777.7,
+//! ratio 0.97 (median 0.83), book/def 1.80; grid 321.9 / 916.4 / 773.0 / 396.7, ratio 0.81
+//! (median 0.70), book/def 2.85; CDT 205.3 ms vs spade 272.4 (0.75, median 0.71).
 //! (A second run at load 8: 1.97 / 1.61, 1.70 / 1.56, 2.84 / 2.88.) Callgrind, 1e5 points:
 //! book uniform 870 M → 694 M instructions, grid 682 M → 473 M (default 343 M / 257 M). The
 //! book still executes twice the default's instructions and runs at a lower rate: the

@@ -48,6 +48,13 @@
 //! 5862 M → 1090 M (default 501 M). A 300² grid of step 0.5 (dyadic, not integer; now on
 //! the same exact integer path by scaling): 5.05× the default before that change, 0.78×
 //! after (load 2.8, `fortune_profile halfgrid 300`).
+//!
+//! Quiet (load ≈ 1, four runs after all the session's changes; ranges over runs, the last
+//! run's median of 5 alternating rounds in brackets): Fortune / default diagram 1.63–2.25
+//! (1.41) at 1e5, 1.14–1.33 (1.21) at 1e6, 0.98–1.22 (0.97) on the grid; cells+clip /
+//! voronoice 0.87–1.04 (1.01), 0.99–1.06 (1.00), 0.80–1.24 (1.01): at parity. `clip` is
+//! ~200 ms of it at 1e6 on two threads (~390 ms on one), a third of that in malloc/free of
+//! the per-cell vectors; visiting cells in spatial order and scattering was slower.
 
 use crate::util::{best_of, ms, Rng};
 use compgeom::voronoi::{
