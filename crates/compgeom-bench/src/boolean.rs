@@ -207,22 +207,7 @@ pub fn run(quick: bool) -> Result<(), String> {
     }
     // Union of many squares.
     let count = if quick { 1_000 } else { 10_000 };
-    let squares = MultiPolygon(
-        (0..count)
-            .map(|_| {
-                let (x, y, w) = (rng.unit(), rng.unit(), 0.005 + 0.02 * rng.unit());
-                Polygon::new(
-                    vec![
-                        Point2::new(x, y),
-                        Point2::new(x + w, y),
-                        Point2::new(x + w, y + w),
-                        Point2::new(x, y + w),
-                    ],
-                    vec![],
-                )
-            })
-            .collect(),
-    );
+    let squares = random_squares(&mut rng, count);
     let ps = io_paths(&squares);
     let empty: Vec<Vec<[f64; 2]>> = Vec::new();
     let gs: Vec<geo::Polygon<f64>> = geo_poly(&squares).0;
@@ -262,22 +247,7 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         .unwrap_or(100_000);
     let squares = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "squares");
     if squares {
-        let sq = MultiPolygon(
-            (0..n)
-                .map(|_| {
-                    let (x, y, w) = (rng.unit(), rng.unit(), 0.005 + 0.02 * rng.unit());
-                    Polygon::new(
-                        vec![
-                            Point2::new(x, y),
-                            Point2::new(x + w, y),
-                            Point2::new(x + w, y + w),
-                            Point2::new(x, y + w),
-                        ],
-                        vec![],
-                    )
-                })
-                .collect(),
-        );
+        let sq = random_squares(rng, n);
         let ps = io_paths(&sq);
         let empty: Vec<Vec<[f64; 2]>> = Vec::new();
         let gs: Vec<geo::Polygon<f64>> = geo_poly(&sq).0;
@@ -312,4 +282,25 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// `count` axis-parallel squares with random corners in the unit square and sides
+/// 0.005..0.025 (so they overlap in chains).
+fn random_squares(rng: &mut Rng, count: usize) -> MultiPolygon {
+    MultiPolygon(
+        (0..count)
+            .map(|_| {
+                let (x, y, w) = (rng.unit(), rng.unit(), 0.005 + 0.02 * rng.unit());
+                Polygon::new(
+                    vec![
+                        Point2::new(x, y),
+                        Point2::new(x + w, y),
+                        Point2::new(x + w, y + w),
+                        Point2::new(x, y + w),
+                    ],
+                    vec![],
+                )
+            })
+            .collect(),
+    )
 }
