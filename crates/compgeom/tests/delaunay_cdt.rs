@@ -473,3 +473,22 @@ mod degenerate {
         }
     }
 }
+
+/// A case the grid proptest below found (seeded at random, so it shows up in some runs
+/// only): the second constraint crosses the first at a point that is not representable;
+/// after the split at the rounded crossing, the walk from that Steiner point on to (3, 0)
+/// is blocked by the first constraint's edge (1,0)–(3,3) again, and again, until the
+/// crossing budget runs out ("too many crossings split"). A known open bug of
+/// `Constrained::insert_segment`, not fixed yet: run with `--ignored` to see it.
+#[test]
+#[ignore = "known bug: repeated split at a rounded crossing (see the doc comment)"]
+fn crossing_constraints_near_grid_points() {
+    let pts: Vec<Point2> = [(0, 0), (0, 2), (3, 0), (3, 3), (1, 0), (1, 3)]
+        .into_iter()
+        .map(|(x, y)| Point2::new(x as f64, y as f64))
+        .collect();
+    let segs = vec![Segment2::new(pts[4], pts[3]), Segment2::new(pts[1], pts[2])];
+    let cdt = constrained_delaunay(&pts, &segs).unwrap();
+    assert!(verify_cdt(&cdt).is_ok(), "{:?}", verify_cdt(&cdt));
+    assert_covered(&pts, &segs, &cdt);
+}
