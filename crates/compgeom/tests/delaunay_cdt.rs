@@ -474,14 +474,11 @@ mod degenerate {
     }
 }
 
-/// A case the grid proptest below found (seeded at random, so it shows up in some runs
-/// only): the second constraint crosses the first at a point that is not representable;
-/// after the split at the rounded crossing, the walk from that Steiner point on to (3, 0)
-/// is blocked by the first constraint's edge (1,0)–(3,3) again, and again, until the
-/// crossing budget runs out ("too many crossings split"). A known open bug of
-/// `Constrained::insert_segment`, not fixed yet: run with `--ignored` to see it.
+/// A case the grid proptest below found: on an integer-grid mesh the rounded crossing of
+/// the two constraints (a Steiner point off the grid) was located with the grid-only
+/// predicates, which are not exact there; it landed beside the edge it lies on, and the
+/// split at it repeated until the crossing budget ran out ("too many crossings split").
 #[test]
-#[ignore = "known bug: repeated split at a rounded crossing (see the doc comment)"]
 fn crossing_constraints_near_grid_points() {
     let pts: Vec<Point2> = [(0, 0), (0, 2), (3, 0), (3, 3), (1, 0), (1, 3)]
         .into_iter()

@@ -166,10 +166,13 @@ impl<'a> Mesh<'a> {
     }
 
     /// [`Mesh::locate`] for any triangulation (e.g. constrained, where the visibility walk
-    /// may cycle): the walk for at most a bounded number of steps, then an exhaustive scan.
+    /// may cycle) and any query point: the walk for at most a bounded number of steps, then
+    /// an exhaustive scan. The walk uses the filtered predicates even on a grid mesh: `p`
+    /// may be a Steiner point off the grid (a rounded constraint crossing), for which the
+    /// unfiltered grid predicates are not exact.
     pub(crate) fn locate_any(&self, p: Point2) -> Found {
         let steps = 64 + 4 * u64::from(self.slots());
-        if let Some(f) = self.walk(p, steps) {
+        if let Some(f) = self.walk_with::<false>(p, steps) {
             return f;
         }
         for t in 0..self.slots() {
