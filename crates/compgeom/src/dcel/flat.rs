@@ -37,7 +37,7 @@ use std::collections::{BTreeSet, HashMap};
 /// by `sources[src_start[i]..src_start[i + 1]]` (ascending segment index; `forward` is
 /// relative to the edge's direction). Segment indices refer to the caller's list
 /// (zero-length segments are skipped and carry nothing).
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub(crate) struct Flat {
     pub vertices: Vec<ExactPoint>,
     pub edges: Vec<[u32; 2]>,
@@ -643,6 +643,17 @@ mod tests {
         })
     }
 
+    /// [`Flat::noded`] by each candidate path; all must give the same arrangement,
+    /// numbered alike.
+    fn noded_all(segs: &[Segment2]) -> Result<Flat, TestCaseError> {
+        use crate::dcel::noding::Candidates;
+        let auto = Flat::noded(segs).unwrap();
+        for how in [Candidates::Sweep, Candidates::Grid] {
+            prop_assert_eq!(&Flat::noded_by(segs, how).unwrap(), &auto, "{:?}", how);
+        }
+        Ok(auto)
+    }
+
     fn check(segs: &[Segment2], f: &Flat) -> Result<(), TestCaseError> {
         // Sources ascending, every vertex used, edges non-degenerate.
         for i in 0..f.edge_count() {
@@ -693,7 +704,7 @@ mod tests {
             let segs: Vec<Segment2> = v.into_iter().map(seg).collect();
             let general = Flat::general(&segs).unwrap();
             check(&segs, &general)?;
-            let noded = Flat::noded(&segs).unwrap();
+            let noded = noded_all(&segs)?;
             check(&segs, &noded)?;
             prop_assert_eq!(canonical(&noded), canonical(&general));
         }
@@ -716,7 +727,7 @@ mod tests {
             for &(x, y) in &spokes {
                 segs.push(seg((x, y, 4 - x, 4 - y)));
             }
-            let noded = Flat::noded(&segs).unwrap();
+            let noded = noded_all(&segs)?;
             check(&segs, &noded)?;
             prop_assert_eq!(canonical(&noded), canonical(&Flat::general(&segs).unwrap()));
         }
@@ -738,7 +749,7 @@ mod tests {
                 let r = Point2::new(m.x - d.0 * scale, f64::from_bits((m.y - d.1 * scale).to_bits() ^ 1));
                 segs.push(Segment2::new(q, r));
             }
-            let noded = Flat::noded(&segs).unwrap();
+            let noded = noded_all(&segs)?;
             check(&segs, &noded)?;
             prop_assert_eq!(canonical(&noded), canonical(&Flat::general(&segs).unwrap()));
         }
@@ -758,7 +769,7 @@ mod tests {
                 segs.push(Segment2::new(s.b, s.a));
             }
             check(&segs, &Flat::general(&segs).unwrap())?;
-            check(&segs, &Flat::noded(&segs).unwrap())?;
+            check(&segs, &noded_all(&segs)?)?;
         }
     }
 }

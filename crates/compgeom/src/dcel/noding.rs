@@ -37,7 +37,8 @@ use super::flat::{Flat, Pieces};
 use super::holes::{compare_xy_filtered, Rounded};
 use crate::intersect::{prefer_pairwise, round_crossing, PARALLEL_SCAN_FROM};
 use crate::kernel::{
-    compare_xy, orient2d, Crossing, ExactPoint, Orientation, Point2, Segment2, SegmentIntersection,
+    compare_xy, orient2d, orient_static, quick_crossing_static, static_orient_bound, Crossing,
+    ExactPoint, Orientation, Point2, Segment2, SegmentIntersection,
 };
 use crate::Result;
 use rayon::prelude::*;
@@ -72,10 +73,15 @@ struct Found {
 }
 
 impl Found {
-    /// Test segments `i < j` exactly and record the cuts and equal ends they give.
-    fn test(&mut self, segs: &[Segment2], i: usize, j: usize) {
-        let (s, t) = (segs[i], segs[j]);
-        let (i32_, j32) = (i as u32, j as u32);
+    /// Test segments `s` = number `i` < `j` = `t` exactly and record the cuts and equal
+    /// ends they give. `bound` is the [`static_orient_bound`] of the input.
+    fn test(&mut self, s: Segment2, t: Segment2, i: u32, j: u32, bound: f64) {
+        let (i32_, j32) = (i, j);
+        // Consecutive ring edges (the common pair): joined at s.b = t.a without a record,
+        // and meeting only there unless collinear (then s.a ≠ t.b too).
+        if j == i + 1 && s.b == t.a && orient_static(s.a, s.b, t.b, bound) != 0 {
+            return;
+        }
         let mut shared = None;
         for (x, p, far_s) in [(0, s.a, s.b), (1, s.b, s.a)] {
             for (y, q, far_t) in [(0, t.a, t.b), (1, t.b, t.a)] {
@@ -89,9 +95,27 @@ impl Found {
             }
         }
         if let Some((p, far_s, far_t)) = shared {
-            // Not collinear: the lines meet only at p, an end of both.
-            if orient2d(p, far_s, far_t) != Orientation::Collinear {
+            // Not collinear: the lines meet only at p, an end of both (the static filter
+            // first: it decides the sign wherever it is not 0).
+            if orient_static(p, far_s, far_t, bound) != 0
+                || orient2d(p, far_s, far_t) != Orientation::Collinear
+            {
                 return;
+            }
+        } else {
+            // Most pairs are decided by four filtered orientations.
+            match quick_crossing_static(s, t, bound) {
+                Some(false) => return,
+                Some(true) => {
+                    return self.contacts.push(Contact {
+                        point: round_crossing(&Crossing { s, t }),
+                        a: i32_,
+                        b: j32,
+                        crossing: true,
+                        end: NONE,
+                    })
+                }
+                None => {}
             }
         }
         match crate::kernel::segment_intersection(s, t) {
@@ -150,11 +174,134 @@ impl Found {
     }
 }
 
+/// The x-interval sweep keeps at most this many x-overlapping pairs per segment (plus a
+/// constant); beyond that the grid, which also separates boxes in y, is cheaper.
+const SWEEP_PAIRS_PER_SEGMENT: usize = 24;
+
+/// From this many segments on, the pair tests run on the rayon pool.
+const PARALLEL_SWEEP_FROM: usize = 16_384;
+
+/// The segments in x-sweep order: by the bucket of the left end of their boxes (ties by
+/// index), buckets of equal width over the x-extent. The bucket of `x` is a monotone
+/// (non-decreasing) function of `x`, so entry `p` is a candidate against the entries
+/// `p + 1..stop[p]`, the later ones whose left bucket is at most the bucket of its right
+/// end: every pair whose boxes overlap is one of these (the entries between the earlier
+/// one of a pair and the later have buckets between theirs), and each is listed once.
+struct XSweep {
+    /// `[min x, max x, min y, max y]`, in sweep order.
+    boxes: Vec<[f64; 4]>,
+    segs: Vec<Segment2>,
+    ids: Vec<u32>,
+    stop: Vec<u32>,
+}
+
+impl XSweep {
+    /// The sweep order, or `None` when it would look at more than `budget` pairs (long
+    /// segments, or many separated in y only) or the x-extent is zero or overflows.
+    /// O(n + pairs looked at).
+    fn new(sub: &[Segment2], budget: usize) -> Option<XSweep> {
+        let n = sub.len();
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for s in sub {
+            lo = lo.min(s.a.x).min(s.b.x);
+            hi = hi.max(s.a.x).max(s.b.x);
+        }
+        let size = hi - lo;
+        if !(size.is_finite() && size > 0.0) {
+            return None;
+        }
+        // About one bucket per segment. `as usize` saturates; the min keeps `hi` in range.
+        let buckets = n.max(1);
+        let inv = buckets as f64 / size;
+        let bucket = |x: f64| (((x - lo) * inv) as usize).min(buckets - 1) as u32;
+        // Counting sort by left bucket, index order within a bucket.
+        let left_of: Vec<u32> = sub.iter().map(|s| bucket(s.a.x.min(s.b.x))).collect();
+        let mut start = vec![0u32; buckets + 1];
+        for &b in &left_of {
+            start[b as usize + 1] += 1;
+        }
+        for k in 0..buckets {
+            start[k + 1] += start[k];
+        }
+        let mut ids = vec![0u32; n];
+        for (i, &b) in left_of.iter().enumerate() {
+            ids[start[b as usize] as usize] = i as u32;
+            start[b as usize] += 1;
+        }
+        drop(start);
+        let left: Vec<u32> = ids.iter().map(|&i| left_of[i as usize]).collect();
+        drop(left_of);
+        let segs: Vec<Segment2> = ids.iter().map(|&i| sub[i as usize]).collect();
+        let boxes: Vec<[f64; 4]> = segs
+            .iter()
+            .map(|s| {
+                [
+                    s.a.x.min(s.b.x),
+                    s.a.x.max(s.b.x),
+                    s.a.y.min(s.b.y),
+                    s.a.y.max(s.b.y),
+                ]
+            })
+            .collect();
+        let mut looked = 0usize;
+        let mut stop = Vec::with_capacity(n);
+        for (p, b) in boxes.iter().enumerate() {
+            let right = bucket(b[1]);
+            let q = p + 1 + left[p + 1..].iter().take_while(|&&l| l <= right).count();
+            looked += q - p - 1;
+            if looked > budget {
+                return None;
+            }
+            stop.push(q as u32);
+        }
+        Some(XSweep {
+            boxes,
+            segs,
+            ids,
+            stop,
+        })
+    }
+
+    /// Test the candidates of entry `p` whose boxes overlap its own.
+    #[inline]
+    fn scan(&self, p: usize, found: &mut Found, bound: f64) {
+        let (a, s, i) = (self.boxes[p], self.segs[p], self.ids[p]);
+        for q in p + 1..self.stop[p] as usize {
+            let b = &self.boxes[q];
+            if b[0] > a[1] || a[0] > b[1] || b[2] > a[3] || a[2] > b[3] {
+                continue;
+            }
+            let (t, j) = (self.segs[q], self.ids[q]);
+            if i < j {
+                found.test(s, t, i, j, bound);
+            } else {
+                found.test(t, s, j, i, bound);
+            }
+        }
+    }
+}
+
+/// Which candidate pairs [`Flat::noded_by`] tests (tests force each path).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Candidates {
+    /// The x-interval sweep unless it would look at too many pairs, else the grid.
+    Auto,
+    /// The x-interval sweep whatever it costs (the grid for a zero x-extent).
+    Sweep,
+    /// The grid (the intersection sweep when the grid would test too many pairs).
+    Grid,
+}
+
 impl Flat {
     /// The arrangement of `segments` (finite, checked by the caller) by the lean noding
-    /// of the module docs; the sweep path ([`Flat::general`]) where the grid would test
-    /// too many pairs.
+    /// of the module docs.
     pub(crate) fn noded(segments: &[Segment2]) -> Result<Flat> {
+        Flat::noded_by(segments, Candidates::Auto)
+    }
+
+    /// [`Flat::noded`] with the candidate pairs from `how`; every choice gives the same
+    /// arrangement, numbered alike.
+    pub(crate) fn noded_by(segments: &[Segment2], how: Candidates) -> Result<Flat> {
         let kept: Vec<usize> = (0..segments.len())
             .filter(|&i| !segments[i].is_degenerate())
             .collect();
@@ -163,26 +310,59 @@ impl Flat {
             return Flat::general(segments);
         }
         let sub: Vec<Segment2> = kept.iter().map(|&i| segments[i]).collect();
-        let Some(grid) = prefer_pairwise(&sub) else {
-            return Flat::general(segments);
+        let m = sub.iter().fold(0.0f64, |m, s| {
+            m.max(s.a.x.abs())
+                .max(s.a.y.abs())
+                .max(s.b.x.abs())
+                .max(s.b.y.abs())
+        });
+        let bound = static_orient_bound(m);
+        let sweep = match how {
+            Candidates::Auto => XSweep::new(&sub, SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024),
+            Candidates::Sweep => XSweep::new(&sub, usize::MAX),
+            Candidates::Grid => None,
         };
-        let entries = grid.entry_count();
-        let found = if grid.candidates() < PARALLEL_SCAN_FROM {
-            let mut f = Found::default();
-            for k in 0..entries {
-                grid.scan_from(k, |i, j| f.test(&sub, i, j));
+        let found = if let Some(sweep) = sweep {
+            if sub.len() < PARALLEL_SWEEP_FROM {
+                let mut f = Found::default();
+                for p in 0..sub.len() {
+                    sweep.scan(p, &mut f, bound);
+                }
+                f
+            } else {
+                (0..sub.len())
+                    .into_par_iter()
+                    .with_min_len(1024)
+                    .fold(Found::default, |mut f, p| {
+                        sweep.scan(p, &mut f, bound);
+                        f
+                    })
+                    .reduce(Found::default, Found::merge)
             }
-            f
         } else {
-            (0..entries)
-                .into_par_iter()
-                .fold(Found::default, |mut f, k| {
-                    grid.scan_from(k, |i, j| f.test(&sub, i, j));
-                    f
-                })
-                .reduce(Found::default, Found::merge)
+            let Some(grid) = prefer_pairwise(&sub) else {
+                return Flat::general(segments);
+            };
+            let test = |f: &mut Found, i: usize, j: usize| {
+                f.test(sub[i], sub[j], i as u32, j as u32, bound)
+            };
+            let entries = grid.entry_count();
+            if grid.candidates() < PARALLEL_SCAN_FROM {
+                let mut f = Found::default();
+                for k in 0..entries {
+                    grid.scan_from(k, |i, j| test(&mut f, i, j));
+                }
+                f
+            } else {
+                (0..entries)
+                    .into_par_iter()
+                    .fold(Found::default, |mut f, k| {
+                        grid.scan_from(k, |i, j| test(&mut f, i, j));
+                        f
+                    })
+                    .reduce(Found::default, Found::merge)
+            }
         };
-        drop(grid);
         if found.contacts.len() >= (1 << 31) - 2 * sub.len() {
             return Flat::general(segments);
         }
@@ -384,4 +564,86 @@ fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
         }
     }
     pieces.finish(vertices)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dcel::flat::canonical;
+
+    /// A closed ring of `n` vertices at sorted pseudo-random angles around `(cx, 0)`, radius
+    /// `0.8 + 0.15 sin 5θ` plus noise of the order of the spacing (the bench's stars), its
+    /// coordinates rounded to multiples of `1 / 2^grid` (coarse grids: repeated vertices,
+    /// collinear runs, edges shared between the two rings).
+    fn star(n: usize, cx: f64, seed: u64, grid: i32) -> Vec<Segment2> {
+        let mut state = seed;
+        let mut unit = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut angles: Vec<f64> = (0..n).map(|_| std::f64::consts::TAU * unit()).collect();
+        angles.sort_by(f64::total_cmp);
+        let snap = |v: f64| (v * 2f64.powi(grid)).round() / 2f64.powi(grid);
+        let pts: Vec<Point2> = angles
+            .iter()
+            .map(|&a| {
+                let r = 0.8 + 0.15 * (5.0 * a).sin() + 2.0 / n as f64 * unit();
+                Point2::new(snap(cx + r * a.cos()), snap(r * a.sin()))
+            })
+            .collect();
+        (0..n)
+            .map(|k| Segment2::new(pts[k], pts[(k + 1) % n]))
+            .collect()
+    }
+
+    /// Above [`PARALLEL_SWEEP_FROM`] segments the sweep's pairs are tested on the rayon
+    /// pool: the arrangement is the grid path's, numbered alike, and the intersection
+    /// sweep's; on floats and on grids coarse enough for shared edges and overlaps.
+    #[test]
+    fn parallel_sweep_agrees_with_the_grid_and_the_sweep() {
+        for grid in [60, 9] {
+            let mut segs = star(9000, 0.0, 7, grid);
+            segs.extend(star(9000, 0.3, 8, grid));
+            // A copy of part of the first ring, reversed: collinear overlaps everywhere.
+            let copy: Vec<Segment2> = segs[..500]
+                .iter()
+                .map(|s| Segment2::new(s.b, s.a))
+                .collect();
+            segs.extend(copy);
+            assert!(segs.len() >= PARALLEL_SWEEP_FROM);
+            let sweep = Flat::noded_by(&segs, Candidates::Sweep).unwrap();
+            assert_eq!(sweep, Flat::noded_by(&segs, Candidates::Grid).unwrap());
+            assert_eq!(sweep, Flat::noded(&segs).unwrap());
+            assert_eq!(canonical(&sweep), canonical(&Flat::general(&segs).unwrap()));
+        }
+    }
+
+    /// Long segments spanning the x-extent make the sweep look at Θ(n²) pairs: the budget
+    /// sends them to the grid, with the same answer.
+    #[test]
+    fn long_segments_leave_the_sweep() {
+        let segs: Vec<Segment2> = (0..400)
+            .map(|i| {
+                let y = (i * 7919 % 401) as f64 / 401.0;
+                Segment2::new(Point2::new(0.0, y), Point2::new(1.0, 1.0 - y))
+            })
+            .collect();
+        let budget = SWEEP_PAIRS_PER_SEGMENT * segs.len() + 1024;
+        assert!(XSweep::new(&segs, budget).is_none());
+        assert!(XSweep::new(&segs, usize::MAX).is_some());
+        let auto = Flat::noded(&segs).unwrap();
+        assert_eq!(auto, Flat::noded_by(&segs, Candidates::Sweep).unwrap());
+        assert_eq!(canonical(&auto), canonical(&Flat::general(&segs).unwrap()));
+        // All on one vertical line (zero x-extent): no sweep, the same arrangement.
+        let column: Vec<Segment2> = (0..50)
+            .map(|i| Segment2::new(Point2::new(2.0, i as f64), Point2::new(2.0, i as f64 + 1.5)))
+            .collect();
+        assert!(XSweep::new(&column, usize::MAX).is_none());
+        assert_eq!(
+            canonical(&Flat::noded(&column).unwrap()),
+            canonical(&Flat::general(&column).unwrap())
+        );
+    }
 }

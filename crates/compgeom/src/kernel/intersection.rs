@@ -131,7 +131,7 @@ pub(crate) fn static_orient_bound(m: f64) -> f64 {
 
 /// The orientation sign when `|det| > bound` (the same `det` as [`orient_filtered`]).
 #[inline(always)]
-fn orient_static(a: Point2, b: Point2, c: Point2, bound: f64) -> i8 {
+pub(crate) fn orient_static(a: Point2, b: Point2, c: Point2, bound: f64) -> i8 {
     let det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     if det > bound {
         1

@@ -29,7 +29,7 @@ pub use crossing::{
 };
 #[doc(hidden)]
 pub use filter::{crossing_fallbacks, predicate_fallbacks};
-pub(crate) use intersection::{quick_crossing_static, static_orient_bound};
+pub(crate) use intersection::{orient_static, quick_crossing_static, static_orient_bound};
 pub use intersection::{segment_intersection, SegmentIntersection};
 pub use predicates::{
     compare_xy, compare_xyz, incircle, insphere, orient2d, orient3d, CircleSide, Orientation,
