@@ -84,11 +84,10 @@ impl Pieces {
 
     /// The flat arrangement; vertices are renumbered in order of first use by the edges
     /// (edges follow the input segments, so boundary walks then touch nearby records).
-    pub(super) fn finish(self, vertices: Vec<ExactPoint>) -> Flat {
-        let Pieces { mut edges, pairs } = self;
+    pub(super) fn finish(mut self, vertices: Vec<ExactPoint>) -> Flat {
         let mut new_v = vec![u32::MAX; vertices.len()];
         let mut renumbered: Vec<ExactPoint> = Vec::with_capacity(vertices.len());
-        for e in &mut edges {
+        for e in &mut self.edges {
             for v in e.iter_mut() {
                 let slot = &mut new_v[*v as usize];
                 if *slot == u32::MAX {
@@ -104,7 +103,21 @@ impl Pieces {
                 renumbered.push(*p);
             }
         }
-        let vertices = renumbered;
+        self.finish_numbered(renumbered)
+    }
+
+    /// The flat arrangement, vertices already numbered in order of first use by the edges.
+    pub(super) fn finish_numbered(self, vertices: Vec<ExactPoint>) -> Flat {
+        let Pieces { edges, pairs } = self;
+        // One source per edge, in edge order (no overlaps): nothing to sort.
+        if pairs.len() == edges.len() && pairs.iter().enumerate().all(|(i, p)| p.0 == i as u32) {
+            return Flat {
+                vertices,
+                edges,
+                src_start: (0..=pairs.len() as u32).collect(),
+                sources: pairs.into_iter().map(|(_, s)| s).collect(),
+            };
+        }
         // Counting sort by edge, sources ascending by segment within an edge.
         let mut src_start = vec![0u32; edges.len() + 1];
         for (e, _) in &pairs {
@@ -648,6 +661,7 @@ mod tests {
     fn noded_all(segs: &[Segment2]) -> Result<Flat, TestCaseError> {
         use crate::dcel::noding::Candidates;
         let auto = Flat::noded(segs).unwrap();
+        crate::dcel::noding::tests::assemble_matches_the_old(segs);
         for how in [Candidates::Sweep, Candidates::Grid] {
             prop_assert_eq!(&Flat::noded_by(segs, how).unwrap(), &auto, "{:?}", how);
         }

@@ -63,7 +63,7 @@ struct Contact {
 }
 
 /// What the scanned pairs contribute.
-#[derive(Default)]
+#[derive(Clone, Default)]
 struct Found {
     contacts: Vec<Contact>,
     /// Pairs overlapping collinearly.
@@ -283,6 +283,7 @@ impl XSweep {
 
 /// Which candidate pairs [`Flat::noded_by`] tests (tests force each path).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(not(test), allow(dead_code))]
 pub(crate) enum Candidates {
     /// The x-interval sweep unless it would look at too many pairs, else the grid.
     Auto,
@@ -310,64 +311,68 @@ impl Flat {
             return Flat::general(segments);
         }
         let sub: Vec<Segment2> = kept.iter().map(|&i| segments[i]).collect();
-        let m = sub.iter().fold(0.0f64, |m, s| {
-            m.max(s.a.x.abs())
-                .max(s.a.y.abs())
-                .max(s.b.x.abs())
-                .max(s.b.y.abs())
-        });
-        let bound = static_orient_bound(m);
-        let sweep = match how {
-            Candidates::Auto => XSweep::new(&sub, SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024),
-            Candidates::Sweep => XSweep::new(&sub, usize::MAX),
-            Candidates::Grid => None,
-        };
-        let found = if let Some(sweep) = sweep {
-            if sub.len() < PARALLEL_SWEEP_FROM {
-                let mut f = Found::default();
-                for p in 0..sub.len() {
-                    sweep.scan(p, &mut f, bound);
-                }
-                f
-            } else {
-                (0..sub.len())
-                    .into_par_iter()
-                    .with_min_len(1024)
-                    .fold(Found::default, |mut f, p| {
-                        sweep.scan(p, &mut f, bound);
-                        f
-                    })
-                    .reduce(Found::default, Found::merge)
-            }
-        } else {
-            let Some(grid) = prefer_pairwise(&sub) else {
-                return Flat::general(segments);
-            };
-            let test = |f: &mut Found, i: usize, j: usize| {
-                f.test(sub[i], sub[j], i as u32, j as u32, bound)
-            };
-            let entries = grid.entry_count();
-            if grid.candidates() < PARALLEL_SCAN_FROM {
-                let mut f = Found::default();
-                for k in 0..entries {
-                    grid.scan_from(k, |i, j| test(&mut f, i, j));
-                }
-                f
-            } else {
-                (0..entries)
-                    .into_par_iter()
-                    .fold(Found::default, |mut f, k| {
-                        grid.scan_from(k, |i, j| test(&mut f, i, j));
-                        f
-                    })
-                    .reduce(Found::default, Found::merge)
-            }
-        };
-        if found.contacts.len() >= (1 << 31) - 2 * sub.len() {
-            return Flat::general(segments);
+        match found_by(&sub, how) {
+            Some(found) => Ok(assemble(&sub, &kept, found)),
+            None => Flat::general(segments),
         }
-        Ok(assemble(&sub, &kept, found))
     }
+}
+
+/// The contacts, overlaps and equal ends of the pairs of `sub` (at most 2^29 segments)
+/// from the candidates of `how`; `None` when the grid would test too many pairs or the
+/// item ids would not fit in `u32` (the intersection sweep then does it all).
+fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
+    let m = sub.iter().fold(0.0f64, |m, s| {
+        m.max(s.a.x.abs())
+            .max(s.a.y.abs())
+            .max(s.b.x.abs())
+            .max(s.b.y.abs())
+    });
+    let bound = static_orient_bound(m);
+    let sweep = match how {
+        Candidates::Auto => XSweep::new(sub, SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024),
+        Candidates::Sweep => XSweep::new(sub, usize::MAX),
+        Candidates::Grid => None,
+    };
+    let found = if let Some(sweep) = sweep {
+        if sub.len() < PARALLEL_SWEEP_FROM {
+            let mut f = Found::default();
+            for p in 0..sub.len() {
+                sweep.scan(p, &mut f, bound);
+            }
+            f
+        } else {
+            (0..sub.len())
+                .into_par_iter()
+                .with_min_len(1024)
+                .fold(Found::default, |mut f, p| {
+                    sweep.scan(p, &mut f, bound);
+                    f
+                })
+                .reduce(Found::default, Found::merge)
+        }
+    } else {
+        let grid = prefer_pairwise(sub)?;
+        let test =
+            |f: &mut Found, i: usize, j: usize| f.test(sub[i], sub[j], i as u32, j as u32, bound);
+        let entries = grid.entry_count();
+        if grid.candidates() < PARALLEL_SCAN_FROM {
+            let mut f = Found::default();
+            for k in 0..entries {
+                grid.scan_from(k, |i, j| test(&mut f, i, j));
+            }
+            f
+        } else {
+            (0..entries)
+                .into_par_iter()
+                .fold(Found::default, |mut f, k| {
+                    grid.scan_from(k, |i, j| test(&mut f, i, j));
+                    f
+                })
+                .reduce(Found::default, Found::merge)
+        }
+    };
+    (found.contacts.len() < (1 << 31) - 2 * sub.len()).then_some(found)
 }
 
 fn find(parent: &mut [u32], mut x: u32) -> u32 {
@@ -390,7 +395,191 @@ fn union(parent: &mut [u32], a: u32, b: u32) {
 }
 
 /// Vertices, cuts and pieces from the scan's findings (steps 2 and 3 of the module docs).
+///
+/// Work over all segments is a few plain passes; everything that depends on the contacts
+/// (exact points, cut order, representatives) is O(K log K) for K contacts. Vertices are
+/// numbered in order of first use by the edges, as they are made.
 fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
+    let m = sub.len();
+    let contacts = &found.contacts;
+    let k_count = contacts.len();
+    let total = 2 * m + k_count;
+    // Items: 2k and 2k + 1 are the ends a and b of segment k; 2m + c is contact c. A
+    // union keeps the smaller id as the root, so a root is the smallest item of its class.
+    let mut parent: Vec<u32> = Vec::with_capacity(total);
+    for k in 0..m {
+        let joined = k > 0 && sub[k - 1].b == sub[k].a;
+        parent.push(if joined {
+            2 * k as u32 - 1
+        } else {
+            2 * k as u32
+        });
+        parent.push(2 * k as u32 + 1);
+    }
+    parent.extend(2 * m as u32..total as u32);
+    for &(x, y) in &found.same {
+        union(&mut parent, x, y);
+    }
+    for (c, contact) in contacts.iter().enumerate() {
+        if contact.end != NONE {
+            union(&mut parent, (2 * m + c) as u32, contact.end);
+        }
+    }
+    // The exact contact points.
+    let exact: Vec<ExactPoint> = contacts
+        .iter()
+        .map(|c| {
+            if c.crossing {
+                ExactPoint::Crossing(Crossing {
+                    s: sub[c.a as usize],
+                    t: sub[c.b as usize],
+                })
+            } else {
+                ExactPoint::Input(c.point)
+            }
+        })
+        .collect();
+    let rounded: Vec<Rounded> = exact
+        .iter()
+        .zip(contacts)
+        .map(|(e, c)| Rounded::of(e, c.point))
+        .collect();
+    // The cuts (segment << 32 | contact), grouped by segment.
+    let mut cuts: Vec<u64> = Vec::with_capacity(2 * k_count);
+    for (c, contact) in contacts.iter().enumerate() {
+        for s in [contact.a, contact.b] {
+            if s != NONE {
+                cuts.push(u64::from(s) << 32 | c as u64);
+            }
+        }
+    }
+    cuts.sort_unstable();
+    // Along each segment from a: lexicographic order, reversed when a is the larger end;
+    // equal neighbours are one point.
+    let mut from = 0;
+    while from < cuts.len() {
+        let k = (cuts[from] >> 32) as usize;
+        let to = from + cuts[from..].partition_point(|&u| (u >> 32) as usize == k);
+        let run = &mut cuts[from..to];
+        from = to;
+        if run.len() < 2 {
+            continue;
+        }
+        let s = sub[k];
+        let a_low = compare_xy(s.a, s.b) == Ordering::Less;
+        let cmp = |u: u64, v: u64| {
+            let (u, v) = (u as u32 as usize, v as u32 as usize);
+            compare_xy_filtered(&exact[u], &rounded[u], &exact[v], &rounded[v])
+        };
+        run.sort_unstable_by(|&u, &v| if a_low { cmp(u, v) } else { cmp(v, u) });
+        for w in 1..run.len() {
+            if cmp(run[w - 1], run[w]) == Ordering::Equal {
+                union(
+                    &mut parent,
+                    (2 * m) as u32 + run[w - 1] as u32,
+                    (2 * m) as u32 + run[w] as u32,
+                );
+            }
+        }
+    }
+    // The representative of each class: an input point where the class has one (its
+    // root, when an end: ends come first in id order), else the first contact that is an
+    // input point, else the crossing of the smallest pair. Only classes of contacts alone
+    // need a look at their members.
+    let is_crossing = |c: u32| contacts[c as usize].crossing;
+    let pair = |c: u32| (contacts[c as usize].a, contacts[c as usize].b);
+    let mut rep = vec![NONE; k_count];
+    for c in 0..k_count as u32 {
+        let r = find(&mut parent, 2 * m as u32 + c) as usize;
+        if r < 2 * m {
+            continue;
+        }
+        let slot = &mut rep[r - 2 * m];
+        if *slot == NONE || (is_crossing(*slot) && (!is_crossing(c) || pair(c) < pair(*slot))) {
+            *slot = c;
+        }
+    }
+    let point_of = |r: usize| {
+        if r < 2 * m {
+            ExactPoint::Input(if r % 2 == 0 {
+                sub[r / 2].a
+            } else {
+                sub[r / 2].b
+            })
+        } else {
+            exact[rep[r - 2 * m] as usize]
+        }
+    };
+    let mut shared = vec![false; m];
+    for &(i, j) in &found.overlapping {
+        shared[i as usize] = true;
+        shared[j as usize] = true;
+    }
+    // The pieces, segment by segment; a class gets its vertex at its first use.
+    let mut vertex_of = vec![NONE; total];
+    let mut vertices: Vec<ExactPoint> = Vec::with_capacity(m + k_count);
+    let mut vertex = |item: u32, parent: &mut [u32]| {
+        let r = find(parent, item) as usize;
+        if vertex_of[r] == NONE {
+            vertex_of[r] = vertices.len() as u32;
+            vertices.push(point_of(r));
+        }
+        vertex_of[r]
+    };
+    let mut merged: HashMap<(u32, u32), u32> = HashMap::new();
+    let mut pieces = Pieces {
+        edges: Vec::with_capacity(m + cuts.len()),
+        pairs: Vec::with_capacity(m + cuts.len()),
+    };
+    let mut chain: Vec<u32> = Vec::new();
+    let mut next_cut = 0;
+    for k in 0..m {
+        chain.clear();
+        chain.push(vertex(2 * k as u32, &mut parent));
+        while next_cut < cuts.len() && (cuts[next_cut] >> 32) as usize == k {
+            // The same point may cut a segment for several pairs.
+            let v = vertex((2 * m) as u32 + cuts[next_cut] as u32, &mut parent);
+            next_cut += 1;
+            if chain.last() != Some(&v) {
+                chain.push(v);
+            }
+        }
+        chain.push(vertex(2 * k as u32 + 1, &mut parent));
+        for w in chain.windows(2) {
+            let (u, v) = (w[0], w[1]);
+            if !shared[k] {
+                pieces.pairs.push((
+                    pieces.edges.len() as u32,
+                    Source {
+                        segment: kept[k],
+                        forward: true,
+                    },
+                ));
+                pieces.edges.push([u, v]);
+                continue;
+            }
+            let e = *merged.entry((u.min(v), u.max(v))).or_insert_with(|| {
+                pieces.edges.push([u, v]);
+                pieces.edges.len() as u32 - 1
+            });
+            let forward = pieces.edges[e as usize][0] == u;
+            pieces.pairs.push((
+                e,
+                Source {
+                    segment: kept[k],
+                    forward,
+                },
+            ));
+        }
+    }
+    drop(vertex);
+    pieces.finish_numbered(vertices)
+}
+
+/// The previous assembly (reference for the tests).
+#[cfg(test)]
+/// Vertices, cuts and pieces from the scan's findings (steps 2 and 3 of the module docs).
+fn assemble_old(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
     let m = sub.len();
     let contacts = &found.contacts;
     let total = 2 * m + contacts.len();
@@ -567,7 +756,7 @@ fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::dcel::flat::canonical;
 
@@ -598,6 +787,24 @@ mod tests {
             .collect()
     }
 
+    /// The assembly against the previous one (which numbered vertices by class, then
+    /// renumbered them by first use), on the findings of every candidate path.
+    pub(crate) fn assemble_matches_the_old(segs: &[Segment2]) {
+        let kept: Vec<usize> = (0..segs.len())
+            .filter(|&i| !segs[i].is_degenerate())
+            .collect();
+        let sub: Vec<Segment2> = kept.iter().map(|&i| segs[i]).collect();
+        for how in [Candidates::Sweep, Candidates::Grid] {
+            if let Some(found) = found_by(&sub, how) {
+                assert_eq!(
+                    assemble(&sub, &kept, found.clone()),
+                    assemble_old(&sub, &kept, found),
+                    "{how:?}"
+                );
+            }
+        }
+    }
+
     /// Above [`PARALLEL_SWEEP_FROM`] segments the sweep's pairs are tested on the rayon
     /// pool: the arrangement is the grid path's, numbered alike, and the intersection
     /// sweep's; on floats and on grids coarse enough for shared edges and overlaps.
@@ -617,6 +824,7 @@ mod tests {
             assert_eq!(sweep, Flat::noded_by(&segs, Candidates::Grid).unwrap());
             assert_eq!(sweep, Flat::noded(&segs).unwrap());
             assert_eq!(canonical(&sweep), canonical(&Flat::general(&segs).unwrap()));
+            assemble_matches_the_old(&segs);
         }
     }
 
