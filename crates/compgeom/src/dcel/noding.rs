@@ -195,27 +195,63 @@ struct XSweep {
     stop: Vec<u32>,
 }
 
+/// The smaller of two finite values (a plain compare: no NaN to care for).
+#[inline(always)]
+fn min2(a: f64, b: f64) -> f64 {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
+/// The larger of two finite values.
+#[inline(always)]
+fn max2(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
+/// `map` over `items` in order, on the rayon pool when `parallel`.
+fn map_vec<T: Sync, U: Send>(
+    items: &[T],
+    parallel: bool,
+    f: impl Fn(&T) -> U + Sync + Send,
+) -> Vec<U> {
+    if parallel {
+        items.par_iter().map(f).collect()
+    } else {
+        items.iter().map(f).collect()
+    }
+}
+
 impl XSweep {
-    /// The sweep order, or `None` when it would look at more than `budget` pairs (long
+    /// The sweep order of the segments `sub` with bounding boxes `boxes` and x-extent
+    /// `lo..=hi`, or `None` when it would look at more than `budget` pairs (long
     /// segments, or many separated in y only) or the x-extent is zero or overflows.
     /// O(n + pairs looked at).
-    fn new(sub: &[Segment2], budget: usize) -> Option<XSweep> {
+    fn new(
+        sub: &[Segment2],
+        boxes: &[[f64; 4]],
+        lo: f64,
+        hi: f64,
+        budget: usize,
+    ) -> Option<XSweep> {
         let n = sub.len();
-        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for s in sub {
-            lo = lo.min(s.a.x).min(s.b.x);
-            hi = hi.max(s.a.x).max(s.b.x);
-        }
         let size = hi - lo;
         if !(size.is_finite() && size > 0.0) {
             return None;
         }
+        let parallel = n >= PARALLEL_SWEEP_FROM;
         // About one bucket per segment. `as usize` saturates; the min keeps `hi` in range.
         let buckets = n.max(1);
         let inv = buckets as f64 / size;
         let bucket = |x: f64| (((x - lo) * inv) as usize).min(buckets - 1) as u32;
         // Counting sort by left bucket, index order within a bucket.
-        let left_of: Vec<u32> = sub.iter().map(|s| bucket(s.a.x.min(s.b.x))).collect();
+        let left_of: Vec<u32> = map_vec(boxes, parallel, |b| bucket(b[0]));
         let mut start = vec![0u32; buckets + 1];
         for &b in &left_of {
             start[b as usize + 1] += 1;
@@ -229,20 +265,10 @@ impl XSweep {
             start[b as usize] += 1;
         }
         drop(start);
-        let left: Vec<u32> = ids.iter().map(|&i| left_of[i as usize]).collect();
+        let left: Vec<u32> = map_vec(&ids, parallel, |&i| left_of[i as usize]);
         drop(left_of);
-        let segs: Vec<Segment2> = ids.iter().map(|&i| sub[i as usize]).collect();
-        let boxes: Vec<[f64; 4]> = segs
-            .iter()
-            .map(|s| {
-                [
-                    s.a.x.min(s.b.x),
-                    s.a.x.max(s.b.x),
-                    s.a.y.min(s.b.y),
-                    s.a.y.max(s.b.y),
-                ]
-            })
-            .collect();
+        let segs: Vec<Segment2> = map_vec(&ids, parallel, |&i| sub[i as usize]);
+        let boxes: Vec<[f64; 4]> = map_vec(&ids, parallel, |&i| boxes[i as usize]);
         let mut looked = 0usize;
         let mut stop = Vec::with_capacity(n);
         for (p, b) in boxes.iter().enumerate() {
@@ -322,18 +348,38 @@ impl Flat {
 /// from the candidates of `how`; `None` when the grid would test too many pairs or the
 /// item ids would not fit in `u32` (the intersection sweep then does it all).
 fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
-    let m = sub.iter().fold(0.0f64, |m, s| {
-        m.max(s.a.x.abs())
-            .max(s.a.y.abs())
-            .max(s.b.x.abs())
-            .max(s.b.y.abs())
+    let boxes: Vec<[f64; 4]> = map_vec(sub, sub.len() >= PARALLEL_SWEEP_FROM, |s| {
+        [
+            min2(s.a.x, s.b.x),
+            max2(s.a.x, s.b.x),
+            min2(s.a.y, s.b.y),
+            max2(s.a.y, s.b.y),
+        ]
     });
+    let inf = f64::INFINITY;
+    let e = boxes.iter().fold([inf, -inf, inf, -inf], |e, b| {
+        [
+            min2(e[0], b[0]),
+            max2(e[1], b[1]),
+            min2(e[2], b[2]),
+            max2(e[3], b[3]),
+        ]
+    });
+    // The largest coordinate magnitude (-inf for no segments: an infinite bound).
+    let m = max2(max2(-e[0], e[1]), max2(-e[2], e[3]));
     let bound = static_orient_bound(m);
     let sweep = match how {
-        Candidates::Auto => XSweep::new(sub, SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024),
-        Candidates::Sweep => XSweep::new(sub, usize::MAX),
+        Candidates::Auto => XSweep::new(
+            sub,
+            &boxes,
+            e[0],
+            e[1],
+            SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024,
+        ),
+        Candidates::Sweep => XSweep::new(sub, &boxes, e[0], e[1], usize::MAX),
         Candidates::Grid => None,
     };
+    drop(boxes);
     let found = if let Some(sweep) = sweep {
         if sub.len() < PARALLEL_SWEEP_FROM {
             let mut f = Found::default();
@@ -828,6 +874,23 @@ pub(crate) mod tests {
         }
     }
 
+    fn sweep_of(segs: &[Segment2], budget: usize) -> Option<XSweep> {
+        let boxes: Vec<[f64; 4]> = segs
+            .iter()
+            .map(|s| {
+                [
+                    s.a.x.min(s.b.x),
+                    s.a.x.max(s.b.x),
+                    s.a.y.min(s.b.y),
+                    s.a.y.max(s.b.y),
+                ]
+            })
+            .collect();
+        let lo = boxes.iter().map(|b| b[0]).fold(f64::INFINITY, f64::min);
+        let hi = boxes.iter().map(|b| b[1]).fold(f64::NEG_INFINITY, f64::max);
+        XSweep::new(segs, &boxes, lo, hi, budget)
+    }
+
     /// Long segments spanning the x-extent make the sweep look at Θ(n²) pairs: the budget
     /// sends them to the grid, with the same answer.
     #[test]
@@ -839,8 +902,8 @@ pub(crate) mod tests {
             })
             .collect();
         let budget = SWEEP_PAIRS_PER_SEGMENT * segs.len() + 1024;
-        assert!(XSweep::new(&segs, budget).is_none());
-        assert!(XSweep::new(&segs, usize::MAX).is_some());
+        assert!(sweep_of(&segs, budget).is_none());
+        assert!(sweep_of(&segs, usize::MAX).is_some());
         let auto = Flat::noded(&segs).unwrap();
         assert_eq!(auto, Flat::noded_by(&segs, Candidates::Sweep).unwrap());
         assert_eq!(canonical(&auto), canonical(&Flat::general(&segs).unwrap()));
@@ -848,7 +911,7 @@ pub(crate) mod tests {
         let column: Vec<Segment2> = (0..50)
             .map(|i| Segment2::new(Point2::new(2.0, i as f64), Point2::new(2.0, i as f64 + 1.5)))
             .collect();
-        assert!(XSweep::new(&column, usize::MAX).is_none());
+        assert!(sweep_of(&column, usize::MAX).is_none());
         assert_eq!(
             canonical(&Flat::noded(&column).unwrap()),
             canonical(&Flat::general(&column).unwrap())
