@@ -249,7 +249,9 @@ impl XSweep {
         // About one bucket per segment. `as usize` saturates; the min keeps `hi` in range.
         let buckets = n.max(1);
         let inv = buckets as f64 / size;
-        let bucket = |x: f64| (((x - lo) * inv) as usize).min(buckets - 1) as u32;
+        // (`as u32` saturates and is cheaper than a conversion to u64; n < 2^29.)
+        let last = buckets as u32 - 1;
+        let bucket = |x: f64| (((x - lo) * inv) as u32).min(last);
         // Counting sort by left bucket, index order within a bucket.
         let left_of: Vec<u32> = map_vec(boxes, parallel, |b| bucket(b[0]));
         let mut start = vec![0u32; buckets + 1];
@@ -288,9 +290,16 @@ impl XSweep {
         })
     }
 
+    /// Test the candidates of the entries `ps` whose boxes overlap their own.
+    fn scan(&self, ps: std::ops::Range<usize>, found: &mut Found, bound: f64) {
+        for p in ps {
+            self.scan_one(p, found, bound);
+        }
+    }
+
     /// Test the candidates of entry `p` whose boxes overlap its own.
-    #[inline]
-    fn scan(&self, p: usize, found: &mut Found, bound: f64) {
+    #[inline(always)]
+    fn scan_one(&self, p: usize, found: &mut Found, bound: f64) {
         let (a, s, i) = (self.boxes[p], self.segs[p], self.ids[p]);
         for q in p + 1..self.stop[p] as usize {
             let b = &self.boxes[q];
@@ -298,11 +307,13 @@ impl XSweep {
                 continue;
             }
             let (t, j) = (self.segs[q], self.ids[q]);
-            if i < j {
-                found.test(s, t, i, j, bound);
-            } else {
-                found.test(t, s, j, i, bound);
+            let (s, t, i, j) = if i < j { (s, t, i, j) } else { (t, s, j, i) };
+            // Consecutive ring edges (the common pair), inlined here: joined at
+            // s.b = t.a without a record, and meeting only there unless collinear.
+            if j == i + 1 && s.b == t.a && orient_static(s.a, s.b, t.b, bound) != 0 {
+                continue;
             }
+            found.test(s, t, i, j, bound);
         }
     }
 }
@@ -381,18 +392,19 @@ fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
     };
     drop(boxes);
     let found = if let Some(sweep) = sweep {
-        if sub.len() < PARALLEL_SWEEP_FROM {
+        let n = sub.len();
+        if n < PARALLEL_SWEEP_FROM {
             let mut f = Found::default();
-            for p in 0..sub.len() {
-                sweep.scan(p, &mut f, bound);
-            }
+            sweep.scan(0..n, &mut f, bound);
             f
         } else {
-            (0..sub.len())
+            // Blocks of entries on the pool (the result does not depend on the split:
+            // the assembly sorts what it needs).
+            const BLOCK: usize = 2048;
+            (0..n.div_ceil(BLOCK))
                 .into_par_iter()
-                .with_min_len(1024)
-                .fold(Found::default, |mut f, p| {
-                    sweep.scan(p, &mut f, bound);
+                .fold(Found::default, |mut f, k| {
+                    sweep.scan(k * BLOCK..n.min((k + 1) * BLOCK), &mut f, bound);
                     f
                 })
                 .reduce(Found::default, Found::merge)
@@ -421,6 +433,7 @@ fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
     (found.contacts.len() < (1 << 31) - 2 * sub.len()).then_some(found)
 }
 
+#[inline]
 fn find(parent: &mut [u32], mut x: u32) -> u32 {
     while parent[x as usize] != x {
         let up = parent[parent[x as usize] as usize];
@@ -579,9 +592,15 @@ fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
     };
     let mut chain: Vec<u32> = Vec::new();
     let mut next_cut = 0;
+    let mut prev_end = NONE;
     for k in 0..m {
         chain.clear();
-        chain.push(vertex(2 * k as u32, &mut parent));
+        // The start of a segment joined to the end of the one before is that vertex.
+        chain.push(if k > 0 && sub[k - 1].b == sub[k].a {
+            prev_end
+        } else {
+            vertex(2 * k as u32, &mut parent)
+        });
         while next_cut < cuts.len() && (cuts[next_cut] >> 32) as usize == k {
             // The same point may cut a segment for several pairs.
             let v = vertex((2 * m) as u32 + cuts[next_cut] as u32, &mut parent);
@@ -590,7 +609,8 @@ fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
                 chain.push(v);
             }
         }
-        chain.push(vertex(2 * k as u32 + 1, &mut parent));
+        prev_end = vertex(2 * k as u32 + 1, &mut parent);
+        chain.push(prev_end);
         for w in chain.windows(2) {
             let (u, v) = (w[0], w[1]);
             if !shared[k] {
