@@ -4,9 +4,10 @@
 //! Three ways to the same arrangement, all exact:
 //!
 //! * [`Flat::noded`] (`noding.rs`, the default for segments that are not all
-//!   axis-parallel): the cuts each segment needs, from the exact tests of the pairs the
-//!   intersection grid proposes, vertices joined by union–find; it falls back to the
-//!   sweep below when the grid would test too many pairs.
+//!   axis-parallel): the cuts each segment needs, from the exact tests of the pairs an
+//!   x-interval sweep (or the intersection grid) proposes, vertices joined by
+//!   union–find; it falls back to the sweep below when the grid would test too many
+//!   pairs.
 //! * [`Flat::general`]: the exact intersection sweep ([`find_intersections`]) reports
 //!   every point lying on two or more segments, with U(p), L(p) and C(p). Each reported
 //!   point becomes one vertex (they are distinct exact points), so no point look-up is
@@ -661,7 +662,6 @@ mod tests {
     fn noded_all(segs: &[Segment2]) -> Result<Flat, TestCaseError> {
         use crate::dcel::noding::Candidates;
         let auto = Flat::noded(segs).unwrap();
-        crate::dcel::noding::tests::assemble_matches_the_old(segs);
         for how in [Candidates::Sweep, Candidates::Grid] {
             prop_assert_eq!(&Flat::noded_by(segs, how).unwrap(), &auto, "{:?}", how);
         }
