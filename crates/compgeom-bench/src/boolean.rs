@@ -38,15 +38,15 @@
 //!
 //! Star rows after the x-interval-sweep noding (`dcel/noding.rs`: candidate pairs from a
 //! bucketed x-sweep instead of the grid, consecutive ring edges decided by one static
-//! orientation filter, assembly in plain passes; loaded machine, load average 8.9–9.0,
-//! two runs of `BOOLEAN_ROWS=stars`, ratio of best times with the median of per-round
+//! orientation filter, assembly in plain passes; shared machine, load average 8.9–9.0
+//! for two runs and 2.9–3.0 for a third, `BOOLEAN_ROWS=stars`, ratio of best times with the median of per-round
 //! ratios in brackets, ranges over the four operations):
 //!
 //! | n | compgeom ms | i_overlay ms | /i_overlay | /geo |
 //! |---:|---:|---:|---:|---:|
-//! | 1e3 | 0.26–0.39 | 0.23–0.37 | 0.99–1.14 (1.01–1.15) | 0.98–1.15 (1.02–1.12) |
-//! | 1e4 | 3.2–5.9 | 3.4–8.7 | 0.59–0.94 (0.54–1.03) | 0.50–1.08 (0.71–0.96) |
-//! | 1e5 | 40–76 | 48–125 | 0.60–0.84 (0.62–0.78) | 0.46–0.82 (0.55–0.80) |
+//! | 1e3 | 0.26–0.39 | 0.23–0.37 | 0.99–1.17 (1.01–1.15) | 0.98–1.15 (1.02–1.12) |
+//! | 1e4 | 3.2–5.9 | 3.4–8.7 | 0.59–1.00 (0.54–1.03) | 0.50–1.08 (0.71–0.96) |
+//! | 1e5 | 30–76 | 40–125 | 0.60–0.85 (0.62–0.85) | 0.46–0.90 (0.55–0.80) |
 //!
 //! Callgrind (`BOOLEAN_ONE`, one thread, input generation included): star 1e3 union
 //! 4.54 M instructions against i_overlay's 4.48 M; star 1e5 union 429 M against 571 M.
