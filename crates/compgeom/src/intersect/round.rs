@@ -287,10 +287,150 @@ fn fast(c: &Crossing) -> Option<Point2> {
     Some(Point2::new(x, y))
 }
 
+/// The bits of the fixed-point window: every coordinate below `2^FIXED_BITS` units.
+const FIXED_BITS: i32 = 61;
+/// `2^125`: the largest residual magnitude the fixed-point path lets through.
+const WRAP_LIMIT: f64 = 4.253_529_586_511_730_8e37;
+/// `2^62`.
+const TWO_62: f64 = 4.611_686_018_427_387_9e18;
+/// `2^63`.
+const TWO_63: f64 = 9.223_372_036_854_775_8e18;
+/// `2^-1021`: twice the smallest normal `f64`.
+const NORMAL_MIN2: f64 = 4.450_147_717_014_402_8e-308;
+
+/// `2^k`, for `-1022 <= k <= 1023`.
+#[inline(always)]
+fn pow2(k: i32) -> f64 {
+    f64::from_bits(((k + 1023) as u64) << 52)
+}
+
+/// `v` as an `f64` within relative error `2u + u²` (`|v| < 2^126`): the two halves
+/// convert exactly-rounded and add without cancellation (both are non-negative).
+#[inline(always)]
+fn i128_to_f64(v: i128) -> f64 {
+    let a = v.unsigned_abs();
+    let hi = ((a >> 63) as i64) as f64;
+    let lo = ((a as u64) & (u64::MAX >> 1)) as i64 as f64;
+    let m = hi * TWO_63 + lo;
+    if v < 0 {
+        -m
+    } else {
+        m
+    }
+}
+
+/// The fixed-point path: when the eight coordinates are integers in a common unit
+/// `q = 2^k` below `2^61` units (nearly all input: any coordinates within a window of 61
+/// bits), the denominator `D` and numerator `N` of the parameter are exact `i128`
+/// products, and so is the residual `R = 2^σ·(X - f·D)` of a plain-`f64` estimate `f`
+/// of the coordinate `x = X / D` (units, `X = a·D + d·N`, `σ` making `2^σ·f` an
+/// integer): `R` is a few ulps of `f` times `D`, so although `X` has some 190 bits,
+/// `R` fits in 125 and is computed exactly in wrapping 128-bit arithmetic (checked in
+/// advance by a bound on `|x - f|`). One correction `f + R/(2^σ·D)`, evaluated in
+/// `f64` (relative error at most `5u` of the tiny correction), is then the nearest
+/// `f64` unless `x` lies within about `2^-50` ulp of a midpoint, which the certificate
+/// detects. `None` when a condition fails (the double-double path then decides).
+///
+/// The estimate: `D~, N~` within `2u + u²` relative (`i128_to_f64`), `t = fl(N~/D~)`
+/// within `5.001u·|T|`, `p = fl(fl(d)·t)` within `7.01u·|d·T|`, `f = fl(a + p)`: so
+/// `|x - f| ≤ u·|f| + 7.02u·|p|`; the code bounds `|R| ≤ |D~|·2^σ·u·(|f| + 8|p|)·1.01`
+/// below `2^125` (the true `|R| < 2^127`, so the wrapping result is exact). The
+/// correction `c = fl(R~ / (D~·2^σ))` is within `5.002u·|c|` of `x - f`; with
+/// `f + c = g + e` exactly (two-sum), `|x - g| ≤ |e| + 6u·|c|`, and when that is below
+/// half the smaller gap around `g`, `g` is the nearest `f64` to `x` in units; scaled by
+/// `q` it is the answer (rounding commutes with the scaling while the result is normal,
+/// which the range check on the result ensures). Every `f64` operation above is on
+/// normal or zero values: integers up to `2^125`, quotients of them, `σ ≤ 100`.
+fn fixed(c: &Crossing) -> Option<Point2> {
+    let (s, t) = (c.s, c.t);
+    let v = [s.a.x, s.a.y, s.b.x, s.b.y, t.a.x, t.a.y, t.b.x, t.b.y];
+    let m = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    // The exponent of the largest magnitude (m ≥ 0; 0 gives -1023, ±inf 1024; NaN is
+    // ignored by `max` but fails the integer test below).
+    let e_m = ((m.to_bits() >> 52) as i32) - 1023;
+    if !(-960..=960).contains(&e_m) {
+        return None;
+    }
+    // Units `q = 2^(e_m + 1 - 61)`: every |v| / q < 2^61.
+    let inv = pow2(FIXED_BITS - 1 - e_m);
+    let q = pow2(e_m + 1 - FIXED_BITS);
+    let mut y = [0.0f64; 8];
+    let mut n = [0i64; 8];
+    let mut ok = true;
+    for k in 0..8 {
+        y[k] = v[k] * inv;
+        n[k] = y[k] as i64;
+        // An integer value is exact unless it underflowed to zero.
+        ok &= (n[k] as f64 == y[k]) & ((y[k] != 0.0) | (v[k] == 0.0));
+    }
+    // The coarsest common unit: drop the trailing zero bits all eight share (keeps the
+    // integers, `D` and the residuals small; exact shifts and power-of-two scalings).
+    let zeros = n.iter().fold(0i64, |acc, &k| acc | k).trailing_zeros();
+    if !ok || zeros >= 64 {
+        return None;
+    }
+    let (q, coarse) = (q * pow2(zeros as i32), pow2(-(zeros as i32)));
+    for k in 0..8 {
+        n[k] >>= zeros;
+        y[k] *= coarse;
+    }
+    // Exact differences (below 2^62) and 2x2 determinants (below 2^125).
+    let (dx, dy) = (n[2] - n[0], n[3] - n[1]);
+    let (ex, ey) = (n[6] - n[4], n[7] - n[5]);
+    let (wx, wy) = (n[4] - n[0], n[5] - n[1]);
+    let mul = |a: i64, b: i64| i128::from(a) * i128::from(b);
+    let den = mul(dx, ey) - mul(dy, ex);
+    let num = mul(wx, ey) - mul(wy, ex);
+    if den == 0 {
+        return None;
+    }
+    let den_f = i128_to_f64(den);
+    let t_est = i128_to_f64(num) / den_f;
+    let a = [y[0], y[1]];
+    let d = [y[2] - y[0], y[3] - y[1]];
+    let (ai, di) = ([n[0], n[1]], [dx, dy]);
+    let mut out = [0.0f64; 2];
+    for k in 0..2 {
+        let p = d[k] * t_est;
+        let f = a[k] + p;
+        // σ = max(0, 52 - exponent of f): 2^σ·f is an integer below 2^62.
+        let e_f = ((f.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+        let sigma = (52 - e_f).max(0);
+        if sigma > 100 || f.abs() >= TWO_62 {
+            return None;
+        }
+        let sc = pow2(sigma);
+        // (NaN fails too.)
+        let wrap = den_f.abs() * sc * (f.abs() + 8.0 * p.abs()) * (1.01 * U);
+        if !(wrap < WRAP_LIMIT) {
+            return None;
+        }
+        let big_f = i128::from((f * sc) as i64);
+        let x_num = i128::from(ai[k])
+            .wrapping_mul(den)
+            .wrapping_add(i128::from(di[k]).wrapping_mul(num));
+        let r = x_num
+            .wrapping_shl(sigma as u32)
+            .wrapping_sub(big_f.wrapping_mul(den));
+        let corr = i128_to_f64(r) / (den_f * sc);
+        let (g, e) = two_sum(f, corr);
+        let bound = (e.abs() + 6.0 * U * corr.abs()) * SAFE;
+        let x = g * q;
+        // (Non-finite or tiny results fail the range test.)
+        if !(bound < half_gap(g) && x.abs() >= NORMAL_MIN2 && x.abs() <= f64::MAX) {
+            return None;
+        }
+        out[k] = x;
+    }
+    Some(Point2::new(out[0], out[1]))
+}
+
 /// The nearest `f64` point to the exact crossing: equal to [`Crossing::approx`], faster.
 #[inline]
 pub(crate) fn round_crossing(c: &Crossing) -> Point2 {
-    fast(c).unwrap_or_else(|| c.approx())
+    fixed(c)
+        .or_else(|| fast(c))
+        .unwrap_or_else(|| c.approx())
 }
 
 #[cfg(test)]
@@ -322,19 +462,32 @@ mod tests {
         }
     }
 
-    fn check(cs: &[Crossing]) -> usize {
-        let mut fast_hits = 0;
+    fn bits(p: Point2) -> (u64, u64) {
+        (p.x.to_bits(), p.y.to_bits())
+    }
+
+    /// Each path that answers (the fixed-point path, the double-double path, and the
+    /// combination) is bit-equal to the kernel's exact rounding; returns how many
+    /// crossings the double-double and the fixed-point paths certified.
+    fn check_paths(cs: &[Crossing]) -> (usize, usize) {
+        let (mut fast_hits, mut fixed_hits) = (0, 0);
         for c in cs {
-            let want = c.approx();
-            let got = round_crossing(c);
-            assert_eq!(
-                (got.x.to_bits(), got.y.to_bits()),
-                (want.x.to_bits(), want.y.to_bits()),
-                "{c:?}"
-            );
-            fast_hits += usize::from(fast(c).is_some());
+            let want = bits(c.approx());
+            assert_eq!(bits(round_crossing(c)), want, "{c:?}");
+            if let Some(p) = fast(c) {
+                assert_eq!(bits(p), want, "double-double: {c:?}");
+                fast_hits += 1;
+            }
+            if let Some(p) = fixed(c) {
+                assert_eq!(bits(p), want, "fixed point: {c:?}");
+                fixed_hits += 1;
+            }
         }
-        fast_hits
+        (fast_hits, fixed_hits)
+    }
+
+    fn check(cs: &[Crossing]) -> usize {
+        check_paths(cs).0
     }
 
     #[test]
@@ -342,8 +495,9 @@ mod tests {
         let mut r = lcg(7);
         let unit = move || (r() as f64) / (1u64 << 53) as f64;
         let cs = crossings(unit, 20_000);
-        // Nearly every random crossing is certified by the fast path.
-        assert!(check(&cs) > 19_900);
+        // Nearly every random crossing is certified by each fast path.
+        let (fast_hits, fixed_hits) = check_paths(&cs);
+        assert!(fast_hits > 19_900 && fixed_hits > 19_900, "{fast_hits} {fixed_hits}");
     }
 
     #[test]
@@ -428,12 +582,14 @@ mod tests {
             if let crate::kernel::SegmentIntersection::Crossing(x) =
                 crate::kernel::segment_intersection(s, t)
             {
-                let (got, want) = (round_crossing(&x), x.approx());
-                proptest::prop_assert_eq!(
-                    (got.x.to_bits(), got.y.to_bits()),
-                    (want.x.to_bits(), want.y.to_bits()),
-                    "{:?}", x
-                );
+                let want = bits(x.approx());
+                proptest::prop_assert_eq!(bits(round_crossing(&x)), want, "{:?}", x);
+                if let Some(p) = fixed(&x) {
+                    proptest::prop_assert_eq!(bits(p), want, "fixed point: {:?}", x);
+                }
+                if let Some(p) = fast(&x) {
+                    proptest::prop_assert_eq!(bits(p), want, "double-double: {:?}", x);
+                }
             }
         }
     }
