@@ -8,7 +8,7 @@
 use super::bucket;
 use super::list::defining_second;
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
-use super::round::{round_crossing, Batch};
+use super::round::round_crossing;
 use super::small_int::{self, Hom};
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
@@ -78,12 +78,6 @@ impl Record {
         }
     }
 
-    /// Replace the point (a crossing's, once rounded).
-    fn set_point(&mut self, p: Point2) {
-        self.ky = !key(p.y);
-        self.kx = key(p.x);
-    }
-
     fn point(&self) -> Point2 {
         Point2::new(unkey(self.kx), unkey(!self.ky))
     }
@@ -129,14 +123,11 @@ pub(crate) fn check_count(segments: &[Segment2]) -> Result<()> {
 }
 
 /// What the pairs that meet contribute: one record per (point, pair), and the pairs that
-/// overlap. Proper crossings found by the filters are rounded in batches (independent
-/// crossings side by side run faster): their records hold a placeholder point until
-/// their batch is full or [`PairResults::finish`] runs.
+/// overlap.
 #[derive(Default)]
 pub(crate) struct PairResults {
     records: Vec<Record>,
     overlapping: Vec<(usize, usize)>,
-    pending: Batch,
 }
 
 /// From this many records on, sorting and building the points run on the rayon pool.
@@ -152,13 +143,10 @@ impl PairResults {
         match quick_crossing_static(s, t, bound) {
             Some(false) => return,
             Some(true) => {
-                let at = self.records.len();
-                let placeholder = Point2::new(0.0, 0.0);
-                self.records.push(Record::new(placeholder, i, j, true));
-                let records = &mut self.records;
-                return self.pending.push(Crossing { s, t }, at, |at, p| {
-                    records[at].set_point(p);
-                });
+                let c = Crossing { s, t };
+                return self
+                    .records
+                    .push(Record::new(round_crossing(&c), i, j, true));
             }
             None => {}
         }
@@ -182,21 +170,13 @@ impl PairResults {
         PairResults {
             records: Vec::with_capacity(records),
             overlapping: Vec::new(),
-            pending: Batch::default(),
         }
-    }
-
-    /// Round the crossings still waiting for their batch.
-    fn finish(&mut self) {
-        let records = &mut self.records;
-        self.pending.flush(|at, p| records[at].set_point(p));
     }
 
     /// All parts in one, each copied once.
     pub(crate) fn concat(parts: Vec<PairResults>) -> PairResults {
         let mut all = PairResults::with_capacity(parts.iter().map(|p| p.records.len()).sum());
-        for mut p in parts {
-            p.finish();
+        for p in parts {
             all.records.extend_from_slice(&p.records);
             all.overlapping.extend_from_slice(&p.overlapping);
         }
@@ -206,7 +186,6 @@ impl PairResults {
     /// Group equal points (exactly), split their segments into U/L/C, and build the
     /// maximal overlap pieces.
     pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
-        self.finish();
         let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
         let parallel = self.records.len() >= PARALLEL_ASSEMBLY_FROM;
         sort_records(&mut self.records);
