@@ -26,6 +26,7 @@
 //!   exact `i128` products, the residual `2^σ·(X - f·D)` of a plain-`f64` estimate in
 //!   wrapping 128-bit arithmetic, one certified correction: fewer instructions (~390)
 //!   but 1.4–1.5× slower, bound by the many `f64`/integer conversions.
+//!
 //! With `-C target-cpu=native` (FMA, three-operand AVX) the whole `find` on that input
 //! is about 1.2× faster.
 //!
