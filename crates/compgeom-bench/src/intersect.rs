@@ -84,6 +84,24 @@
 //! Still missing: find on long random is below geo (geo's whole `count()` is ~109M
 //! instructions by callgrind, compgeom's rounding alone ~120M: about 480 instructions per
 //! crossing for correct rounding without FMA).
+//!
+//! Session 7 (branch s7-round, the rounding only), load 7–8, full run:
+//!
+//! | input | n | count vs geo count() | find vs geo collect() | load |
+//! |---|---:|---|---|---:|
+//! | short random | 1e5 | 0.0738 vs 0.4384 (5.94×) | 0.0700 vs 0.4158 (5.94×) | 7.8 |
+//! | long random | 1e3 | 0.0355 vs 0.0257 (0.72×) | 0.0637 vs 0.0267 (0.42×) | 7.8 |
+//! | long random (`ONLY=long`) | 1e3 | 0.0275 vs 0.0185 (0.67×) | 0.0475 vs 0.0191 (0.40×) | 7.2 |
+//! | 100×100 grid | 1e4 | 0.0350 vs 0.0484 (1.38×) | 0.0402 vs 0.0502 (1.25×) | 7.8 |
+//!
+//! No rounding change beat the session-6 path in the scan (`examples/intersect_profile
+//! find 1000`, one thread, session-6 binary against each candidate alternately, 10–20
+//! rounds of best-of-5, median of per-round ratios, load 4–7): one branch-free lane per
+//! crossing 1.00 (kept: ~430 instead of ~470 instructions per crossing, same time);
+//! eight crossings in eight lanes 0.95–0.97; exact fixed point (i128 determinants and
+//! residual) ~0.65; FMA through libm calls equal to Dekker (isolated: 54.8 vs 53.8 ns
+//! per crossing). `-C target-cpu=native` (FMA, AVX): find 1.19× faster (median), which
+//! the default target does not get. Details in `intersect/round.rs`.
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
