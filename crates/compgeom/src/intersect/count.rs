@@ -18,7 +18,7 @@
 
 use super::bucket;
 use super::order::{crossing_y_interval, EventPoint, Oriented};
-use super::pairwise::{self, Grid};
+use super::pairwise::{self, Grid, Pairs};
 use super::sweep::{self, Flow, Sink};
 use super::{brute_force, IntersectAlgorithm, IntersectionPoint, Overlap};
 use crate::kernel::{
@@ -26,7 +26,6 @@ use crate::kernel::{
     SegmentIntersection,
 };
 use crate::Result;
-use rayon::prelude::*;
 
 /// How many intersection points, overlaps and meeting pairs there are: the sizes of what
 /// [`super::find_intersections`] reports.
@@ -140,30 +139,37 @@ impl Found {
         }
     }
 
-    /// All parts in one, each copied once.
-    fn concat(parts: Vec<Found>) -> Found {
-        let mut all = Found::default();
-        all.recs
-            .reserve_exact(parts.iter().map(|p| p.recs.len()).sum());
-        for p in parts {
-            all.recs.extend_from_slice(&p.recs);
-            all.overlapping.extend_from_slice(&p.overlapping);
+    /// All parts in one, the records sorted by their lower ends straight from the parts
+    /// ([`bucket::sort_parts`]), without concatenating them first.
+    fn sorted(parts: Vec<Found>) -> Found {
+        let overlapping = parts
+            .iter()
+            .flat_map(|p| p.overlapping.iter().copied())
+            .collect();
+        let recs = parts.into_iter().map(|p| p.recs).collect();
+        Found {
+            recs: bucket::sort_parts(recs, |r| r.lo, lower_end_cmp),
+            overlapping,
         }
-        all
     }
+}
+
+/// The order of records by their lower ends (`total_cmp`: an unbounded `-inf` first).
+fn lower_end_cmp(a: &Rec, b: &Rec) -> std::cmp::Ordering {
+    a.lo.total_cmp(&b.lo)
 }
 
 /// Sort records by their lower ends (`total_cmp`: an unbounded `-inf` comes first), by
 /// buckets: O(K) for spread-out points.
 fn sort_by_lower_end(recs: &mut [Rec]) {
-    bucket::sort_by_key_then(recs, |r| r.lo, |a, b| a.lo.total_cmp(&b.lo));
+    bucket::sort_by_key_then(recs, |r| r.lo, lower_end_cmp);
 }
 
-/// The number of distinct exact points among the records.
-fn distinct_points(segments: &[Segment2], recs: &mut [Rec]) -> usize {
+/// The number of distinct exact points among the records, sorted by their lower ends
+/// ([`sort_by_lower_end`]).
+fn distinct_points(segments: &[Segment2], recs: &[Rec]) -> usize {
     // By lower ends, so that any two records whose intervals meet end up in one cluster
     // (total_cmp orders -0.0 before 0.0: harmless, the running top still chains them).
-    sort_by_lower_end(recs);
     let mut points = 0;
     let mut k = 0;
     while k < recs.len() {
@@ -188,9 +194,9 @@ fn distinct_points(segments: &[Segment2], recs: &mut [Rec]) -> usize {
 }
 
 /// The count from the pairwise scan's records.
-fn count_found(segments: &[Segment2], mut found: Found) -> IntersectionCount {
+fn count_found(segments: &[Segment2], found: Found) -> IntersectionCount {
     let pairs = found.recs.len() - found.overlapping.len();
-    let points = distinct_points(segments, &mut found.recs);
+    let points = distinct_points(segments, &found.recs);
     let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
     let overlaps = brute_force::overlap_pieces(&segs, &found.overlapping).len();
     IntersectionCount {
@@ -201,26 +207,25 @@ fn count_found(segments: &[Segment2], mut found: Found) -> IntersectionCount {
 }
 
 /// The pairwise scan over a bucketed input.
-fn count_on(segments: &[Segment2], grid: &Grid) -> IntersectionCount {
+fn count_on(segments: &[Segment2], pairs: &Pairs) -> IntersectionCount {
+    let bound = pairs.orient_bound();
     let scan = |k: usize, found: &mut Found| {
-        grid.scan_from(k, |i, j| found.test(segments, i, j, grid.orient_bound));
+        pairs.scan_from(k, |i, j| found.test(segments, i, j, bound));
     };
-    let candidates = grid.candidates();
+    let candidates = pairs.candidates();
     let found = if candidates < pairwise::PARALLEL_SCAN_FROM {
         let mut found = Found::default();
         found.recs.reserve(pairwise::reserve_for(candidates));
-        (0..grid.entry_count()).for_each(|k| scan(k, &mut found));
+        (0..pairs.units()).for_each(|k| scan(k, &mut found));
+        sort_by_lower_end(&mut found.recs);
         found
     } else {
-        let parts: Vec<Found> = (0..grid.entry_count())
-            .into_par_iter()
-            .with_min_len(16)
-            .fold(Found::default, |mut found, k| {
-                scan(k, &mut found);
-                found
-            })
-            .collect();
-        Found::concat(parts)
+        let make = |visits| Found {
+            recs: Vec::with_capacity(pairwise::reserve_for(visits)),
+            overlapping: Vec::new(),
+        };
+        let parts = pairs.scan_parts(make, scan);
+        Found::sorted(parts)
     };
     count_found(segments, found)
 }
@@ -296,9 +301,9 @@ pub fn count_intersections_with(
     brute_force::check_count(segments)?;
     match algorithm {
         IntersectAlgorithm::Sweep => count_by_sweep(segments),
-        IntersectAlgorithm::Pairwise => Ok(count_on(segments, &Grid::new(segments))),
-        IntersectAlgorithm::Default => match pairwise::prefer_pairwise(segments) {
-            Some(grid) => Ok(count_on(segments, &grid)),
+        IntersectAlgorithm::Pairwise => Ok(count_on(segments, &Pairs::new(Grid::new(segments)))),
+        IntersectAlgorithm::Default => match pairwise::prefer_pairs(segments) {
+            Some(pairs) => Ok(count_on(segments, &pairs)),
             None => count_by_sweep(segments),
         },
     }

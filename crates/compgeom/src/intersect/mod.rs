@@ -229,8 +229,8 @@ pub fn find_intersections_with(
         IntersectAlgorithm::Default => {
             sweep::check_finite(segments)?;
             brute_force::check_count(segments)?;
-            match pairwise::prefer_pairwise(segments) {
-                Some(grid) => Ok(pairwise::intersections_on(segments, &grid)),
+            match pairwise::prefer_pairs(segments) {
+                Some(pairs) => Ok(pairwise::intersections_on(segments, &pairs)),
                 None => sweep_intersections(segments),
             }
         }
