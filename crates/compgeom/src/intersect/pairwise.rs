@@ -354,9 +354,25 @@ impl Pairs {
     }
 
     /// Whether the axis sweep was chosen.
-    #[cfg(test)]
     pub(crate) fn is_sweep(&self) -> bool {
         self.sweep.is_some()
+    }
+
+    /// The axis sweep whatever it costs (for tests of the paths that need it).
+    #[cfg(test)]
+    pub(crate) fn sweep_for_tests(segments: &[Segment2]) -> Pairs {
+        let grid = Grid::new(segments);
+        let sweep = AxisSweep::new(&grid.boxes, 1);
+        Pairs {
+            grid,
+            sweep: Some(sweep),
+        }
+    }
+
+    /// With the axis sweep, the segment of unit `k`: every pair [`Pairs::scan_from`]
+    /// reports for `k` holds it (`None` on the grid, whose units are cell entries).
+    pub(crate) fn unit_segment(&self, k: usize) -> Option<usize> {
+        self.sweep.as_ref().map(|s| s.items[k].id as usize)
     }
 
     /// The number of scan units: [`Pairs::scan_from`] takes `0..` this.
