@@ -229,6 +229,9 @@ struct AlongSegments {
     overlap: bool,
     /// The current unit's records (reused).
     local: Vec<Rec>,
+    /// Scratch for sorting them (reused).
+    sorted: Vec<Rec>,
+    counts: Vec<u32>,
 }
 
 impl AlongSegments {
@@ -264,8 +267,8 @@ impl AlongSegments {
 
     /// The groups of exactly one record among the unit's records (all on one segment).
     fn single_groups(&mut self, segments: &[Segment2]) -> usize {
-        let recs = &mut self.local;
-        recs.sort_unstable_by(lower_end_cmp);
+        sort_local(&self.local, &mut self.sorted, &mut self.counts);
+        let recs = &self.sorted;
         let mut singles = 0;
         let mut k = 0;
         while k < recs.len() {
@@ -296,6 +299,53 @@ impl AlongSegments {
             k = end;
         }
         singles
+    }
+}
+
+/// `recs` sorted by their lower ends into `out`: a counting sort over `recs.len()`
+/// buckets of the lower ends' range (a monotone map, so buckets come in order), then
+/// each bucket sorted by [`lower_end_cmp`]. O(m) for spread-out points on a segment,
+/// with buffers that are reused (no allocation per unit).
+fn sort_local(recs: &[Rec], out: &mut Vec<Rec>, counts: &mut Vec<u32>) {
+    out.clear();
+    let m = recs.len();
+    if m < 32 {
+        out.extend_from_slice(recs);
+        out.sort_unstable_by(lower_end_cmp);
+        return;
+    }
+    let (lo, hi) = recs
+        .iter()
+        .filter(|r| r.lo.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+            (a.min(r.lo), b.max(r.lo))
+        });
+    let scale = if hi > lo { m as f64 / (hi - lo) } else { 0.0 };
+    // Monotone in `lo` (`as usize` saturates; -inf and NaN from an infinite scale go
+    // to bucket 0).
+    let bucket = |r: &Rec| (((r.lo - lo) * scale) as usize).min(m - 1);
+    counts.clear();
+    counts.resize(m + 1, 0);
+    for r in recs {
+        counts[bucket(r) + 1] += 1;
+    }
+    for b in 0..m {
+        counts[b + 1] += counts[b];
+    }
+    out.resize(m, recs[0]);
+    for r in recs {
+        let b = bucket(r);
+        out[counts[b] as usize] = *r;
+        counts[b] += 1;
+    }
+    // counts[b] is now where bucket b ends.
+    let mut start = 0;
+    for &end in counts[..m].iter() {
+        let end = end as usize;
+        if end - start > 1 {
+            out[start..end].sort_unstable_by(lower_end_cmp);
+        }
+        start = end;
     }
 }
 
@@ -353,6 +403,8 @@ fn count_along_segments(segments: &[Segment2], pairs: &Pairs) -> Option<Intersec
         records: 0,
         overlap: false,
         local: Vec::new(),
+        sorted: Vec::new(),
+        counts: Vec::new(),
     };
     let parts = if pairs.candidates() < pairwise::PARALLEL_SCAN_FROM {
         let mut acc = make(0);
@@ -540,6 +592,37 @@ mod tests {
                 })
                 .collect();
             check(&long);
+        }
+    }
+
+    proptest! {
+        /// The local sort orders lower ends as a plain sort does, with repeated keys,
+        /// -inf (no usable box), -0.0 and +0.0, and sizes around its cut-over.
+        #[test]
+        fn the_local_sort_is_a_sort(keys in prop::collection::vec(0..12u8, 0..200)) {
+            let recs: Vec<Rec> = keys
+                .iter()
+                .enumerate()
+                .map(|(k, &v)| {
+                    let lo = match v {
+                        0 => f64::NEG_INFINITY,
+                        1 => -0.0,
+                        2 => 0.0,
+                        v => (v as f64).powi(5) * 1e-3,
+                    };
+                    Rec { lo, hi: f64::INFINITY, pair: k as u64 }
+                })
+                .collect();
+            let mut want: Vec<f64> = recs.iter().map(|r| r.lo).collect();
+            want.sort_unstable_by(f64::total_cmp);
+            let (mut out, mut counts) = (Vec::new(), Vec::new());
+            sort_local(&recs, &mut out, &mut counts);
+            let got: Vec<f64> = out.iter().map(|r| r.lo).collect();
+            prop_assert_eq!(got.len(), want.len());
+            prop_assert!(got.iter().zip(&want).all(|(a, b)| a.total_cmp(b).is_eq()));
+            let mut ids: Vec<u64> = out.iter().map(|r| r.pair).collect();
+            ids.sort_unstable();
+            prop_assert_eq!(ids, (0..recs.len() as u64).collect::<Vec<_>>());
         }
     }
 
