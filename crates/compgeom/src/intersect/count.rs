@@ -10,11 +10,15 @@
 //! only inside a cluster can two records be the same point. Clusters of one record are
 //! one point; larger clusters are sorted exactly (the sweep's exact event order) and
 //! their distinct points counted. For proper crossings at distinct points (the common
-//! case) nothing is rounded and nothing exact runs. On the sweep path the sweep's
-//! output is counted as it comes.
+//! case) nothing is rounded and nothing exact runs. When the candidate pairs come from
+//! the axis sweep (long segments, up to quadratically many points) and no pair
+//! overlaps, there is no global sort: each segment's records are grouped along it in a
+//! small buffer and the points counted as the groups of one record
+//! ([`count_along_segments`], which has the proof); with an overlap the records are
+//! sorted as above. On the sweep path the sweep's output is counted as it comes.
 //!
 //! O(n + m + K log K) time for m candidate pairs and K meeting pairs on the pairwise
-//! path, O(n + K) space (24 bytes per (point, pair)).
+//! path, O(n + K) space (24 bytes per (point, pair)); O(n) space per segment grouping.
 
 use super::bucket;
 use super::order::{crossing_interval, crossing_y_interval, EventPoint, Oriented};

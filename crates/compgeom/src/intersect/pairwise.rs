@@ -9,6 +9,13 @@
 //! coordinates, so that cell is the pair of the larger cell coordinates of the two
 //! boxes' lower-left corners, and both boxes cover it).
 //!
+//! When the grid would look at many pairs per segment (long segments: every pair shares
+//! cells, a pair sharing k cells is looked at k times), a sort and sweep along one axis
+//! ([`AxisSweep`]) is used instead if it looks at fewer pairs: segments sorted by the
+//! lower end of their boxes, each scanned against the later ones whose lower end lies
+//! within its box, the other axis tested per pair; O(n log n + m') for the m' pairs
+//! overlapping along that axis, each looked at once ([`Pairs`] chooses).
+//!
 //! O(n + m + K log K) time for m candidate pairs (pairs sharing a cell) and K meeting
 //! pairs; O(n + K) space. It beats the sweep whenever m is not much larger than n + K
 //! (short segments, grids, dense crossings), and loses when many long segments share
