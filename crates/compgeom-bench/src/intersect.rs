@@ -102,6 +102,30 @@
 //! residual) ~0.65; FMA through libm calls equal to Dekker (isolated: 54.8 vs 53.8 ns
 //! per crossing). `-C target-cpu=native` (FMA, AVX): find 1.19× faster (median), which
 //! the default target does not get. Details in `intersect/round.rs`.
+//!
+//! Session 7 (branch s7-pairs): candidate pairs of long segments by a sort and sweep
+//! along one axis (each pair with overlapping boxes looked at once: 333k looks instead
+//! of the grid's 591k at 1e3), the scan in equal-work chunks with reserved buffers, the
+//! bucket sort straight from the scan's parts on the rayon pool (no concatenation), and
+//! the count grouped per segment in cache when no pair overlaps (no global sort, O(n)
+//! memory). Machine loaded by three other helpers (load 2.4–9), so CPU time and
+//! instruction counts are the figures that hold; `examples/intersect_profile`, one
+//! thread, 20 calls, before → after:
+//!
+//! | long random 1e3 | before | after |
+//! |---|---:|---:|
+//! | count CPU per call (perf task-clock, load ~9) | 25.7 ms | 9.3 ms |
+//! | count page faults per call | 3 400 | 20 |
+//! | count instructions (callgrind) | 128.6M | 104.7M |
+//! | find CPU per call | 34 ms | 26 ms |
+//! | find instructions | 284M | 280M (rounding 122M of it, unchanged) |
+//! | count at 1e4 (25M points): CPU per call, peak RSS | 2.9 s, 1.38 GB | 1.0 s, 8 MB |
+//!
+//! Bench rows, same run, ratio = geo / compgeom (2 threads; wall figures swing ×2 under
+//! this load, geo's included): at load 2.4 short 5.92× / 4.59×, long 0.75× / 0.59×,
+//! grid 1.33× / 1.25× (count / find); the old binary right after (load 3.5): short
+//! 5.38× / 5.10×, long 0.69× / 0.49×, grid 1.32× / 1.57×. Counts alone at 1e4 (load
+//! 8.7): 4.23 s vs geo 1.51 s (0.36×) before, 2.72 s vs 1.86 s (0.68×) after.
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};

@@ -173,22 +173,33 @@ impl PairResults {
         }
     }
 
-    /// All parts in one, each copied once.
-    pub(crate) fn concat(parts: Vec<PairResults>) -> PairResults {
-        let mut all = PairResults::with_capacity(parts.iter().map(|p| p.records.len()).sum());
-        for p in parts {
-            all.records.extend_from_slice(&p.records);
-            all.overlapping.extend_from_slice(&p.overlapping);
+    /// [`PairResults::assemble`] of the parts of a parallel scan taken together: the
+    /// records are sorted straight from the parts ([`bucket::sort_parts`]), without
+    /// concatenating them first.
+    pub(crate) fn assemble_parts(parts: Vec<PairResults>, segments: &[Segment2]) -> Intersections {
+        let overlapping = parts
+            .iter()
+            .flat_map(|p| p.overlapping.iter().copied())
+            .collect();
+        let records = parts.into_iter().map(|p| p.records).collect();
+        PairResults {
+            records: bucket::sort_parts(records, record_key, Record::cmp),
+            overlapping,
         }
-        all
+        .assemble_sorted(segments)
     }
 
     /// Group equal points (exactly), split their segments into U/L/C, and build the
     /// maximal overlap pieces.
     pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
+        sort_records(&mut self.records);
+        self.assemble_sorted(segments)
+    }
+
+    /// [`PairResults::assemble`] of records already in their order ([`sort_records`]).
+    fn assemble_sorted(mut self, segments: &[Segment2]) -> Intersections {
         let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
         let parallel = self.records.len() >= PARALLEL_ASSEMBLY_FROM;
-        sort_records(&mut self.records);
         // Sorted by rounded points, which is the exact sweep order except within a run
         // of equal rounded y that holds a crossing: there the exact y may differ. Such
         // runs are re-sorted exactly; elsewhere equal keys mean equal points. Runs are
@@ -273,7 +284,12 @@ fn group_starts(segments: &[Segment2], records: &mut [Record], starts: &mut Vec<
 /// Sort records into their order: a bucket sort by the points' y (descending, as the
 /// keys are), then by the full key within buckets. O(K) for spread-out points.
 fn sort_records(records: &mut [Record]) {
-    bucket::sort_by_key_then(records, |r| -unkey(!r.ky), Record::cmp);
+    bucket::sort_by_key_then(records, record_key, Record::cmp);
+}
+
+/// The bucket key of a record: its rounded y, negated (the order is y descending).
+fn record_key(r: &Record) -> f64 {
+    -unkey(!r.ky)
 }
 
 /// Sort `run` exactly (sweep order, then pair) and return where its groups of equal

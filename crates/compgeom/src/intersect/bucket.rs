@@ -131,6 +131,145 @@ pub(super) fn sort_by_key_then<T: Copy + Send + Sync>(
     }
 }
 
+/// The concatenation of `parts` (the pieces a parallel scan produced), sorted as
+/// [`sort_by_key_then`] sorts (same contract for `key` and `cmp`).
+///
+/// Large inputs are sorted without concatenating first, every pass on the rayon pool:
+/// each part counts its records per coarse bucket, then scatters them straight into its
+/// own sub-range of each coarse bucket of the output (the output is cut into one slice
+/// per (bucket, part), so the parts write disjoint memory), then each coarse bucket is
+/// spread over its fine buckets through a small scratch buffer that stays in cache.
+/// Two buffers of the records in all (the parts and the output) instead of four, and
+/// no serial pass over them.
+pub(super) fn sort_parts<T: Copy + Send + Sync>(
+    parts: Vec<Vec<T>>,
+    key: impl Fn(&T) -> f64 + Sync,
+    cmp: impl Fn(&T, &T) -> Ordering + Copy + Sync,
+) -> Vec<T> {
+    let n: usize = parts.iter().map(Vec::len).sum();
+    let Some(&filler) = parts.iter().find_map(|p| p.first()) else {
+        return Vec::new();
+    };
+    if n < PARALLEL_FROM || n >= u32::MAX as usize {
+        let mut all = Vec::with_capacity(n);
+        for p in &parts {
+            all.extend_from_slice(p);
+        }
+        sort_by_key_then(&mut all, key, cmp);
+        return all;
+    }
+    let range = |p: &Vec<T>| {
+        p.iter()
+            .map(&key)
+            .filter(|v| v.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            })
+    };
+    let (lo, hi) = parts.par_iter().map(range).reduce(
+        || (f64::INFINITY, f64::NEG_INFINITY),
+        |a, b| (a.0.min(b.0), a.1.max(b.1)),
+    );
+    let scale = if hi > lo { n as f64 / (hi - lo) } else { 0.0 };
+    // Monotone in the key (`as usize` saturates, NaN from an infinite scale goes to 0).
+    let fine = |t: &T| (((key(t) - lo) * scale) as usize).min(n - 1);
+    let mut shift = 0;
+    while (n - 1) >> shift >= COARSE {
+        shift += 1;
+    }
+    let coarse_count = ((n - 1) >> shift) + 1;
+    let counts: Vec<Vec<u32>> = parts
+        .par_iter()
+        .map(|p| {
+            let mut c = vec![0u32; coarse_count];
+            for t in p {
+                c[fine(t) >> shift] += 1;
+            }
+            c
+        })
+        .collect();
+    let mut out = vec![filler; n];
+    // Bucket c holds out[start[c]..start[c + 1]]; within it, part 0's records first.
+    let mut start = vec![0usize; coarse_count + 1];
+    for c in 0..coarse_count {
+        start[c + 1] = start[c] + counts.iter().map(|k| k[c] as usize).sum::<usize>();
+    }
+    {
+        let mut rows: Vec<Vec<&mut [T]>> = (0..parts.len())
+            .map(|_| Vec::with_capacity(coarse_count))
+            .collect();
+        let mut rest = &mut out[..];
+        for c in 0..coarse_count {
+            for (row, k) in rows.iter_mut().zip(&counts) {
+                let (piece, tail) = rest.split_at_mut(k[c] as usize);
+                rest = tail;
+                row.push(piece);
+            }
+        }
+        parts
+            .par_iter()
+            .zip(rows.into_par_iter())
+            .for_each(|(part, mut row)| {
+                let mut fill = vec![0usize; coarse_count];
+                for t in part {
+                    let c = fine(t) >> shift;
+                    row[c][fill[c]] = *t;
+                    fill[c] += 1;
+                }
+            });
+    }
+    drop(parts);
+    let mut buckets = Vec::with_capacity(coarse_count);
+    let mut rest = &mut out[..];
+    for c in 0..coarse_count {
+        let (piece, tail) = rest.split_at_mut(start[c + 1] - start[c]);
+        rest = tail;
+        buckets.push((c, piece));
+    }
+    let width = 1usize << shift;
+    buckets.into_par_iter().with_min_len(16).for_each_init(
+        || (Vec::new(), Vec::new(), Vec::new()),
+        |(scratch, fines, local): &mut (Vec<T>, Vec<u32>, Vec<u32>), (c, bucket)| {
+            if bucket.len() <= 16 {
+                bucket.sort_unstable_by(cmp);
+                return;
+            }
+            // Spread over the fine buckets through the scratch copy, then sort each.
+            let base = c << shift;
+            scratch.clear();
+            scratch.extend_from_slice(bucket);
+            fines.clear();
+            fines.extend(scratch.iter().map(|t| (fine(t) - base) as u32));
+            local.clear();
+            local.resize(width + 1, 0);
+            for &f in fines.iter() {
+                local[f as usize + 1] += 1;
+            }
+            for f in 0..width {
+                local[f + 1] += local[f];
+            }
+            let mut at = local.clone();
+            for (t, &f) in scratch.iter().zip(fines.iter()) {
+                bucket[at[f as usize] as usize] = *t;
+                at[f as usize] += 1;
+            }
+            for w in local.windows(2) {
+                let fine_bucket = &mut bucket[w[0] as usize..w[1] as usize];
+                match fine_bucket.len() {
+                    0 | 1 => {}
+                    2 => {
+                        if cmp(&fine_bucket[1], &fine_bucket[0]) == Ordering::Less {
+                            fine_bucket.swap(0, 1);
+                        }
+                    }
+                    _ => fine_bucket.sort_unstable_by(cmp),
+                }
+            }
+        },
+    );
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -164,6 +303,20 @@ mod tests {
                 want.sort_unstable_by(cmp);
                 let mut got = v;
                 sort_by_key_then(&mut got, |t| t.0, cmp);
+                // The same records in uneven parts (some empty).
+                let mut parts: Vec<Vec<(f64, u64)>> = vec![Vec::new(); 5];
+                for (k, t) in got.iter().rev().enumerate() {
+                    parts[(k * k) % 4].push(*t);
+                }
+                let from_parts = sort_parts(parts, |t| t.0, cmp);
+                assert!(
+                    from_parts
+                        .iter()
+                        .zip(&want)
+                        .all(|(a, b)| cmp(a, b) == Ordering::Equal),
+                    "parts: n {n} kind {kind}"
+                );
+                assert_eq!(from_parts.len(), want.len());
                 assert!(
                     got.iter()
                         .zip(&want)

@@ -7,7 +7,8 @@
 //! the output (only crossings of segments adjacent on the sweep line stay queued).
 //! [`find_intersections`], the default, gives the same answer by the fastest exact method
 //! for the input: the sweep, or [`pairwise_intersections`] (exact tests of the pairs with
-//! overlapping bounding boxes, found with a uniform grid) unless many pairs share grid
+//! overlapping bounding boxes, found with a uniform grid, or for long segments by a sort
+//! and sweep along one axis when that looks at fewer pairs) unless many pairs share grid
 //! cells without meeting ([`IntersectAlgorithm`]).
 //!
 //! ## Sweep order
@@ -229,8 +230,8 @@ pub fn find_intersections_with(
         IntersectAlgorithm::Default => {
             sweep::check_finite(segments)?;
             brute_force::check_count(segments)?;
-            match pairwise::prefer_pairwise(segments) {
-                Some(grid) => Ok(pairwise::intersections_on(segments, &grid)),
+            match pairwise::prefer_pairs(segments) {
+                Some(pairs) => Ok(pairwise::intersections_on(segments, &pairs)),
                 None => sweep_intersections(segments),
             }
         }

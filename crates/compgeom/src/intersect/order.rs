@@ -82,8 +82,19 @@ fn box_coord(a: f64, d: f64, t: f64, e_t: f64) -> (f64, f64) {
 /// [`EventPoint`] box, computed alone (the whole line when there is no usable box).
 #[inline]
 pub(crate) fn crossing_y_interval(c: &Crossing) -> (f64, f64) {
+    crossing_interval(c, 1)
+}
+
+/// [`crossing_y_interval`] for the coordinate `axis` (0: x, 1: y).
+#[inline]
+pub(crate) fn crossing_interval(c: &Crossing, axis: usize) -> (f64, f64) {
     if let Some((t, e_t)) = crossing_param(c) {
-        let (y, ry) = box_coord(c.s.a.y, c.s.b.y - c.s.a.y, t, e_t);
+        let (a, b) = if axis == 0 {
+            (c.s.a.x, c.s.b.x)
+        } else {
+            (c.s.a.y, c.s.b.y)
+        };
+        let (y, ry) = box_coord(a, b - a, t, e_t);
         let (lo, hi) = (y - ry, y + ry);
         if lo.is_finite() && hi.is_finite() {
             return (lo, hi);

@@ -9,6 +9,13 @@
 //! coordinates, so that cell is the pair of the larger cell coordinates of the two
 //! boxes' lower-left corners, and both boxes cover it).
 //!
+//! When the grid would look at many pairs per segment (long segments: every pair shares
+//! cells, a pair sharing k cells is looked at k times), a sort and sweep along one axis
+//! ([`AxisSweep`]) is used instead if it looks at fewer pairs: segments sorted by the
+//! lower end of their boxes, each scanned against the later ones whose lower end lies
+//! within its box, the other axis tested per pair; O(n log n + m') for the m' pairs
+//! overlapping along that axis, each looked at once ([`Pairs`] chooses).
+//!
 //! O(n + m + K log K) time for m candidate pairs (pairs sharing a cell) and K meeting
 //! pairs; O(n + K) space. It beats the sweep whenever m is not much larger than n + K
 //! (short segments, grids, dense crossings), and loses when many long segments share
@@ -242,6 +249,245 @@ impl Grid {
     }
 }
 
+/// The segments sorted by the lower end of their boxes along one axis (sort and sweep):
+/// the candidate pairs are the pairs whose boxes overlap along that axis, found by
+/// scanning forward from each segment while the later lower ends stay within its box;
+/// the other axis is tested per pair. When many long segments span most of the input
+/// (the dense case: every pair shares grid cells, and a pair sharing k cells is looked
+/// at k times), this looks at each pair at most once and only at pairs overlapping
+/// along the axis, fewer than the grid's.
+pub(crate) struct AxisSweep {
+    /// Sorted by `lo` (ties in index order, so that the scan is deterministic).
+    items: Vec<SweepItem>,
+    /// Pairs overlapping along the axis: what the scan looks at.
+    visits: u64,
+    /// For each item, the pairs its scan looks at.
+    visits_from: Vec<u64>,
+}
+
+/// A segment's box along the sweep axis (`lo`, `hi`) and the other axis, and its index.
+#[derive(Clone, Copy)]
+struct SweepItem {
+    lo: f64,
+    hi: f64,
+    other: [f64; 2],
+    id: u32,
+}
+
+impl AxisSweep {
+    /// The sweep along `axis` (0: x, 1: y) of the boxes `[min x, max x, min y, max y]`.
+    fn new(boxes: &[[f64; 4]], axis: usize) -> AxisSweep {
+        let o = 2 - 2 * axis;
+        let mut items: Vec<SweepItem> = boxes
+            .iter()
+            .enumerate()
+            .map(|(i, b)| SweepItem {
+                lo: b[2 * axis],
+                hi: b[2 * axis + 1],
+                other: [b[o], b[o + 1]],
+                id: i as u32,
+            })
+            .collect();
+        // Finite coordinates: `total_cmp` is the numeric order there except that it puts
+        // -0.0 before 0.0, which only reorders equal keys (the scan compares with `>`).
+        items.sort_unstable_by(|a, b| a.lo.total_cmp(&b.lo).then(a.id.cmp(&b.id)));
+        let visits_from: Vec<u64> = (0..items.len())
+            .map(|k| {
+                let hi = items[k].hi;
+                items[k + 1..].partition_point(|b| b.lo <= hi) as u64
+            })
+            .collect();
+        AxisSweep {
+            items,
+            visits: visits_from.iter().sum(),
+            visits_from,
+        }
+    }
+
+    /// Call `f(i, j)` (`i < j`) for the pairs of item `k` with later items whose boxes
+    /// overlap. Over all `k`, every pair of overlapping boxes comes exactly once: the
+    /// pair is met from the one of the two that comes first in the sorted order.
+    #[inline]
+    fn scan_from(&self, k: usize, mut f: impl FnMut(usize, usize)) {
+        let a = self.items[k];
+        for b in &self.items[k + 1..] {
+            // Sorted by `lo`: no later box starts within `a` either.
+            if b.lo > a.hi {
+                break;
+            }
+            if b.other[0] > a.other[1] || a.other[0] > b.other[1] {
+                continue;
+            }
+            let (i, j) = (a.id.min(b.id) as usize, a.id.max(b.id) as usize);
+            f(i, j);
+        }
+    }
+}
+
+/// The candidate pairs of the pairwise method: from the grid, or from a sort and sweep
+/// along one axis when that looks at fewer pairs (long segments).
+pub(crate) struct Pairs {
+    grid: Grid,
+    sweep: Option<AxisSweep>,
+}
+
+/// The axis sweep is considered from this many grid candidates per segment on: below,
+/// the grid is near one look per meeting pair and sorting would cost more than it saves.
+const SWEEP_FROM_PER_SEGMENT: u64 = 16;
+
+impl Pairs {
+    /// The grid's pairs, or an axis sweep's when it looks at fewer (estimated from the
+    /// boxes' extents first, so that the sort runs only when it is likely to pay).
+    pub(crate) fn new(grid: Grid) -> Pairs {
+        let n = grid.boxes.len() as u64;
+        let candidates = grid.candidates();
+        let mut sweep = None;
+        if candidates > SWEEP_FROM_PER_SEGMENT * n {
+            let axis = usize::from(axis_overlaps(&grid.boxes, 1) < axis_overlaps(&grid.boxes, 0));
+            // (The estimate counts boundary buckets: it is high by up to about 2n.)
+            if axis_overlaps(&grid.boxes, axis) < candidates + 2 * n {
+                let s = AxisSweep::new(&grid.boxes, axis);
+                if s.visits < candidates {
+                    sweep = Some(s);
+                }
+            }
+        }
+        Pairs { grid, sweep }
+    }
+
+    /// The static orientation bound for the input ([`Grid::orient_bound`]).
+    pub(crate) fn orient_bound(&self) -> f64 {
+        self.grid.orient_bound
+    }
+
+    /// Whether the axis sweep was chosen.
+    pub(crate) fn is_sweep(&self) -> bool {
+        self.sweep.is_some()
+    }
+
+    /// The axis sweep whatever it costs (for tests of the paths that need it).
+    #[cfg(test)]
+    pub(crate) fn sweep_for_tests(segments: &[Segment2]) -> Pairs {
+        let grid = Grid::new(segments);
+        let sweep = AxisSweep::new(&grid.boxes, 1);
+        Pairs {
+            grid,
+            sweep: Some(sweep),
+        }
+    }
+
+    /// With the axis sweep, the segment of unit `k`: every pair [`Pairs::scan_from`]
+    /// reports for `k` holds it (`None` on the grid, whose units are cell entries).
+    pub(crate) fn unit_segment(&self, k: usize) -> Option<usize> {
+        self.sweep.as_ref().map(|s| s.items[k].id as usize)
+    }
+
+    /// The number of scan units: [`Pairs::scan_from`] takes `0..` this.
+    pub(crate) fn units(&self) -> usize {
+        match &self.sweep {
+            Some(s) => s.items.len(),
+            None => self.grid.entry_count(),
+        }
+    }
+
+    /// An upper bound on the pairs the scan tests exactly (the pairs it looks at).
+    pub(crate) fn candidates(&self) -> u64 {
+        match &self.sweep {
+            Some(s) => s.visits,
+            None => self.grid.candidates(),
+        }
+    }
+
+    /// The pairs unit `k` looks at.
+    fn visits_of(&self, k: usize) -> u64 {
+        match &self.sweep {
+            Some(s) => s.visits_from[k],
+            None => {
+                let g = &self.grid;
+                (g.start[g.cell_of[k] as usize + 1] - k - 1) as u64
+            }
+        }
+    }
+
+    /// Scan every unit on the rayon pool, in a few chunks of consecutive units that
+    /// look at about as many pairs each (for the load balance), each chunk into its own
+    /// accumulator `make(pairs the chunk looks at)` (to reserve room up front: no
+    /// regrowth copies). The parts come in unit order.
+    pub(crate) fn scan_parts<A: Send>(
+        &self,
+        make: impl Fn(u64) -> A + Sync,
+        scan: impl Fn(usize, &mut A) + Sync,
+    ) -> Vec<A> {
+        let chunks = (8 * rayon::current_num_threads()) as u64;
+        let per = (self.candidates() / chunks).max(1);
+        let mut ranges = Vec::new();
+        let (mut from, mut visits) = (0, 0);
+        for k in 0..self.units() {
+            visits += self.visits_of(k);
+            if visits >= per {
+                ranges.push((from..k + 1, visits));
+                (from, visits) = (k + 1, 0);
+            }
+        }
+        if from < self.units() {
+            ranges.push((from..self.units(), visits));
+        }
+        ranges
+            .into_par_iter()
+            .map(|(range, visits)| {
+                let mut acc = make(visits);
+                range.for_each(|k| scan(k, &mut acc));
+                acc
+            })
+            .collect()
+    }
+
+    /// Call `f(i, j)` (`i < j`) for the pairs of unit `k`; over all units every pair of
+    /// segments whose boxes overlap comes exactly once.
+    #[inline]
+    pub(crate) fn scan_from(&self, k: usize, f: impl FnMut(usize, usize)) {
+        match &self.sweep {
+            Some(s) => s.scan_from(k, f),
+            None => self.grid.scan_from(k, f),
+        }
+    }
+}
+
+/// An estimate (from above, by about `2n`) of the pairs an [`AxisSweep`] along `axis`
+/// looks at: for each box, the boxes whose lower ends fall within it, counted with a
+/// histogram of the lower ends over `n` buckets. O(n).
+fn axis_overlaps(boxes: &[[f64; 4]], axis: usize) -> u64 {
+    let n = boxes.len();
+    if n < 2 {
+        return 0;
+    }
+    let (lo, hi) = boxes
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(x[2 * axis]), b.max(x[2 * axis + 1]))
+        });
+    let scale = if hi > lo && (hi - lo).is_finite() {
+        n as f64 / (hi - lo)
+    } else {
+        0.0
+    };
+    // `as usize` saturates: monotone, within 0..n.
+    let bucket = |v: f64| (((v - lo) * scale) as usize).min(n - 1);
+    let mut prefix = vec![0u64; n + 1];
+    for b in boxes {
+        prefix[bucket(b[2 * axis]) + 1] += 1;
+    }
+    for k in 0..n {
+        prefix[k + 1] += prefix[k];
+    }
+    // For each box, the boxes whose lower end is in its range, less itself: the pairs
+    // the sweep looks at, plus those sharing the two end buckets (about 2 per box).
+    boxes
+        .iter()
+        .map(|b| prefix[bucket(b[2 * axis + 1]) + 1] - prefix[bucket(b[2 * axis])] - 1)
+        .sum()
+}
+
 /// The records to reserve for a scan of `candidates` pairs: at most one per pair (the
 /// few overlaps add a second; the vector grows then), capped so that a huge bound does
 /// not reserve much memory it will not use.
@@ -302,31 +548,31 @@ pub(crate) fn prefer_pairwise(segments: &[Segment2]) -> Option<Grid> {
 pub fn pairwise_intersections(segments: &[Segment2]) -> Result<Intersections> {
     check_finite(segments)?;
     check_count(segments)?;
-    Ok(intersections_on(segments, &Grid::new(segments)))
+    Ok(intersections_on(segments, &Pairs::new(Grid::new(segments))))
+}
+
+/// [`prefer_pairwise`] with the candidate pairs chosen ([`Pairs::new`]).
+pub(crate) fn prefer_pairs(segments: &[Segment2]) -> Option<Pairs> {
+    prefer_pairwise(segments).map(Pairs::new)
 }
 
 /// [`pairwise_intersections`] on finite segments (fewer than 2^31) already bucketed.
-pub(crate) fn intersections_on(segments: &[Segment2], grid: &Grid) -> Intersections {
+pub(crate) fn intersections_on(segments: &[Segment2], pairs: &Pairs) -> Intersections {
+    let bound = pairs.orient_bound();
     let scan = |k: usize, found: &mut PairResults| {
-        grid.scan_from(k, |i, j| found.test(segments, i, j, grid.orient_bound));
+        pairs.scan_from(k, |i, j| found.test(segments, i, j, bound));
     };
-    let candidates = grid.candidates();
+    let candidates = pairs.candidates();
     let found = if candidates < PARALLEL_SCAN_FROM {
         let mut found = PairResults::with_capacity(reserve_for(candidates));
-        (0..grid.entries.len()).for_each(|k| scan(k, &mut found));
+        (0..pairs.units()).for_each(|k| scan(k, &mut found));
         found
     } else {
         // Independent scans on the rayon pool; the grouping sorts everything, so the
         // result does not depend on how the work was split.
-        let parts: Vec<PairResults> = (0..grid.entries.len())
-            .into_par_iter()
-            .with_min_len(16)
-            .fold(PairResults::default, |mut found, k| {
-                scan(k, &mut found);
-                found
-            })
-            .collect();
-        PairResults::concat(parts)
+        let make = |visits| PairResults::with_capacity(reserve_for(visits));
+        let parts = pairs.scan_parts(make, scan);
+        return PairResults::assemble_parts(parts, segments);
     };
     found.assemble(segments)
 }
@@ -375,6 +621,89 @@ mod tests {
             .map(|_| seg((0.0, unit()), (1.0, unit())))
             .collect();
         assert!(prefer_pairwise(&crossing).is_some());
+    }
+
+    /// The pairs of `segs` whose boxes overlap, by brute force.
+    fn overlapping_boxes(segs: &[Segment2]) -> Vec<(usize, usize)> {
+        let g = Grid::new(segs);
+        let mut want = Vec::new();
+        for i in 0..segs.len() {
+            for j in i + 1..segs.len() {
+                let (a, b) = (&g.boxes[i], &g.boxes[j]);
+                if !(b[0] > a[1] || a[0] > b[1] || b[2] > a[3] || a[2] > b[3]) {
+                    want.push((i, j));
+                }
+            }
+        }
+        want
+    }
+
+    /// The pairs an axis sweep looks at, sorted, after checking none comes twice and
+    /// the visit count bounds them.
+    fn swept(segs: &[Segment2], axis: usize) -> Vec<(usize, usize)> {
+        let g = Grid::new(segs);
+        let s = AxisSweep::new(&g.boxes, axis);
+        let mut seen = Vec::new();
+        for k in 0..s.items.len() {
+            s.scan_from(k, |i, j| seen.push((i, j)));
+        }
+        assert!(seen.len() as u64 <= s.visits);
+        assert!(axis_overlaps(&g.boxes, axis) >= s.visits);
+        seen.sort_unstable();
+        let n = seen.len();
+        seen.dedup();
+        assert_eq!(n, seen.len(), "a pair was swept twice");
+        seen
+    }
+
+    proptest::proptest! {
+        /// Degenerate boxes (integer grid: equal lower ends, nested and touching boxes,
+        /// zero-length and axis-parallel segments, duplicates, -0.0): both axis sweeps
+        /// look at exactly the pairs whose boxes overlap, each once.
+        #[test]
+        fn the_axis_sweep_scans_every_overlapping_box_pair_once(
+            v in proptest::collection::vec((-3i32..4, -3i32..4, -3i32..4, -3i32..4), 0..40),
+            negzero in proptest::bool::ANY,
+        ) {
+            let f = |k: i32| if k == 0 && negzero { -0.0 } else { k as f64 };
+            let segs: Vec<Segment2> =
+                v.iter().map(|&(a, b, c, d)| seg((f(a), f(b)), (f(c), f(d)))).collect();
+            let want = overlapping_boxes(&segs);
+            for axis in 0..2 {
+                proptest::prop_assert_eq!(swept(&segs, axis), want.clone());
+            }
+        }
+    }
+
+    #[test]
+    fn long_segments_use_the_axis_sweep() {
+        let mut state = 7u64;
+        let mut unit = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let long: Vec<Segment2> = (0..400)
+            .map(|_| seg((0.0, unit()), (1.0, unit())))
+            .collect();
+        let pairs = Pairs::new(Grid::new(&long));
+        assert!(pairs.is_sweep());
+        // It looks at fewer pairs than the grid, and at exactly the overlapping boxes.
+        assert!(pairs.candidates() < Grid::new(&long).candidates());
+        let mut seen = Vec::new();
+        for k in 0..pairs.units() {
+            pairs.scan_from(k, |i, j| seen.push((i, j)));
+        }
+        seen.sort_unstable();
+        assert_eq!(seen, overlapping_boxes(&long));
+        let short: Vec<Segment2> = (0..400)
+            .map(|_| {
+                let (x, y) = (unit(), unit());
+                seg((x, y), (x + 0.01 * unit(), y + 0.01 * unit()))
+            })
+            .collect();
+        assert!(!Pairs::new(Grid::new(&short)).is_sweep());
     }
 
     #[test]
