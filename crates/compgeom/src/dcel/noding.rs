@@ -75,7 +75,7 @@ struct Contact {
 }
 
 /// What the scanned pairs contribute.
-#[derive(Clone, Default)]
+#[derive(Default)]
 struct Found {
     contacts: Vec<Contact>,
     /// Pairs overlapping collinearly.
@@ -175,6 +175,9 @@ impl Found {
         });
     }
 
+    /// Both parts' records together, in no fixed order: the assembly's output does not
+    /// depend on the order of contacts (classes are sets, roots are smallest ids, cuts
+    /// are sorted), which keeps the parallel scan deterministic.
     fn merge(mut self, mut other: Found) -> Found {
         if self.contacts.len() < other.contacts.len() {
             std::mem::swap(&mut self, &mut other);
@@ -554,9 +557,10 @@ fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
         }
     }
     // The representative of each class: an input point where the class has one (its
-    // root, when an end: ends come first in id order), else the first contact that is an
-    // input point, else the crossing of the smallest pair. Only classes of contacts alone
-    // need a look at their members.
+    // root, when an end: ends come first in id order), else the crossing of the smallest
+    // pair. Only classes of contacts alone need a look at their members, and those are all
+    // crossings (a contact at an input point is joined to that end), so the choice does
+    // not depend on the contacts' order.
     let is_crossing = |c: u32| contacts[c as usize].crossing;
     let pair = |c: u32| (contacts[c as usize].a, contacts[c as usize].b);
     let mut rep = vec![NONE; k_count];
