@@ -36,7 +36,8 @@
 //! instructions). Our squares IPC is lower than i_overlay's (3× the CPU time for 1.6×
 //! the instructions; 18 k page faults against 7 k).
 
-use crate::util::{ms, Rng};
+use crate::real_maps;
+use crate::util::{alternate, median, ms, Rng};
 use compgeom::overlay::{boolean, union_all, BooleanOp};
 use compgeom::{MultiPolygon, Point2, Polygon};
 use geo::{Area, BooleanOps};
@@ -44,7 +45,7 @@ use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
 use i_overlay::float::single::SingleFloatOverlay;
 use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 fn star(rng: &mut Rng, n: usize, cx: f64, cy: f64) -> Vec<Point2> {
     let mut angles: Vec<f64> = (0..n).map(|_| std::f64::consts::TAU * rng.unit()).collect();
@@ -110,35 +111,59 @@ fn geo_poly(m: &MultiPolygon) -> geo::MultiPolygon<f64> {
     )
 }
 
-/// Best times of three contenders timed in alternating rounds (the machine may be
-/// shared: a load spike then hits all three alike).
+/// Three contenders timed in alternating rounds (the machine may be shared: a load spike
+/// then hits all three alike): the best time of each, and the medians over rounds of the
+/// per-round ratios ours / i_overlay and ours / geo.
 fn alternating(
     runs: usize,
     mut a: impl FnMut(),
     mut b: impl FnMut(),
     mut c: impl FnMut(),
-) -> [Duration; 3] {
+) -> ([Duration; 3], [f64; 2]) {
+    let rounds = alternate(runs, &mut [&mut a, &mut b, &mut c]);
     let mut best = [Duration::MAX; 3];
-    for _ in 0..runs.max(1) {
-        for (k, f) in [&mut a as &mut dyn FnMut(), &mut b, &mut c]
-            .into_iter()
-            .enumerate()
-        {
-            let start = Instant::now();
-            f();
-            best[k] = best[k].min(start.elapsed());
+    for r in &rounds {
+        for k in 0..3 {
+            best[k] = best[k].min(r[k]);
         }
     }
-    best
+    let ratio = |k: usize| median(rounds.iter().map(|r| ms(r[0]) / ms(r[k])).collect());
+    (best, [ratio(1), ratio(2)])
 }
 
-fn row(name: &str, n: usize, ours: f64, io: f64, geo: f64, dev_io: f64) {
+fn row(name: &str, n: usize, t: [Duration; 3], med: [f64; 2], dev_io: f64) {
+    let [ours, io, geo] = t.map(ms);
     println!(
-        "| {name:<13} | {n:>7} | {ours:>10.2} | {io:>10.2} | {geo:>10.2} | {:>6.2} | {:>6.2} | {dev_io:.1e} |",
+        "| {name:<18} | {n:>7} | {ours:>9.2} | {io:>9.2} | {geo:>9.2} | {:>5.2} ({:>4.2}) | {:>5.2} ({:>4.2}) | {dev_io:.1e} |",
         ours / io,
-        ours / geo
+        med[0],
+        ours / geo,
+        med[1],
     );
 }
+
+/// The four operations: name, compgeom's, i_overlay's and geo's.
+const OPS: [(&str, BooleanOp, OverlayRule, geo::OpType); 4] = [
+    (
+        "intersection",
+        BooleanOp::Intersection,
+        OverlayRule::Intersect,
+        geo::OpType::Intersection,
+    ),
+    (
+        "union",
+        BooleanOp::Union,
+        OverlayRule::Union,
+        geo::OpType::Union,
+    ),
+    (
+        "difference",
+        BooleanOp::Difference,
+        OverlayRule::Difference,
+        geo::OpType::Difference,
+    ),
+    ("xor", BooleanOp::Xor, OverlayRule::Xor, geo::OpType::Xor),
+];
 
 /// Run the group.
 pub fn run(quick: bool) -> Result<(), String> {
@@ -146,46 +171,29 @@ pub fn run(quick: bool) -> Result<(), String> {
     if let Ok(who) = std::env::var("BOOLEAN_ONE") {
         return one(&mut rng, &who);
     }
-    let sizes: &[usize] = if quick {
-        &[1_000, 10_000]
-    } else {
-        &[1_000, 10_000, 100_000]
+    // `BOOLEAN_ROWS=stars,squares,maps` (any subset; default all) picks the inputs.
+    let rows = std::env::var("BOOLEAN_ROWS").unwrap_or_else(|_| "stars,squares,maps".into());
+    let wanted = |r: &str| rows.split(',').any(|x| x.trim() == r);
+    let sizes: &[usize] = match (wanted("stars"), quick) {
+        (false, _) => &[],
+        (true, true) => &[1_000, 10_000],
+        (true, false) => &[1_000, 10_000, 100_000],
     };
     let runs = if quick { 1 } else { 5 };
-    println!("boolean: best of {runs} alternating rounds, times in ms; ratio = compgeom / peer; dev = |area − i_overlay area| / area");
-    println!("| input         |       n |   compgeom |  i_overlay |        geo | /i_ov  |  /geo  | dev     |");
+    println!("boolean: best of {runs} alternating rounds, times in ms; ratio = compgeom / peer of the best times (median of per-round ratios); dev = |area − i_overlay area| / area");
+    println!("| input              |       n |  compgeom | i_overlay |       geo |     /i_ov    |     /geo     | dev     |");
     println!("|---|---:|---:|---:|---:|---:|---:|---:|");
     for &n in sizes {
         let a = MultiPolygon(vec![Polygon::new(star(&mut rng, n, 0.0, 0.0), vec![])]);
         let b = MultiPolygon(vec![Polygon::new(star(&mut rng, n, 0.3, 0.0), vec![])]);
         let (pa, pb) = (io_paths(&a), io_paths(&b));
         let (ga, gb) = (geo_poly(&a), geo_poly(&b));
-        for (name, op, rule, gop) in [
-            (
-                "intersection",
-                BooleanOp::Intersection,
-                OverlayRule::Intersect,
-                geo::OpType::Intersection,
-            ),
-            (
-                "union",
-                BooleanOp::Union,
-                OverlayRule::Union,
-                geo::OpType::Union,
-            ),
-            (
-                "difference",
-                BooleanOp::Difference,
-                OverlayRule::Difference,
-                geo::OpType::Difference,
-            ),
-            ("xor", BooleanOp::Xor, OverlayRule::Xor, geo::OpType::Xor),
-        ] {
+        for (name, op, rule, gop) in OPS {
             let ours = boolean(&a, &b, op).map_err(|e| e.to_string())?;
             let theirs = pa.overlay(&pb, rule, FillRule::EvenOdd);
             let (x, y) = (area(&ours), io_area(&theirs));
             let dev = (x - y).abs() / x.abs().max(1e-300);
-            let [t_ours, t_io, t_geo] = alternating(
+            let (t, med) = alternating(
                 runs,
                 || drop(black_box(boolean(&a, &b, op).unwrap())),
                 || drop(black_box(pa.overlay(&pb, rule, FillRule::EvenOdd))),
@@ -195,26 +203,29 @@ pub fn run(quick: bool) -> Result<(), String> {
             if (g - x).abs() > 1e-6 * x.abs().max(1e-9) {
                 println!("  note: geo area {g} vs compgeom {x}");
             }
-            row(
-                &format!("star {name}"),
-                n,
-                ms(t_ours),
-                ms(t_io),
-                ms(t_geo),
-                dev,
-            );
+            row(&format!("star {name}"), n, t, med, dev);
         }
     }
-    // Union of many squares.
+    if wanted("squares") {
+        squares_row(&mut rng, quick, runs)?;
+    }
+    if wanted("maps") {
+        real_map_rows(runs)?;
+    }
+    Ok(())
+}
+
+/// The union of many squares.
+fn squares_row(rng: &mut Rng, quick: bool, runs: usize) -> Result<(), String> {
     let count = if quick { 1_000 } else { 10_000 };
-    let squares = random_squares(&mut rng, count);
+    let squares = random_squares(rng, count);
     let ps = io_paths(&squares);
     let empty: Vec<Vec<[f64; 2]>> = Vec::new();
     let gs: Vec<geo::Polygon<f64>> = geo_poly(&squares).0;
     let ours = union_all(&squares).map_err(|e| e.to_string())?;
     let theirs = ps.overlay(&empty, OverlayRule::Subject, FillRule::NonZero);
     let (x, y) = (area(&ours), io_area(&theirs));
-    let [t_ours, t_io, t_geo] = alternating(
+    let (t, med) = alternating(
         runs,
         || drop(black_box(union_all(&squares).unwrap())),
         || {
@@ -226,15 +237,162 @@ pub fn run(quick: bool) -> Result<(), String> {
         },
         || drop(black_box(geo::unary_union(gs.iter()))),
     );
-    row(
-        "square union",
-        count,
-        ms(t_ours),
-        ms(t_io),
-        ms(t_geo),
-        (x - y).abs() / x,
-    );
+    row("square union", count, t, med, (x - y).abs() / x);
     Ok(())
+}
+
+/// The real-map rows (see [`real_maps`]); a message instead when the cases folder is
+/// absent. Fails when an answer's area differs from i_overlay's by more than 1e-6
+/// relative (i_overlay snaps to a 32-bit grid; geo's area is only noted).
+fn real_map_rows(runs: usize) -> Result<(), String> {
+    let Some(dir) = real_maps::cases_dir() else {
+        println!("real maps: skipped (no cases folder: set COMPGEOM_CASES)");
+        return Ok(());
+    };
+    let water = real_maps::water_pair(&dir);
+    let jts = real_maps::jts_robust_pairs(&dir);
+    if water.is_none() {
+        println!("real maps: earcut/fixtures/water-huge3.json missing, row skipped");
+    }
+    let check = |name: &str, x: f64, y: f64| {
+        let dev = (x - y).abs() / x.abs().max(1e-300);
+        if dev > 1e-6 {
+            return Err(format!("{name}: area {x} vs i_overlay {y}"));
+        }
+        Ok(dev)
+    };
+    for (name, op, rule, gop) in OPS {
+        if let Some(w) = &water {
+            let (pa, pb) = (io_paths(&w.a), io_paths(&w.b));
+            let (ga, gb) = (geo_poly(&w.a), geo_poly(&w.b));
+            let x = area(&boolean(&w.a, &w.b, op).map_err(|e| e.to_string())?);
+            let dev = check(
+                &w.name,
+                x,
+                io_area(&pa.overlay(&pb, rule, FillRule::EvenOdd)),
+            )?;
+            let (t, med) = alternating(
+                runs,
+                || drop(black_box(boolean(&w.a, &w.b, op).unwrap())),
+                || drop(black_box(pa.overlay(&pb, rule, FillRule::EvenOdd))),
+                || drop(black_box(ga.boolean_op(&gb, gop))),
+            );
+            let n = w.a.0.iter().flat_map(|p| p.rings()).map(Vec::len).sum();
+            row(&format!("water {name}"), n, t, med, dev);
+        }
+        if !jts.is_empty() {
+            let io: Vec<_> = jts
+                .iter()
+                .map(|p| (io_paths(&p.a), io_paths(&p.b)))
+                .collect();
+            let geo: Vec<_> = jts
+                .iter()
+                .map(|p| (geo_poly(&p.a), geo_poly(&p.b)))
+                .collect();
+            let mut dev: f64 = 0.0;
+            for (p, (pa, pb)) in jts.iter().zip(&io) {
+                let x = area(&boolean(&p.a, &p.b, op).map_err(|e| e.to_string())?);
+                let y = io_area(&pa.overlay(pb, rule, FillRule::EvenOdd));
+                // i_overlay rounds to a 32-bit grid scaled to the largest coordinate
+                // (these maps sit far from the origin: cells up to ~1e-3 at 5e6): allow
+                // every boundary point to move by a few cells.
+                let max = p.a.0.iter().chain(&p.b.0).flat_map(|q| q.rings()).flatten();
+                let max = max.fold(0.0f64, |m, q| m.max(q.x.abs()).max(q.y.abs()));
+                let allowed = (perimeter(&p.a) + perimeter(&p.b)) * max * 2f64.powi(-28);
+                if (x - y).abs() > allowed {
+                    return Err(format!("{}: {name} area {x} vs i_overlay {y}", p.name));
+                }
+                let scale = area(&p.a).abs() + area(&p.b).abs();
+                dev = dev.max((x - y).abs() / scale);
+            }
+            let (t, med) = alternating(
+                runs,
+                || {
+                    for p in &jts {
+                        drop(black_box(boolean(&p.a, &p.b, op).unwrap()));
+                    }
+                },
+                || {
+                    for (pa, pb) in &io {
+                        drop(black_box(pa.overlay(pb, rule, FillRule::EvenOdd)));
+                    }
+                },
+                || {
+                    for (ga, gb) in &geo {
+                        drop(black_box(ga.boolean_op(gb, gop)));
+                    }
+                },
+            );
+            let n = jts
+                .iter()
+                .flat_map(|p| p.a.0.iter().chain(&p.b.0))
+                .flat_map(|p| p.rings())
+                .map(Vec::len)
+                .sum();
+            row(&format!("jts×{} {name}", jts.len()), n, t, med, dev);
+        }
+    }
+    if let Some(d) = real_maps::geos_837(&dir) {
+        let pa = io_paths_oriented(&d.a);
+        let empty: Vec<Vec<[f64; 2]>> = Vec::new();
+        let gs = geo_poly(&d.a).0;
+        let x = area(&union_all(&d.a).map_err(|e| e.to_string())?);
+        let dev = check(
+            &d.name,
+            x,
+            io_area(&pa.overlay(&empty, OverlayRule::Subject, FillRule::NonZero)),
+        )?;
+        let (t, med) = alternating(
+            runs,
+            || drop(black_box(union_all(&d.a).unwrap())),
+            || {
+                drop(black_box(pa.overlay(
+                    &empty,
+                    OverlayRule::Subject,
+                    FillRule::NonZero,
+                )))
+            },
+            || drop(black_box(geo::unary_union(gs.iter()))),
+        );
+        let n = d.a.0.iter().flat_map(|p| p.rings()).map(Vec::len).sum();
+        row("geos-837 dissolve", n, t, med, dev);
+    }
+    Ok(())
+}
+
+fn perimeter(m: &MultiPolygon) -> f64 {
+    m.0.iter()
+        .flat_map(|p| p.rings())
+        .flat_map(|r| {
+            (0..r.len())
+                .map(|i| (r[(i + 1) % r.len()].x - r[i].x).hypot(r[(i + 1) % r.len()].y - r[i].y))
+        })
+        .sum()
+}
+
+/// The paths of a polygon set with shells counter-clockwise and holes clockwise, so
+/// i_overlay's non-zero rule reads each polygon as its shell minus its holes (what
+/// `union_all` does whatever the input orientation).
+fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
+    let signed = |r: &Vec<[f64; 2]>| {
+        (0..r.len())
+            .map(|i| {
+                let (a, b) = (r[i], r[(i + 1) % r.len()]);
+                a[0] * b[1] - b[0] * a[1]
+            })
+            .sum::<f64>()
+    };
+    m.0.iter()
+        .flat_map(|p| {
+            p.rings().enumerate().map(|(k, r)| {
+                let mut path: Vec<[f64; 2]> = r.iter().map(|p| [p.x, p.y]).collect();
+                if (signed(&path) > 0.0) != (k == 0) {
+                    path.reverse();
+                }
+                path
+            })
+        })
+        .collect()
 }
 
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5; `BOOLEAN_INPUT=star|squares`):

@@ -14,6 +14,7 @@ mod kernel;
 mod locate;
 mod lp;
 mod range;
+mod real_maps;
 mod triangulate;
 mod util;
 mod voronoi;
