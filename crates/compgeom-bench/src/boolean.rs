@@ -395,8 +395,8 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
         .collect()
 }
 
-/// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5; `BOOLEAN_INPUT=star|squares`):
-/// run one contender once on the star union or the squares input, for instruction counts
+/// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5; `BOOLEAN_INPUT=star|squares|water`):
+/// run one contender once on the star union, the squares input or the water map union, for instruction counts
 /// (`valgrind --tool=callgrind`).
 fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     let n: usize = std::env::var("BOOLEAN_N")
@@ -420,8 +420,17 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         }
         return Ok(());
     }
-    let a = MultiPolygon(vec![Polygon::new(star(rng, n, 0.0, 0.0), vec![])]);
-    let b = MultiPolygon(vec![Polygon::new(star(rng, n, 0.3, 0.0), vec![])]);
+    let water = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "water");
+    let (a, b) = if water {
+        let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
+        let w = real_maps::water_pair(&dir).ok_or("no earcut/fixtures/water-huge3.json")?;
+        (w.a, w.b)
+    } else {
+        (
+            MultiPolygon(vec![Polygon::new(star(rng, n, 0.0, 0.0), vec![])]),
+            MultiPolygon(vec![Polygon::new(star(rng, n, 0.3, 0.0), vec![])]),
+        )
+    };
     match who {
         "ours" => drop(black_box(
             boolean(&a, &b, BooleanOp::Union).map_err(|e| e.to_string())?,

@@ -78,15 +78,19 @@ pub(crate) fn faces_left_of(
             (s.b, s.a)
         }
     };
+    // The side of vertex `q` of the edge of half-edge `h`. An end of the edge lies on its
+    // carrier by construction: no arithmetic (the edges ending at a vertex are still in
+    // the status when it is reached, and a constructed end would fail the filter there).
+    let side_of = |q: usize, h: u32| {
+        if origin[h as usize] as usize == q || origin[h as usize ^ 1] as usize == q {
+            return Orientation::Collinear;
+        }
+        let (up, low) = down(h as usize);
+        side(&points[q], approx[q].p, up, low)
+    };
     // True when vertex `q` lies east of (left of, going down) the edge of half-edge `h`.
-    let east = |q: usize, h: u32| {
-        let (up, low) = down(h as usize);
-        side(&points[q], approx[q].p, up, low) == Orientation::CounterClockwise
-    };
-    let west = |q: usize, h: u32| {
-        let (up, low) = down(h as usize);
-        side(&points[q], approx[q].p, up, low) == Orientation::Clockwise
-    };
+    let east = |q: usize, h: u32| side_of(q, h) == Orientation::CounterClockwise;
+    let west = |q: usize, h: u32| side_of(q, h) == Orientation::Clockwise;
     let mut answer = vec![None; n];
     // Status entries: half-edges running down (4 bytes each: the updates move entries).
     let mut status: Vec<u32> = Vec::new();
