@@ -199,7 +199,7 @@ pub(super) fn compare_x_filtered(
 }
 
 /// As [`compare_x_filtered`] for y.
-pub(super) fn compare_y_filtered(
+pub(crate) fn compare_y_filtered(
     a: &ExactPoint,
     ra: &Rounded,
     b: &ExactPoint,
@@ -226,7 +226,7 @@ pub(crate) fn compare_xy_filtered(
 /// with an error bound covering both the arithmetic and the rounding of a constructed
 /// `q` (at most half an ulp per coordinate), then, when that cannot decide, by
 /// [`orient_exact`].
-fn side(q: &ExactPoint, pq: Point2, u: Point2, l: Point2) -> Orientation {
+pub(crate) fn side(q: &ExactPoint, pq: Point2, u: Point2, l: Point2) -> Orientation {
     let (dx, dy) = (l.x - u.x, l.y - u.y);
     let (qx, qy) = (pq.x - u.x, pq.y - u.y);
     let (left, right) = (dx * qy, dy * qx);
