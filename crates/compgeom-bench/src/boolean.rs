@@ -9,7 +9,31 @@
 //! are compared once, outside the clock, by area (relative difference reported). The
 //! three are timed in alternating rounds (best of 5), so load spikes hit all alike.
 //!
-//! Measured (release, shared 2-core machine with other jobs running, load average 5–6 at
+//! Real maps (see `real_maps.rs`, read in place from the cases folder, skipped when it is
+//! absent; `BOOLEAN_ROWS=stars,squares,maps` picks rows): earcut's water body against a
+//! shifted copy (12.9 k vertices, 1.4 k island holes each), the 52 polygon–polygon pairs
+//! of JTS's robust/overlay regressions (times summed), and GEOS ticket 837's dissolve.
+//! Columns give the ratio of best times and, in brackets, the median of per-round ratios.
+//!
+//! Measured, session 7 (load average 1.8 falling from 4, two runs, ms best of 5):
+//!
+//! | input | compgeom | i_overlay | geo | /i_overlay (median) | /geo (median) | before /i_overlay |
+//! |---|---:|---:|---:|---:|---:|---:|
+//! | water ∩ shifted, 4 ops | 15.5–23.6 | 13.6–19.9 | 14.1–20.5 | 1.02–1.38 (1.03–1.32) | 0.88–1.42 (1.03–1.39) | 2.9–4.1 (load 4–6) |
+//! | jts robust AA ×52, 4 ops | 1.8–2.5 | 1.1–1.6 | 1.1–1.6 | 1.59–1.79 (1.59–1.76) | 1.48–1.79 | 1.62–1.74 |
+//! | geos-837 dissolve | 1.4–1.6 | 0.48–0.52 | 0.51–0.62 | 2.95–3.05 | 2.58–2.76 | 3.0 |
+//! | union of squares | 84–102 | 35–43 | 32–33 | 2.35–2.38 (2.26–2.28) | 2.56–3.17 | (unchanged, 459 M instr.) |
+//!
+//! Water union, callgrind: the boolean was 289 M instructions (the hole sweep 165 M, of
+//! it 116 M exact orientations of crossings against the edges ending at them), now
+//! 105 M (the sweep's edge-end shortcut, then the face around each component found by
+//! the nearest edge west of it over x-sorted strips, no sweep); i_overlay's overlay
+//! 53 M. Area deviation from i_overlay: 1e-10 on water; up to 1.7e-6 of the inputs'
+//! area on JTS pairs far from the origin (i_overlay snaps to a 32-bit grid scaled to
+//! the largest coordinate: cells near 1e-3 at 5.4e6; the check allows a few cells along
+//! the perimeter). Stars at the same time: 1e3 1.6–1.7, 1e4 1.2–1.4, 1e5 0.97–1.74.
+//!
+//! Earlier (release, shared 2-core machine with other jobs running, load average 5–6 at
 //! the time; ms, best of 5 alternating rounds, two runs; ratio = compgeom / peer, below 1
 //! = compgeom faster; "before" = the same group before the traced boolean path, quiet
 //! machine):
@@ -414,9 +438,10 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
         .collect()
 }
 
-/// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5; `BOOLEAN_INPUT=star|squares`):
-/// run one contender once on the star union or the squares input, for instruction counts
-/// (`valgrind --tool=callgrind`).
+/// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
+/// `BOOLEAN_INPUT=star|squares|water`): run one contender once on the star union, the
+/// squares input or the water map union, for instruction counts (`valgrind
+/// --tool=callgrind`).
 fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     let n: usize = std::env::var("BOOLEAN_N")
         .ok()
@@ -439,8 +464,17 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         }
         return Ok(());
     }
-    let a = MultiPolygon(vec![Polygon::new(star(rng, n, 0.0, 0.0), vec![])]);
-    let b = MultiPolygon(vec![Polygon::new(star(rng, n, 0.3, 0.0), vec![])]);
+    let water = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "water");
+    let (a, b) = if water {
+        let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
+        let w = real_maps::water_pair(&dir).ok_or("no earcut/fixtures/water-huge3.json")?;
+        (w.a, w.b)
+    } else {
+        (
+            MultiPolygon(vec![Polygon::new(star(rng, n, 0.0, 0.0), vec![])]),
+            MultiPolygon(vec![Polygon::new(star(rng, n, 0.3, 0.0), vec![])]),
+        )
+    };
     match who {
         "ours" => drop(black_box(
             boolean(&a, &b, BooleanOp::Union).map_err(|e| e.to_string())?,

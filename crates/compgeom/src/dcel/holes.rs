@@ -78,15 +78,19 @@ pub(crate) fn faces_left_of(
             (s.b, s.a)
         }
     };
+    // The side of vertex `q` of the edge of half-edge `h`. An end of the edge lies on its
+    // carrier by construction: no arithmetic (the edges ending at a vertex are still in
+    // the status when it is reached, and a constructed end would fail the filter there).
+    let side_of = |q: usize, h: u32| {
+        if origin[h as usize] as usize == q || origin[h as usize ^ 1] as usize == q {
+            return Orientation::Collinear;
+        }
+        let (up, low) = down(h as usize);
+        side(&points[q], approx[q].p, up, low)
+    };
     // True when vertex `q` lies east of (left of, going down) the edge of half-edge `h`.
-    let east = |q: usize, h: u32| {
-        let (up, low) = down(h as usize);
-        side(&points[q], approx[q].p, up, low) == Orientation::CounterClockwise
-    };
-    let west = |q: usize, h: u32| {
-        let (up, low) = down(h as usize);
-        side(&points[q], approx[q].p, up, low) == Orientation::Clockwise
-    };
+    let east = |q: usize, h: u32| side_of(q, h) == Orientation::CounterClockwise;
+    let west = |q: usize, h: u32| side_of(q, h) == Orientation::Clockwise;
     let mut answer = vec![None; n];
     // Status entries: half-edges running down (4 bytes each: the updates move entries).
     let mut status: Vec<u32> = Vec::new();
@@ -195,7 +199,7 @@ pub(super) fn compare_x_filtered(
 }
 
 /// As [`compare_x_filtered`] for y.
-pub(super) fn compare_y_filtered(
+pub(crate) fn compare_y_filtered(
     a: &ExactPoint,
     ra: &Rounded,
     b: &ExactPoint,
@@ -222,7 +226,7 @@ pub(crate) fn compare_xy_filtered(
 /// with an error bound covering both the arithmetic and the rounding of a constructed
 /// `q` (at most half an ulp per coordinate), then, when that cannot decide, by
 /// [`orient_exact`].
-fn side(q: &ExactPoint, pq: Point2, u: Point2, l: Point2) -> Orientation {
+pub(crate) fn side(q: &ExactPoint, pq: Point2, u: Point2, l: Point2) -> Orientation {
     let (dx, dy) = (l.x - u.x, l.y - u.y);
     let (qx, qy) = (pq.x - u.x, pq.y - u.y);
     let (left, right) = (dx * qy, dy * qx);

@@ -49,7 +49,7 @@ mod validate;
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
 pub use export::exact_coords;
 pub(crate) use flat::Flat;
-pub(crate) use holes::{compare_xy_filtered, faces_left_of, Rounded};
+pub(crate) use holes::{compare_xy_filtered, compare_y_filtered, faces_left_of, side, Rounded};
 
 use crate::kernel::{ExactPoint, Point2};
 
