@@ -439,8 +439,9 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 }
 
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
-/// `BOOLEAN_INPUT=star|squares|water`): run one contender once on the star union, the
-/// squares input or the water map union, for instruction counts (`valgrind
+/// `BOOLEAN_INPUT=star|squares|water|dissolve`, `BOOLEAN_REPS` for the dissolve): run one
+/// contender once on the star union, the squares input, the water map union or the
+/// GEOS-837 dissolve (`union_all`), for instruction counts (`valgrind
 /// --tool=callgrind`).
 fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     let n: usize = std::env::var("BOOLEAN_N")
@@ -461,6 +462,30 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
                 FillRule::NonZero,
             ))),
             _ => drop(black_box(geo::unary_union(gs.iter()))),
+        }
+        return Ok(());
+    }
+    let dissolve = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "dissolve");
+    if dissolve {
+        let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
+        let d = real_maps::geos_837(&dir).ok_or("no GEOS-837 case")?;
+        let pa = io_paths_oriented(&d.a);
+        let empty: Vec<Vec<[f64; 2]>> = Vec::new();
+        let gs = geo_poly(&d.a).0;
+        let reps: usize = std::env::var("BOOLEAN_REPS")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(1);
+        for _ in 0..reps {
+            match who {
+                "ours" => drop(black_box(union_all(&d.a).map_err(|e| e.to_string())?)),
+                "io" => drop(black_box(pa.overlay(
+                    &empty,
+                    OverlayRule::Subject,
+                    FillRule::NonZero,
+                ))),
+                _ => drop(black_box(geo::unary_union(gs.iter()))),
+            }
         }
         return Ok(());
     }
