@@ -198,6 +198,30 @@ fn same_by_construction(p: &ExactPoint, q: &ExactPoint) -> bool {
     }
 }
 
+/// True when the lines through `u` and `v` are the same line (exact input predicates).
+fn same_line(u: Segment2, v: Segment2) -> bool {
+    u == v
+        || (u.a != u.b
+            && orient2d(u.a, u.b, v.a) == Orientation::Collinear
+            && orient2d(u.a, u.b, v.b) == Orientation::Collinear)
+}
+
+/// True when `p` and `q` are crossings of the same two lines, each given by possibly
+/// different collinear segments (a segment crossing two overlapping collinear edges, as
+/// where polygons share an edge): the same point, though not by construction. Decided
+/// by at most four orientations of input points instead of a big-number evaluation of
+/// degree 5, which is what an exactly equal pair costs otherwise. Two crossings' lines
+/// are never parallel (their denominators are nonzero), so the point is unique.
+fn same_lines(p: &ExactPoint, q: &ExactPoint) -> bool {
+    match (p, q) {
+        (ExactPoint::Crossing(a), ExactPoint::Crossing(b)) => {
+            (same_line(a.s, b.s) && same_line(a.t, b.t))
+                || (same_line(a.s, b.t) && same_line(a.t, b.s))
+        }
+        _ => false,
+    }
+}
+
 fn compare_coord(p: &ExactPoint, q: &ExactPoint, axis: Axis) -> Ordering {
     if same_by_construction(p, q) {
         return Ordering::Equal;
@@ -209,9 +233,16 @@ fn compare_coord(p: &ExactPoint, q: &ExactPoint, axis: Axis) -> Ordering {
         };
         return x.partial_cmp(&y).unwrap_or(Ordering::Equal);
     }
+    // The filter first: equal pairs are rare on most input, and the filter never
+    // answers for them (its error bound cannot exclude zero).
     decide(
         || compare_coord_with::<Bounded>(p, q, axis),
-        || compare_coord_with::<Dyadic>(p, q, axis),
+        || {
+            if same_lines(p, q) {
+                return Some(Ordering::Equal);
+            }
+            compare_coord_with::<Dyadic>(p, q, axis)
+        },
     )
 }
 
@@ -252,7 +283,12 @@ pub fn orient_exact(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint) -> Orientati
         }
         _ => decide(
             || orient_with::<Bounded>(a, b, c),
-            || orient_with::<Dyadic>(a, b, c),
+            || {
+                if same_lines(a, b) || same_lines(b, c) || same_lines(a, c) {
+                    return Some(Ordering::Equal);
+                }
+                orient_with::<Dyadic>(a, b, c)
+            },
         ),
     };
     match sign {
@@ -512,6 +548,85 @@ impl Crossing {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The `same_lines` shortcut agrees with the exact evaluation on degenerate input:
+    /// crossings of one segment with several overlapping collinear segments (equal
+    /// points, different constructions), of collinear segments with each other's
+    /// lines, near-equal crossings, and crossings against input points; on exactly
+    /// representable lines (grid times powers of two) and rounded ones (times 0.1,
+    /// where the "collinear" segments mostly are not). It must fire where the filter
+    /// fails, else it tests nothing.
+    #[test]
+    fn same_lines_shortcut_agrees_with_exact() {
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut int = move |n: u64| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 33) % n) as f64
+        };
+        let (mut fired, mut checked) = (0usize, 0usize);
+        for k in 0..4_000 {
+            let scale = [1.0, 0.1, 0.125, 1024.0, 3.0e-3][k % 5];
+            let p = |x: f64, y: f64| Point2::new(x * scale, y * scale);
+            // A line through (ox, oy) with direction (dx, dy); segments on it between
+            // grid parameters, so they overlap and share the line exactly (scale exact).
+            let (ox, oy) = (int(20) - 10.0, int(20) - 10.0);
+            let (dx, dy) = (int(7) + 1.0, int(9) - 4.0);
+            let on = |lo: f64, hi: f64| {
+                Segment2::new(p(ox + lo * dx, oy + lo * dy), p(ox + hi * dx, oy + hi * dy))
+            };
+            let shared = [on(-3.0, 2.0), on(-1.0, 4.0), on(4.0, -2.0), on(0.0, 1.0)];
+            let mut cut = || {
+                let (ax, ay) = (int(30) - 15.0, int(30) - 15.0);
+                Segment2::new(p(ax, ay), p(ax + int(11) - 5.0, ay + int(11) - 5.0 + 0.5))
+            };
+            let cuts = [cut(), cut(), cut()];
+            let mut pts: Vec<ExactPoint> = Vec::new();
+            for s in shared {
+                for t in cuts {
+                    if let Some(c) = Crossing::new(s, t) {
+                        pts.push(c.into());
+                    }
+                    if let Some(c) = Crossing::new(t, s) {
+                        pts.push(c.into());
+                    }
+                }
+            }
+            for (i, &t) in cuts.iter().enumerate() {
+                for &u in &cuts[i + 1..] {
+                    if let Some(c) = Crossing::new(t, u) {
+                        pts.push(c.into());
+                    }
+                }
+            }
+            pts.extend([shared[0].a, shared[1].b, cuts[0].a].map(ExactPoint::from));
+            for (i, a) in pts.iter().enumerate() {
+                for b in &pts[i + 1..] {
+                    for axis in [Axis::X, Axis::Y] {
+                        let exact =
+                            compare_coord_with::<Dyadic>(a, b, axis).unwrap_or(Ordering::Equal);
+                        assert_eq!(compare_coord(a, b, axis), exact, "{a:?} {b:?}");
+                        checked += 1;
+                    }
+                    fired += usize::from(
+                        same_lines(a, b) && compare_coord_with::<Bounded>(a, b, Axis::X).is_none(),
+                    );
+                    let c = &pts[(i * 7 + 3) % pts.len()];
+                    let exact = match orient_with::<Dyadic>(a, b, c).unwrap_or(Ordering::Equal) {
+                        Ordering::Greater => Orientation::CounterClockwise,
+                        Ordering::Less => Orientation::Clockwise,
+                        Ordering::Equal => Orientation::Collinear,
+                    };
+                    assert_eq!(orient_exact(a, b, c), exact, "{a:?} {b:?} {c:?}");
+                }
+            }
+        }
+        assert!(
+            checked > 100_000 && fired > 1_000,
+            "checked {checked}, the shortcut decided {fired} pairs the filter left open"
+        );
+    }
 
     /// The fast rounding path agrees with exact rational rounding on random crossings
     /// at many scales, including nearly parallel segments and mixed magnitudes.
