@@ -368,11 +368,15 @@ impl Flat {
             }
         };
         // Lines: segments grouped by (axis, across), ordered by `lo` within a line.
-        let mut order: Vec<u32> = (0..segs.len() as u32).collect();
-        order.sort_unstable_by_key(|&k| {
-            let s = &segs[k as usize];
-            (s.axis, okey(s.across), okey(s.lo), s.index)
-        });
+        // The keys are sorted themselves (not indices looking them up per comparison);
+        // `k` last: segments are in input order, so it breaks ties as `index` would.
+        let mut keyed: Vec<(u8, u64, u64, u32)> = segs
+            .iter()
+            .enumerate()
+            .map(|(k, s)| (s.axis, okey(s.across), okey(s.lo), k as u32))
+            .collect();
+        keyed.sort_unstable();
+        let order: Vec<u32> = keyed.into_iter().map(|t| t.3).collect();
         let mut line_of = vec![0u32; segs.len()];
         let mut lines: Vec<(usize, usize)> = Vec::new(); // ranges of `order`
         for (r, &k) in order.iter().enumerate() {
