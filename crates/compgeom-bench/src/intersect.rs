@@ -135,7 +135,9 @@
 //! load (5–7, three other helpers): example binaries alternating, 8 rounds of best-of-5,
 //! best 20.2 → 19.2 ms (1.05×), median of per-round ratios ~1.1× (spread 0.96–2.2×);
 //! bench `ONLY=long`, main's binary and this one alternating, find vs geo: main 0.48×,
-//! 0.56×, 0.46×, this 0.48×, 0.74×, 0.49× (find 32–44 ms main, 28–41 ms this). Still
+//! 0.56×, 0.46×, this 0.48×, 0.74×, 0.49× (find 32–44 ms main, 28–41 ms this); a
+//! second set at load ~6: find main 21.1, 20.6, 21.5 ms, this 20.7, 22.8, 19.8 ms (best
+//! 1.04×), geo 10.4–22.6 ms; example binaries best 19.4 → 18.3 ms (1.06×). Still
 //! below geo on this row: the remaining ~400 instructions per crossing are the two
 //! cross products, the division and the coordinates, which depend on the pair.
 
