@@ -126,6 +126,20 @@
 //! grid 1.33× / 1.25× (count / find); the old binary right after (load 3.5): short
 //! 5.38× / 5.10×, long 0.69× / 0.49×, grid 1.32× / 1.57×. Counts alone at 1e4 (load
 //! 8.7): 4.23 s vs geo 1.51 s (0.36×) before, 2.72 s vs 1.86 s (0.68×) after.
+//!
+//! Session 7 (branch s7-round2): the per-segment part of the rounding (direction as an
+//! exact double-double, Veltkamp splits of its leading parts, range check) computed once
+//! per segment (`round::Prepared`) instead of per crossing. `examples/intersect_profile
+//! find 1000`, one thread, callgrind (241 717 crossings): whole run 270.0M → 252.8M
+//! instructions, rounding 115.5M → 98.6M inclusive (478 → 408 per crossing). Wall, same
+//! load (5–7, three other helpers): example binaries alternating, 8 rounds of best-of-5,
+//! best 20.2 → 19.2 ms (1.05×), median of per-round ratios ~1.1× (spread 0.96–2.2×);
+//! bench `ONLY=long`, main's binary and this one alternating, find vs geo: main 0.48×,
+//! 0.56×, 0.46×, this 0.48×, 0.74×, 0.49× (find 32–44 ms main, 28–41 ms this); a
+//! second set at load ~6: find main 21.1, 20.6, 21.5 ms, this 20.7, 22.8, 19.8 ms (best
+//! 1.04×), geo 10.4–22.6 ms; example binaries best 19.4 → 18.3 ms (1.06×). Still
+//! below geo on this row: the remaining ~400 instructions per crossing are the two
+//! cross products, the division and the coordinates, which depend on the pair.
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};

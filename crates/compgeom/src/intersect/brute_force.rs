@@ -8,7 +8,7 @@
 use super::bucket;
 use super::list::defining_second;
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
-use super::round::round_crossing;
+use super::round::{round_crossing_of, Prepared};
 use super::small_int::{self, Hom};
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
@@ -26,9 +26,10 @@ pub fn brute_force_intersections(segments: &[Segment2]) -> Result<Intersections>
     check_finite(segments)?;
     check_count(segments)?;
     let mut found = PairResults::default();
+    let table = Prepared::table(segments);
     for i in 0..segments.len() {
         for j in i + 1..segments.len() {
-            found.test(segments, i, j, f64::INFINITY);
+            found.test(segments, &table, i, j, f64::INFINITY);
         }
     }
     Ok(found.assemble(segments))
@@ -135,27 +136,34 @@ const PARALLEL_ASSEMBLY_FROM: usize = 50_000;
 
 impl PairResults {
     /// Test segments `i < j` exactly and record how they meet (`bound`: a static
-    /// orientation bound for the input, or infinity).
+    /// orientation bound for the input, or infinity; `table`: [`Prepared::table`] of
+    /// `segments`, the per-segment part of rounding crossings).
     #[inline]
-    pub(crate) fn test(&mut self, segments: &[Segment2], i: usize, j: usize, bound: f64) {
+    pub(crate) fn test(
+        &mut self,
+        segments: &[Segment2],
+        table: &[Prepared],
+        i: usize,
+        j: usize,
+        bound: f64,
+    ) {
         let (s, t) = (segments[i], segments[j]);
         // Most pairs are decided by the inlined filters; the rest by the exact test.
         match quick_crossing_static(s, t, bound) {
             Some(false) => return,
             Some(true) => {
-                let c = Crossing { s, t };
-                return self
-                    .records
-                    .push(Record::new(round_crossing(&c), i, j, true));
+                let p = round_crossing_of(segments, table, i, j);
+                return self.records.push(Record::new(p, i, j, true));
             }
             None => {}
         }
         match segment_intersection(s, t) {
             SegmentIntersection::None => {}
             SegmentIntersection::Endpoint(q) => self.records.push(Record::new(q, i, j, false)),
-            SegmentIntersection::Crossing(c) => {
-                self.records
-                    .push(Record::new(round_crossing(&c), i, j, true))
+            // (The crossing point does not depend on the order of the two segments.)
+            SegmentIntersection::Crossing(_) => {
+                let p = round_crossing_of(segments, table, i, j);
+                self.records.push(Record::new(p, i, j, true))
             }
             SegmentIntersection::Overlap(a, b) => {
                 self.records.push(Record::new(a, i, j, false));

@@ -23,6 +23,7 @@
 //! and an estimate of K ([`prefer_pairwise`]).
 
 use super::brute_force::{check_count, PairResults};
+use super::round::Prepared;
 use super::sweep::check_finite;
 use super::Intersections;
 use crate::kernel::{segment_intersection, static_orient_bound, Segment2, SegmentIntersection};
@@ -559,8 +560,11 @@ pub(crate) fn prefer_pairs(segments: &[Segment2]) -> Option<Pairs> {
 /// [`pairwise_intersections`] on finite segments (fewer than 2^31) already bucketed.
 pub(crate) fn intersections_on(segments: &[Segment2], pairs: &Pairs) -> Intersections {
     let bound = pairs.orient_bound();
+    // The per-segment part of rounding crossings, once per segment (n) rather than once
+    // per crossing (up to n²/2).
+    let table = Prepared::table(segments);
     let scan = |k: usize, found: &mut PairResults| {
-        pairs.scan_from(k, |i, j| found.test(segments, i, j, bound));
+        pairs.scan_from(k, |i, j| found.test(segments, &table, i, j, bound));
     };
     let candidates = pairs.candidates();
     let found = if candidates < PARALLEL_SCAN_FROM {

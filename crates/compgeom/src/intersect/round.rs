@@ -30,6 +30,12 @@
 //! With `-C target-cpu=native` (FMA, three-operand AVX) the whole `find` on that input
 //! is about 1.2× faster.
 //!
+//! The pair scans call [`round_crossing_of`] with a table of [`Prepared`] segments:
+//! each segment's direction, the splits of its leading parts and its range check are
+//! computed once per segment rather than once per crossing (478 → 408 instructions per
+//! crossing). They are functions of the segment alone, so every lane still performs
+//! exactly the operations analysed below, some of them earlier.
+//!
 //! ## Why it is exact
 //!
 //! With `u = 2^-53`, the crossing of `s = (a, b)` and `t = (c, d)` is
@@ -66,7 +72,7 @@
 //! then multiples of `2^-252`, so every intermediate value is zero or above `2^-1000`
 //! and below `2^700`, except cross terms of the coordinate, which the `10^-300` covers.
 
-use crate::kernel::{Crossing, Point2};
+use crate::kernel::{Crossing, Point2, Segment2};
 
 /// `2^-53`.
 const U: f64 = 1.0 / 9_007_199_254_740_992.0;
@@ -81,7 +87,6 @@ const HI: f64 = 1.606_938_044_258_990_3e60; // 2^200
 const TINY: f64 = 4.909_093_465_297_727e-91; // 2^-300
 
 /// Veltkamp's splitting constant `2^27 + 1`.
-#[cfg(not(target_feature = "fma"))]
 const SPLITTER: f64 = 134_217_729.0;
 
 /// Half the smaller gap between `f` and its neighbours (`f` normal, `|f| > 2^-900`;
@@ -154,33 +159,60 @@ fn vtwo_sum<const L: usize>(a: V<L>, b: V<L>) -> (V<L>, V<L>) {
     (s, vadd(vsub(a, vsub(s, bb)), vsub(b, bb)))
 }
 
+/// A value with its Veltkamp split `v = hi + lo` (each half of at most 26 bits), the
+/// operands of Dekker's product. A split is a function of `v` alone, so splitting a
+/// segment's direction once ([`Prepared`]) gives exactly the halves a split per
+/// crossing would.
+#[derive(Clone, Copy)]
+struct Split<const L: usize> {
+    v: V<L>,
+    hi: V<L>,
+    lo: V<L>,
+}
+
+/// Veltkamp's split of `v`, per lane.
+#[inline(always)]
+fn vsplit<const L: usize>(v: V<L>) -> Split<L> {
+    let c = vmul([SPLITTER; L], v);
+    let hi = vsub(c, vsub(c, v));
+    Split {
+        v,
+        hi,
+        lo: vsub(v, hi),
+    }
+}
+
 /// `a·b = p + e` exactly, per lane, by one fused multiply-add where the build targets a
-/// processor that has it (`-C target-cpu=native` on most x86-64, all aarch64).
+/// processor that has it (`-C target-cpu=native` on most x86-64, all aarch64); the
+/// splits are then unused.
 #[cfg(target_feature = "fma")]
 #[inline(always)]
-fn vtwo_prod<const L: usize>(a: V<L>, b: V<L>) -> (V<L>, V<L>) {
+fn vtwo_prod_split<const L: usize>(a: Split<L>, b: Split<L>) -> (V<L>, V<L>) {
+    let (a, b) = (a.v, b.v);
     let p = vmul(a, b);
     (p, std::array::from_fn(|k| a[k].mul_add(b[k], -p[k])))
 }
 
-/// `a·b = p + e` exactly, per lane (Dekker, with Veltkamp's splitting: without the
-/// target feature `mul_add` is a call into libm, measured no faster).
+/// `a·b = p + e` exactly, per lane (Dekker, from Veltkamp's splits of both operands:
+/// without the target feature `mul_add` is a call into libm, measured no faster).
 #[cfg(not(target_feature = "fma"))]
 #[inline(always)]
-fn vtwo_prod<const L: usize>(a: V<L>, b: V<L>) -> (V<L>, V<L>) {
-    let p = vmul(a, b);
-    let split = |v: V<L>| {
-        let c = vmul([SPLITTER; L], v);
-        let hi = vsub(c, vsub(c, v));
-        (hi, vsub(v, hi))
-    };
-    let (ah, al) = split(a);
-    let (bh, bl) = split(b);
+fn vtwo_prod_split<const L: usize>(a: Split<L>, b: Split<L>) -> (V<L>, V<L>) {
+    let p = vmul(a.v, b.v);
     let e = vadd(
-        vadd(vadd(vsub(vmul(ah, bh), p), vmul(ah, bl)), vmul(al, bh)),
-        vmul(al, bl),
+        vadd(
+            vadd(vsub(vmul(a.hi, b.hi), p), vmul(a.hi, b.lo)),
+            vmul(a.lo, b.hi),
+        ),
+        vmul(a.lo, b.lo),
     );
     (p, e)
+}
+
+/// `a·b = p + e` exactly, per lane, splitting both operands here.
+#[inline(always)]
+fn vtwo_prod<const L: usize>(a: V<L>, b: V<L>) -> (V<L>, V<L>) {
+    vtwo_prod_split(vsplit(a), vsplit(b))
 }
 
 /// Double-double values `hi + lo`, one per lane.
@@ -197,11 +229,30 @@ fn vdiff<const L: usize>(a: V<L>, b: V<L>) -> Dd<L> {
     Dd { hi, lo }
 }
 
+/// A difference of inputs (exact as a double-double) with the split of its leading
+/// part.
+#[derive(Clone, Copy)]
+struct Diff<const L: usize> {
+    d: Dd<L>,
+    split: Split<L>,
+}
+
+/// `a - b` exactly with its leading part split, per lane.
+#[inline(always)]
+fn vdiff_split<const L: usize>(a: V<L>, b: V<L>) -> Diff<L> {
+    let d = vdiff(a, b);
+    Diff {
+        d,
+        split: vsplit(d.hi),
+    }
+}
+
 /// `x·y - z·w` per lane, normalised; error at most `22u²·(|x.hi·y.hi| + |z.hi·w.hi|)`.
 #[inline(always)]
-fn vcross<const L: usize>(x: Dd<L>, y: Dd<L>, z: Dd<L>, w: Dd<L>) -> Dd<L> {
-    let (p1, e1) = vtwo_prod(x.hi, y.hi);
-    let (p2, e2) = vtwo_prod(z.hi, w.hi);
+fn vcross<const L: usize>(x: Diff<L>, y: Diff<L>, z: Diff<L>, w: Diff<L>) -> Dd<L> {
+    let (p1, e1) = vtwo_prod_split(x.split, y.split);
+    let (p2, e2) = vtwo_prod_split(z.split, w.split);
+    let (x, y, z, w) = (x.d, y.d, z.d, w.d);
     let c1 = vadd(vmul(x.hi, y.lo), vmul(x.lo, y.hi));
     let c2 = vadd(vmul(z.hi, w.lo), vmul(z.lo, w.hi));
     let (s, r) = vtwo_sum(p1, vneg(p2));
@@ -215,12 +266,13 @@ fn vcross<const L: usize>(x: Dd<L>, y: Dd<L>, z: Dd<L>, w: Dd<L>) -> Dd<L> {
 #[inline(always)]
 fn vcoordinate<const L: usize>(
     a: V<L>,
-    d: Dd<L>,
+    dir: Diff<L>,
     t_hi: V<L>,
     t_lo: V<L>,
     e_t: V<L>,
 ) -> (V<L>, [bool; L]) {
-    let (p, pe) = vtwo_prod(d.hi, t_hi);
+    let (p, pe) = vtwo_prod_split(dir.split, vsplit(t_hi));
+    let d = dir.d;
     let c = vadd(vmul(d.hi, t_lo), vmul(d.lo, t_hi));
     let (s, sl) = vtwo_sum(a, p);
     let lo = vadd(sl, vadd(pe, c));
@@ -237,30 +289,48 @@ fn vcoordinate<const L: usize>(
     (f, ok)
 }
 
-/// The certified fast path for `L` crossings: per lane the coordinates and whether
-/// they are certified (else [`Crossing::approx`] must decide).
+/// What the fast path needs of one segment `(a, b)` per lane, all of it a function of
+/// the segment alone: its first endpoint, its direction `b - a` (exact, with the split
+/// of its leading parts), and whether its coordinates are in range.
+#[derive(Clone, Copy)]
+struct Side<const L: usize> {
+    ax: V<L>,
+    ay: V<L>,
+    dx: Diff<L>,
+    dy: Diff<L>,
+    in_range: [bool; L],
+}
+
+/// [`Side`] of segments `(a, b)` given per lane.
 #[inline(always)]
-fn certified<const L: usize>(cs: &[Crossing; L]) -> (V<L>, V<L>, [bool; L]) {
-    let get = |f: fn(&Crossing) -> f64| -> V<L> { std::array::from_fn(|k| f(&cs[k])) };
-    let (sax, say) = (get(|c| c.s.a.x), get(|c| c.s.a.y));
-    let (sbx, sby) = (get(|c| c.s.b.x), get(|c| c.s.b.y));
-    let (tax, tay) = (get(|c| c.t.a.x), get(|c| c.t.a.y));
-    let (tbx, tby) = (get(|c| c.t.b.x), get(|c| c.t.b.y));
-    let mut ok: [bool; L] = std::array::from_fn(|k| {
-        let v = [
-            sax[k], say[k], sbx[k], sby[k], tax[k], tay[k], tbx[k], tby[k],
-        ];
-        v.iter().fold(true, |ok, &v| ok & in_range(v))
-    });
-    // d = s.b - s.a, e = t.b - t.a, w = t.a - s.a, each exact.
-    let (dx, dy) = (vdiff(sbx, sax), vdiff(sby, say));
-    let (ex, ey) = (vdiff(tbx, tax), vdiff(tby, tay));
-    let (wx, wy) = (vdiff(tax, sax), vdiff(tay, say));
+fn vside<const L: usize>(ax: V<L>, ay: V<L>, bx: V<L>, by: V<L>) -> Side<L> {
+    Side {
+        ax,
+        ay,
+        dx: vdiff_split(bx, ax),
+        dy: vdiff_split(by, ay),
+        in_range: std::array::from_fn(|k| {
+            in_range(ax[k]) & in_range(ay[k]) & in_range(bx[k]) & in_range(by[k])
+        }),
+    }
+}
+
+/// The certified fast path for `L` crossings given by their segments' sides: per lane
+/// the coordinates and whether they are certified (else [`Crossing::approx`] must
+/// decide).
+#[inline(always)]
+fn certified_sides<const L: usize>(s: &Side<L>, t: &Side<L>) -> (V<L>, V<L>, [bool; L]) {
+    let mut ok: [bool; L] = std::array::from_fn(|k| s.in_range[k] & t.in_range[k]);
+    // d = s.b - s.a, e = t.b - t.a (both from the sides), w = t.a - s.a, each exact.
+    let (dx, dy) = (s.dx, s.dy);
+    let (ex, ey) = (t.dx, t.dy);
+    let (wx, wy) = (vdiff_split(t.ax, s.ax), vdiff_split(t.ay, s.ay));
     // den = dx·ey - dy·ex, num = wx·ey - wy·ex.
     let den = vcross(dx, ey, dy, ex);
     let num = vcross(wx, ey, wy, ex);
-    let m_den = vadd(vabs(vmul(dx.hi, ey.hi)), vabs(vmul(dy.hi, ex.hi)));
-    let m_num = vadd(vabs(vmul(wx.hi, ey.hi)), vabs(vmul(wy.hi, ex.hi)));
+    let (dx_hi, dy_hi, ex_hi, ey_hi) = (dx.d.hi, dy.d.hi, ex.d.hi, ey.d.hi);
+    let m_den = vadd(vabs(vmul(dx_hi, ey_hi)), vabs(vmul(dy_hi, ex_hi)));
+    let m_num = vadd(vabs(vmul(wx.d.hi, ey_hi)), vabs(vmul(wy.d.hi, ex_hi)));
     // The parameter T = num / den as t_hi + t_lo within e_t (module docs).
     let t_hi = vdiv(num.hi, den.hi);
     let (p, pe) = vtwo_prod(t_hi, den.hi);
@@ -281,12 +351,31 @@ fn certified<const L: usize>(cs: &[Crossing; L]) -> (V<L>, V<L>, [bool; L]) {
             & (t_hi[k].abs() <= HI)
             & (e_t[k] < 0.001 * t_hi[k].abs());
     }
-    let (x, ok_x) = vcoordinate(sax, dx, t_hi, t_lo, e_t);
-    let (y, ok_y) = vcoordinate(say, dy, t_hi, t_lo, e_t);
+    let (x, ok_x) = vcoordinate(s.ax, dx, t_hi, t_lo, e_t);
+    let (y, ok_y) = vcoordinate(s.ay, dy, t_hi, t_lo, e_t);
     for k in 0..L {
         ok[k] &= ok_x[k] & ok_y[k];
     }
     (x, y, ok)
+}
+
+/// The certified fast path for `L` crossings, everything computed here.
+#[inline(always)]
+fn certified<const L: usize>(cs: &[Crossing; L]) -> (V<L>, V<L>, [bool; L]) {
+    let get = |f: fn(&Crossing) -> f64| -> V<L> { std::array::from_fn(|k| f(&cs[k])) };
+    let s = vside(
+        get(|c| c.s.a.x),
+        get(|c| c.s.a.y),
+        get(|c| c.s.b.x),
+        get(|c| c.s.b.y),
+    );
+    let t = vside(
+        get(|c| c.t.a.x),
+        get(|c| c.t.a.y),
+        get(|c| c.t.b.x),
+        get(|c| c.t.b.y),
+    );
+    certified_sides(&s, &t)
 }
 
 /// The nearest `f64` point to the exact crossing: equal to [`Crossing::approx`], faster.
@@ -300,10 +389,87 @@ pub(crate) fn round_crossing(c: &Crossing) -> Point2 {
     }
 }
 
+/// The per-segment part of [`round_crossing`], computed once per input segment instead
+/// of once per crossing: the segment's direction `b - a` as an exact double-double, the
+/// Veltkamp splits of its leading parts, and the range check of its coordinates. Each
+/// is a function of the segment alone, so the crossing's rounding performs exactly the
+/// operations analysed in the module docs, some of them earlier.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Prepared {
+    ax: f64,
+    ay: f64,
+    /// `dx.hi, dx.lo, dx.hi`'s split `hi, lo`; then the same for `dy`.
+    dx: [f64; 4],
+    dy: [f64; 4],
+    in_range: bool,
+}
+
+impl Prepared {
+    /// The entry of segment `s`.
+    pub(crate) fn of(s: &Segment2) -> Prepared {
+        let side = vside([s.a.x], [s.a.y], [s.b.x], [s.b.y]);
+        let pack = |d: Diff<1>| [d.d.hi[0], d.d.lo[0], d.split.hi[0], d.split.lo[0]];
+        Prepared {
+            ax: s.a.x,
+            ay: s.a.y,
+            dx: pack(side.dx),
+            dy: pack(side.dy),
+            in_range: side.in_range[0],
+        }
+    }
+
+    /// One entry per segment.
+    pub(crate) fn table(segments: &[Segment2]) -> Vec<Prepared> {
+        segments.iter().map(Prepared::of).collect()
+    }
+
+    #[inline(always)]
+    fn side(&self) -> Side<1> {
+        let unpack = |d: [f64; 4]| Diff {
+            d: Dd {
+                hi: [d[0]],
+                lo: [d[1]],
+            },
+            split: Split {
+                v: [d[0]],
+                hi: [d[2]],
+                lo: [d[3]],
+            },
+        };
+        Side {
+            ax: [self.ax],
+            ay: [self.ay],
+            dx: unpack(self.dx),
+            dy: unpack(self.dy),
+            in_range: [self.in_range],
+        }
+    }
+}
+
+/// [`round_crossing`] of the proper crossing of `segments[i]` and `segments[j]`, with
+/// the per-segment part taken from `table` (`table[k] = Prepared::of(&segments[k])`).
+#[inline]
+pub(crate) fn round_crossing_of(
+    segments: &[Segment2],
+    table: &[Prepared],
+    i: usize,
+    j: usize,
+) -> Point2 {
+    let (x, y, ok) = certified_sides(&table[i].side(), &table[j].side());
+    if ok[0] {
+        Point2::new(x[0], y[0])
+    } else {
+        Crossing {
+            s: segments[i],
+            t: segments[j],
+        }
+        .approx()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kernel::Segment2;
 
     fn crossings(mut coord: impl FnMut() -> f64, n: usize) -> Vec<Crossing> {
         let mut out = Vec::new();
@@ -333,6 +499,12 @@ mod tests {
         (p.x.to_bits(), p.y.to_bits())
     }
 
+    /// The crossing's two segments and their table, for [`round_crossing_of`].
+    fn prepared(c: &Crossing) -> ([Segment2; 2], Vec<Prepared>) {
+        let segs = [c.s, c.t];
+        (segs, Prepared::table(&segs))
+    }
+
     /// Rounding is bit-equal to the kernel's exact rounding, and so is the certified
     /// path wherever it answers, in one lane and in eight (a lane never depends on its
     /// neighbours). Returns how many crossings the certified path decided.
@@ -341,6 +513,10 @@ mod tests {
         let mut hits = 0;
         for (c, w) in cs.iter().zip(&want) {
             assert_eq!(bits(round_crossing(c)), *w, "{c:?}");
+            // Through the per-segment table, in both orders of the pair.
+            let (segs, table) = prepared(c);
+            assert_eq!(bits(round_crossing_of(&segs, &table, 0, 1)), *w, "{c:?}");
+            assert_eq!(bits(round_crossing_of(&segs, &table, 1, 0)), *w, "{c:?}");
             let (x, y, ok) = certified(&[*c]);
             if ok[0] {
                 assert_eq!((x[0].to_bits(), y[0].to_bits()), *w, "one lane: {c:?}");
@@ -452,6 +628,9 @@ mod tests {
             {
                 let want = bits(x.approx());
                 proptest::prop_assert_eq!(bits(round_crossing(&x)), want, "{:?}", x);
+                let (segs, table) = prepared(&x);
+                proptest::prop_assert_eq!(bits(round_crossing_of(&segs, &table, 0, 1)), want, "{:?}", x);
+                proptest::prop_assert_eq!(bits(round_crossing_of(&segs, &table, 1, 0)), want, "{:?}", x);
                 // In every other lane of eight, beside an easy crossing.
                 let easy = Crossing {
                     s: Segment2::new(Point2::new(0.0, 0.0), Point2::new(2.0, 2.0)),
@@ -467,6 +646,47 @@ mod tests {
                 }
                 // The easy crossing is certified beside any neighbour.
                 proptest::prop_assert!(ok[0]);
+            }
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// Through one table for a whole input of long random segments across the unit
+        /// square (the benchmark's dense case), optionally snapped to a coarse grid
+        /// and nudged by ulps: every crossing pair, bit-equal to the kernel's rounding.
+        #[test]
+        fn table_bit_equal_on_long_random_segments(
+            seed in proptest::prelude::any::<u64>(),
+            grid in proptest::bool::ANY,
+            nudge in -2i64..=2,
+        ) {
+            let mut r = lcg(seed);
+            let mut coord = move || {
+                let v = (r() as f64) / (1u64 << 53) as f64;
+                if grid {
+                    let g = (v * 16.0).floor() / 16.0;
+                    if g == 0.0 { g } else { f64::from_bits((g.to_bits() as i64 + nudge) as u64) }
+                } else {
+                    v
+                }
+            };
+            let segs: Vec<Segment2> = (0..60)
+                .map(|_| Segment2::new(Point2::new(0.0, coord()), Point2::new(1.0, coord())))
+                .collect();
+            let table = Prepared::table(&segs);
+            for i in 0..segs.len() {
+                for j in i + 1..segs.len() {
+                    if let crate::kernel::SegmentIntersection::Crossing(c) =
+                        crate::kernel::segment_intersection(segs[i], segs[j])
+                    {
+                        proptest::prop_assert_eq!(
+                            bits(round_crossing_of(&segs, &table, i, j)),
+                            bits(c.approx()),
+                            "{:?}", c
+                        );
+                    }
+                }
             }
         }
     }
