@@ -15,6 +15,14 @@
 //! of JTS's robust/overlay regressions (times summed), and GEOS ticket 837's dissolve.
 //! Columns give the ratio of best times and, in brackets, the median of per-round ratios.
 //!
+//! End of session 7, all branches merged, machine quiet (load 2.5 falling), full run,
+//! ratio compgeom / peer of best times (median of per-round ratios): star 1e3
+//! 1.12–1.21 (1.14–1.21) against i_overlay and 1.10–1.19 against geo; star 1e4
+//! 0.89–1.00 / 0.86–1.01; star 1e5 0.84–0.96 / 0.78–0.87; squares 2.21 / 2.16 in the
+//! full run (79 ms) and 1.63–1.66 / 1.65–1.80 alone (`BOOLEAN_ROWS=squares`, 63 ms,
+//! a different random input); water 0.90–1.10 / 0.95–1.16; JTS robust pairs ×52
+//! 1.42–1.50 / 1.36–1.46; GEOS-837 dissolve 2.50 / 2.27 (1.13 ms against 0.45).
+//!
 //! Measured, session 7 (load average 1.8 falling from 4, two runs, ms best of 5):
 //!
 //! | input | compgeom | i_overlay | geo | /i_overlay (median) | /geo (median) | before /i_overlay |

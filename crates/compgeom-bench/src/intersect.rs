@@ -85,6 +85,13 @@
 //! instructions by callgrind, compgeom's rounding alone ~120M: about 480 instructions per
 //! crossing for correct rounding without FMA).
 //!
+//! End of session 7, all branches merged, machine quiet (load 1–2.5), ratio geo /
+//! compgeom (2 threads): full run short 1e5 7.44× / 6.89×, grid 1e4 1.62× / 1.64×
+//! (count / find; grid alone 1.35–1.62× / 1.52–2.04×, the session-6 binary the same
+//! within noise); long 1e3 alone, three runs after the last merge: count 2.04–2.20×
+//! (4.8–5.1 ms against 10.4–10.5), find 0.65–0.78× (14.0–16.8 ms against 10.8–11.0),
+//! so long find is still short of geo.
+//!
 //! Session 7 (branch s7-round, the rounding only), load 7–8, full run:
 //!
 //! | input | n | count vs geo count() | find vs geo collect() | load |
