@@ -161,29 +161,45 @@ fn sort_by_lower_end(recs: &mut [Rec]) {
 /// The number of distinct exact points among the records, sorted by their lower ends
 /// ([`sort_by_lower_end`]).
 fn distinct_points(segments: &[Segment2], recs: &[Rec]) -> usize {
-    // By lower ends, so that any two records whose intervals meet end up in one cluster
-    // (total_cmp orders -0.0 before 0.0: harmless, the running top still chains them).
-    let mut points = 0;
+    clusters(recs)
+        .map(|cluster| {
+            if cluster.len() == 1 {
+                1
+            } else {
+                let events = sorted_events(segments, cluster);
+                1 + events.windows(2).filter(|w| w[0] != w[1]).count()
+            }
+        })
+        .sum()
+}
+
+/// The clusters of records sorted by their lower ends ([`sort_by_lower_end`]): maximal
+/// runs in which every record's interval meets the union of those before it, so that
+/// records of one exact point always share a cluster (total_cmp orders -0.0 before
+/// 0.0: harmless, the running top still chains them).
+fn clusters(recs: &[Rec]) -> impl Iterator<Item = &[Rec]> {
     let mut k = 0;
-    while k < recs.len() {
-        // The cluster: every later record whose interval meets the union so far.
+    std::iter::from_fn(move || {
+        if k == recs.len() {
+            return None;
+        }
         let mut top = recs[k].hi;
         let mut end = k + 1;
         while end < recs.len() && recs[end].lo <= top {
             top = top.max(recs[end].hi);
             end += 1;
         }
-        points += if end - k == 1 {
-            1
-        } else {
-            let mut events: Vec<EventPoint> =
-                recs[k..end].iter().map(|r| r.event(segments)).collect();
-            events.sort_unstable();
-            1 + events.windows(2).filter(|w| w[0] != w[1]).count()
-        };
+        let cluster = &recs[k..end];
         k = end;
-    }
-    points
+        Some(cluster)
+    })
+}
+
+/// The exact points of a cluster's records, sorted (equal points adjacent).
+fn sorted_events(segments: &[Segment2], cluster: &[Rec]) -> Vec<EventPoint> {
+    let mut events: Vec<EventPoint> = cluster.iter().map(|r| r.event(segments)).collect();
+    events.sort_unstable();
+    events
 }
 
 /// The count from the pairwise scan's records.
@@ -272,22 +288,13 @@ impl AlongSegments {
     /// The groups of exactly one record among the unit's records (all on one segment).
     fn single_groups(&mut self, segments: &[Segment2]) -> usize {
         sort_local(&self.local, &mut self.sorted, &mut self.counts);
-        let recs = &self.sorted;
-        let mut singles = 0;
-        let mut k = 0;
-        while k < recs.len() {
-            let mut top = recs[k].hi;
-            let mut end = k + 1;
-            while end < recs.len() && recs[end].lo <= top {
-                top = top.max(recs[end].hi);
-                end += 1;
-            }
-            singles += if end - k == 1 {
-                1
-            } else {
-                let mut events: Vec<EventPoint> =
-                    recs[k..end].iter().map(|r| r.event(segments)).collect();
-                events.sort_unstable();
+        clusters(&self.sorted)
+            .map(|cluster| {
+                if cluster.len() == 1 {
+                    return 1;
+                }
+                // Runs of equal points of length one.
+                let events = sorted_events(segments, cluster);
                 let mut run = 1;
                 let mut n = 0;
                 for w in 1..=events.len() {
@@ -299,10 +306,8 @@ impl AlongSegments {
                     }
                 }
                 n
-            };
-            k = end;
-        }
-        singles
+            })
+            .sum()
     }
 }
 
