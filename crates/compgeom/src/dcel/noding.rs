@@ -712,17 +712,7 @@ mod tests {
     }
 
     fn sweep_of(segs: &[Segment2], budget: usize) -> Option<XSweep> {
-        let boxes: Vec<[f64; 4]> = segs
-            .iter()
-            .map(|s| {
-                [
-                    s.a.x.min(s.b.x),
-                    s.a.x.max(s.b.x),
-                    s.a.y.min(s.b.y),
-                    s.a.y.max(s.b.y),
-                ]
-            })
-            .collect();
+        let boxes: Vec<[f64; 4]> = segs.iter().map(Segment2::bounds).collect();
         let lo = boxes.iter().map(|b| b[0]).fold(f64::INFINITY, f64::min);
         let hi = boxes.iter().map(|b| b[1]).fold(f64::NEG_INFINITY, f64::max);
         XSweep::new(segs, &boxes, lo, hi, budget)

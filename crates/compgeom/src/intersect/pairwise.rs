@@ -112,17 +112,7 @@ impl Grid {
 
     /// Bucket the segments (finite coordinates).
     pub(super) fn new(segments: &[Segment2]) -> Grid {
-        let boxes: Vec<[f64; 4]> = segments
-            .iter()
-            .map(|s| {
-                [
-                    s.a.x.min(s.b.x),
-                    s.a.x.max(s.b.x),
-                    s.a.y.min(s.b.y),
-                    s.a.y.max(s.b.y),
-                ]
-            })
-            .collect();
+        let boxes: Vec<[f64; 4]> = segments.iter().map(Segment2::bounds).collect();
         let count = boxes.len().max(1);
         let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         let mut mean = [0.0f64; 2];

@@ -123,6 +123,16 @@ impl Segment2 {
     pub fn is_degenerate(&self) -> bool {
         self.a == self.b
     }
+
+    /// The bounding box `[min x, max x, min y, max y]` (exact: comparisons only).
+    pub(crate) fn bounds(&self) -> [f64; 4] {
+        [
+            self.a.x.min(self.b.x),
+            self.a.x.max(self.b.x),
+            self.a.y.min(self.b.y),
+            self.a.y.max(self.b.y),
+        ]
+    }
 }
 
 /// The oriented line through two distinct points `p` and `q` (kept as the two points, so
