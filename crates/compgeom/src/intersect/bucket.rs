@@ -133,30 +133,67 @@ pub(super) fn sort_by_key_then<T: Copy + Send + Sync>(
 
 /// The concatenation of `parts` (the pieces a parallel scan produced), sorted as
 /// [`sort_by_key_then`] sorts (same contract for `key` and `cmp`).
-///
-/// Large inputs are sorted without concatenating first, every pass on the rayon pool:
-/// each part counts its records per coarse bucket, then scatters them straight into its
-/// own sub-range of each coarse bucket of the output (the output is cut into one slice
-/// per (bucket, part), so the parts write disjoint memory), then each coarse bucket is
-/// spread over its fine buckets through a small scratch buffer that stays in cache.
-/// Two buffers of the records in all (the parts and the output) instead of four, and
-/// no serial pass over them.
 pub(super) fn sort_parts<T: Copy + Send + Sync>(
     parts: Vec<Vec<T>>,
     key: impl Fn(&T) -> f64 + Sync,
     cmp: impl Fn(&T, &T) -> Ordering + Copy + Sync,
 ) -> Vec<T> {
     let n: usize = parts.iter().map(Vec::len).sum();
-    let Some(&filler) = parts.iter().find_map(|p| p.first()) else {
-        return Vec::new();
-    };
-    if n < PARALLEL_FROM || n >= u32::MAX as usize {
+    if n < PARALLEL_FROM {
         let mut all = Vec::with_capacity(n);
         for p in &parts {
             all.extend_from_slice(p);
         }
         sort_by_key_then(&mut all, key, cmp);
         return all;
+    }
+    sort_parts_then(parts, key, cmp, |_| 0).items
+}
+
+/// What [`sort_parts_then`] returns.
+pub(super) struct Buckets<T> {
+    /// All the items, sorted.
+    pub(super) items: Vec<T>,
+    /// Bucket `c` is `items[starts[c]..starts[c + 1]]`.
+    pub(super) starts: Vec<usize>,
+    /// What `then` returned for each bucket.
+    pub(super) tallies: Vec<usize>,
+}
+
+/// [`sort_parts`], then `then` on every coarse bucket while it is still in cache (a
+/// bucket holds a contiguous range of the sorted items, and items with equal keys are in
+/// the same bucket): a pass over the sorted items fused into the sort.
+///
+/// Every pass runs on the rayon pool: each part counts its records per coarse bucket,
+/// then scatters them straight into its own sub-range of each coarse bucket of the
+/// output (the output is cut into one slice per (bucket, part), so the parts write
+/// disjoint memory), then each coarse bucket is spread over its fine buckets through a
+/// small scratch buffer that stays in cache. Two buffers of the records in all (the
+/// parts and the output) instead of four, and no serial pass over them.
+pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
+    parts: Vec<Vec<T>>,
+    key: impl Fn(&T) -> f64 + Sync,
+    cmp: impl Fn(&T, &T) -> Ordering + Copy + Sync,
+    then: impl Fn(&mut [T]) -> usize + Sync,
+) -> Buckets<T> {
+    let n: usize = parts.iter().map(Vec::len).sum();
+    let Some(&filler) = parts.iter().find_map(|p| p.first()) else {
+        return Buckets {
+            items: Vec::new(),
+            starts: vec![0],
+            tallies: Vec::new(),
+        };
+    };
+    // (Bucket offsets are u32: beyond that, one bucket and a plain sort.)
+    if n >= u32::MAX as usize {
+        let mut all = parts.concat();
+        all.sort_unstable_by(cmp);
+        let tally = then(&mut all);
+        return Buckets {
+            items: all,
+            starts: vec![0, n],
+            tallies: vec![tally],
+        };
     }
     let range = |p: &Vec<T>| {
         p.iter()
@@ -188,7 +225,9 @@ pub(super) fn sort_parts<T: Copy + Send + Sync>(
             c
         })
         .collect();
-    let mut out = vec![filler; n];
+    // Filled on the pool: a serial fill of fresh memory was a pass of its own.
+    let mut out = Vec::with_capacity(n);
+    out.par_extend(rayon::iter::repeat_n(filler, n));
     // Bucket c holds out[start[c]..start[c + 1]]; within it, part 0's records first.
     let mut start = vec![0usize; coarse_count + 1];
     for c in 0..coarse_count {
@@ -227,47 +266,71 @@ pub(super) fn sort_parts<T: Copy + Send + Sync>(
         buckets.push((c, piece));
     }
     let width = 1usize << shift;
-    buckets.into_par_iter().with_min_len(16).for_each_init(
-        || (Vec::new(), Vec::new(), Vec::new()),
-        |(scratch, fines, local): &mut (Vec<T>, Vec<u32>, Vec<u32>), (c, bucket)| {
-            if bucket.len() <= 16 {
-                bucket.sort_unstable_by(cmp);
-                return;
-            }
-            // Spread over the fine buckets through the scratch copy, then sort each.
-            let base = c << shift;
-            scratch.clear();
-            scratch.extend_from_slice(bucket);
-            fines.clear();
-            fines.extend(scratch.iter().map(|t| (fine(t) - base) as u32));
-            local.clear();
-            local.resize(width + 1, 0);
-            for &f in fines.iter() {
-                local[f as usize + 1] += 1;
-            }
-            for f in 0..width {
-                local[f + 1] += local[f];
-            }
-            let mut at = local.clone();
-            for (t, &f) in scratch.iter().zip(fines.iter()) {
-                bucket[at[f as usize] as usize] = *t;
-                at[f as usize] += 1;
-            }
-            for w in local.windows(2) {
-                let fine_bucket = &mut bucket[w[0] as usize..w[1] as usize];
-                match fine_bucket.len() {
-                    0 | 1 => {}
-                    2 => {
-                        if cmp(&fine_bucket[1], &fine_bucket[0]) == Ordering::Less {
-                            fine_bucket.swap(0, 1);
-                        }
-                    }
-                    _ => fine_bucket.sort_unstable_by(cmp),
+    let mut tallies = vec![0usize; coarse_count];
+    buckets
+        .into_par_iter()
+        .zip(tallies.par_iter_mut())
+        .with_min_len(16)
+        .for_each_init(
+            || (Vec::new(), Vec::new(), Vec::new()),
+            |(scratch, fines, local): &mut (Vec<T>, Vec<u32>, Vec<u32>), ((c, bucket), tally)| {
+                finish_bucket(bucket, c << shift, width, &fine, cmp, scratch, fines, local);
+                *tally = then(bucket);
+            },
+        );
+    Buckets {
+        items: out,
+        starts: start,
+        tallies,
+    }
+}
+
+/// Sort one coarse bucket (fine buckets `base..base + width`): small ones directly,
+/// the others spread over their fine buckets through `scratch`, then each sorted.
+#[allow(clippy::too_many_arguments)]
+fn finish_bucket<T: Copy>(
+    bucket: &mut [T],
+    base: usize,
+    width: usize,
+    fine: impl Fn(&T) -> usize,
+    cmp: impl Fn(&T, &T) -> Ordering + Copy,
+    scratch: &mut Vec<T>,
+    fines: &mut Vec<u32>,
+    local: &mut Vec<u32>,
+) {
+    if bucket.len() <= 16 {
+        bucket.sort_unstable_by(cmp);
+        return;
+    }
+    scratch.clear();
+    scratch.extend_from_slice(bucket);
+    fines.clear();
+    fines.extend(scratch.iter().map(|t| (fine(t) - base) as u32));
+    local.clear();
+    local.resize(width + 1, 0);
+    for &f in fines.iter() {
+        local[f as usize + 1] += 1;
+    }
+    for f in 0..width {
+        local[f + 1] += local[f];
+    }
+    let mut at = local.clone();
+    for (t, &f) in scratch.iter().zip(fines.iter()) {
+        bucket[at[f as usize] as usize] = *t;
+        at[f as usize] += 1;
+    }
+    for w in local.windows(2) {
+        let fine_bucket = &mut bucket[w[0] as usize..w[1] as usize];
+        match fine_bucket.len() {
+            0 | 1 => {}
+            2 => {
+                if cmp(&fine_bucket[1], &fine_bucket[0]) == Ordering::Less {
+                    fine_bucket.swap(0, 1);
                 }
             }
-        },
-    );
-    out
+            _ => fine_bucket.sort_unstable_by(cmp),
+        }
+    }
 }
 
 #[cfg(test)]
