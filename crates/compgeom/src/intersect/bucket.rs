@@ -215,55 +215,67 @@ pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
         shift += 1;
     }
     let coarse_count = ((n - 1) >> shift) + 1;
-    let counts: Vec<Vec<u32>> = parts
+    // Each record's fine bucket, computed once (the key is most of the cost of a pass),
+    // and each part's count per coarse bucket.
+    let (fines, counts): (Vec<Vec<u32>>, Vec<Vec<u32>>) = parts
         .par_iter()
         .map(|p| {
+            let fines: Vec<u32> = p.iter().map(|t| fine(t) as u32).collect();
             let mut c = vec![0u32; coarse_count];
-            for t in p {
-                c[fine(t) >> shift] += 1;
+            for &f in &fines {
+                c[f as usize >> shift] += 1;
             }
-            c
+            (fines, c)
         })
-        .collect();
+        .unzip();
     // Filled on the pool: a serial fill of fresh memory was a pass of its own.
     let mut out = Vec::with_capacity(n);
     out.par_extend(rayon::iter::repeat_n(filler, n));
+    let mut out_fines = Vec::with_capacity(n);
+    out_fines.par_extend(rayon::iter::repeat_n(0u32, n));
     // Bucket c holds out[start[c]..start[c + 1]]; within it, part 0's records first.
     let mut start = vec![0usize; coarse_count + 1];
     for c in 0..coarse_count {
         start[c + 1] = start[c] + counts.iter().map(|k| k[c] as usize).sum::<usize>();
     }
     {
-        let mut rows: Vec<Vec<&mut [T]>> = (0..parts.len())
+        let mut rows: Vec<Vec<(&mut [T], &mut [u32])>> = (0..parts.len())
             .map(|_| Vec::with_capacity(coarse_count))
             .collect();
-        let mut rest = &mut out[..];
+        let (mut rest, mut rest_fines) = (&mut out[..], &mut out_fines[..]);
         for c in 0..coarse_count {
             for (row, k) in rows.iter_mut().zip(&counts) {
                 let (piece, tail) = rest.split_at_mut(k[c] as usize);
-                rest = tail;
-                row.push(piece);
+                let (piece_fines, tail_fines) = rest_fines.split_at_mut(k[c] as usize);
+                (rest, rest_fines) = (tail, tail_fines);
+                row.push((piece, piece_fines));
             }
         }
         parts
             .par_iter()
+            .zip(&fines)
             .zip(rows.into_par_iter())
-            .for_each(|(part, mut row)| {
+            .for_each(|((part, part_fines), mut row)| {
                 let mut fill = vec![0usize; coarse_count];
-                for t in part {
-                    let c = fine(t) >> shift;
-                    row[c][fill[c]] = *t;
+                for (t, &f) in part.iter().zip(part_fines) {
+                    let c = f as usize >> shift;
+                    let (to, to_fines) = &mut row[c];
+                    to[fill[c]] = *t;
+                    to_fines[fill[c]] = f;
                     fill[c] += 1;
                 }
             });
     }
     drop(parts);
+    drop(fines);
     let mut buckets = Vec::with_capacity(coarse_count);
-    let mut rest = &mut out[..];
+    let (mut rest, mut rest_fines) = (&mut out[..], &out_fines[..]);
     for c in 0..coarse_count {
-        let (piece, tail) = rest.split_at_mut(start[c + 1] - start[c]);
-        rest = tail;
-        buckets.push((c, piece));
+        let len = start[c + 1] - start[c];
+        let (piece, tail) = rest.split_at_mut(len);
+        let (piece_fines, tail_fines) = rest_fines.split_at(len);
+        (rest, rest_fines) = (tail, tail_fines);
+        buckets.push((c, piece, piece_fines));
     }
     let width = 1usize << shift;
     let mut tallies = vec![0usize; coarse_count];
@@ -272,9 +284,9 @@ pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
         .zip(tallies.par_iter_mut())
         .with_min_len(16)
         .for_each_init(
-            || (Vec::new(), Vec::new(), Vec::new()),
-            |(scratch, fines, local): &mut (Vec<T>, Vec<u32>, Vec<u32>), ((c, bucket), tally)| {
-                finish_bucket(bucket, c << shift, width, &fine, cmp, scratch, fines, local);
+            || (Vec::new(), Vec::new()),
+            |(scratch, local): &mut (Vec<T>, Vec<u32>), ((c, bucket, fines), tally)| {
+                finish_bucket(bucket, fines, c << shift, width, cmp, scratch, local);
                 *tally = then(bucket);
             },
         );
@@ -285,17 +297,16 @@ pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
     }
 }
 
-/// Sort one coarse bucket (fine buckets `base..base + width`): small ones directly,
-/// the others spread over their fine buckets through `scratch`, then each sorted.
-#[allow(clippy::too_many_arguments)]
+/// Sort one coarse bucket, whose items are in fine buckets `fines` (within
+/// `base..base + width`): small ones directly, the others spread over their fine
+/// buckets through `scratch`, then each sorted.
 fn finish_bucket<T: Copy>(
     bucket: &mut [T],
+    fines: &[u32],
     base: usize,
     width: usize,
-    fine: impl Fn(&T) -> usize,
     cmp: impl Fn(&T, &T) -> Ordering + Copy,
     scratch: &mut Vec<T>,
-    fines: &mut Vec<u32>,
     local: &mut Vec<u32>,
 ) {
     if bucket.len() <= 16 {
@@ -304,20 +315,19 @@ fn finish_bucket<T: Copy>(
     }
     scratch.clear();
     scratch.extend_from_slice(bucket);
-    fines.clear();
-    fines.extend(scratch.iter().map(|t| (fine(t) - base) as u32));
     local.clear();
     local.resize(width + 1, 0);
-    for &f in fines.iter() {
-        local[f as usize + 1] += 1;
+    for &f in fines {
+        local[f as usize - base + 1] += 1;
     }
     for f in 0..width {
         local[f + 1] += local[f];
     }
     let mut at = local.clone();
-    for (t, &f) in scratch.iter().zip(fines.iter()) {
-        bucket[at[f as usize] as usize] = *t;
-        at[f as usize] += 1;
+    for (t, &f) in scratch.iter().zip(fines) {
+        let f = f as usize - base;
+        bucket[at[f] as usize] = *t;
+        at[f] += 1;
     }
     for w in local.windows(2) {
         let fine_bucket = &mut bucket[w[0] as usize..w[1] as usize];
