@@ -35,8 +35,8 @@
 //! The arithmetic is written once, generic over how it forms the exact products
 //! `a·b = p + e` ([`Products`]): Dekker's product from Veltkamp's splits, or one fused
 //! multiply-add (`e = fl(a·b - p)`, exact). A build for the x86-64 baseline (no FMA)
-//! also compiles the fused instantiation inside functions with the `fma`, `avx` and
-//! `avx2` target features (the `fma` module) and calls them when the processor has
+//! also compiles the fused instantiation inside functions with the `fma` and `avx`
+//! target features (the `fma` module) and calls them when the processor has
 //! those features (detected once); elsewhere, and in builds whose target has FMA,
 //! the target's own choice is the only one. Both give the same bits: the analysis
 //! below needs only that the products are exact. On long random 1e3 the fused
@@ -538,7 +538,8 @@ fn round_crossing_of_with<P: Products>(
 /// The fast path compiled a second time, for x86-64 processors with FMA (nearly all
 /// since 2013) in a build for the baseline target, which has none: the same generic
 /// code with [`Fused`] products, in functions compiled with the target features and
-/// chosen at run time. (AVX and AVX2 come along for the three-operand VEX encoding.)
+/// chosen at run time. (FMA implies AVX, whose three-operand VEX encoding comes along;
+/// adding AVX2 changed nothing in this scalar code.)
 ///
 /// The crate's only `unsafe`: calling a function compiled for target features is
 /// sound exactly when the processor has them, which each call checks first.
@@ -551,15 +552,13 @@ mod fma {
     /// detection runs once; `std` caches it).
     #[inline]
     pub(super) fn available() -> bool {
-        std::arch::is_x86_feature_detected!("fma")
-            && std::arch::is_x86_feature_detected!("avx")
-            && std::arch::is_x86_feature_detected!("avx2")
+        std::arch::is_x86_feature_detected!("fma") && std::arch::is_x86_feature_detected!("avx")
     }
 
     /// [`super::round_crossing`] with fused products, where [`available`].
     #[inline]
     pub(super) fn round_crossing(c: &Crossing) -> Option<Point2> {
-        #[target_feature(enable = "fma,avx,avx2")]
+        #[target_feature(enable = "fma,avx")]
         unsafe fn fused(c: &Crossing) -> Point2 {
             round_crossing_with::<Fused>(c)
         }
@@ -575,7 +574,7 @@ mod fma {
         i: usize,
         j: usize,
     ) -> Option<Point2> {
-        #[target_feature(enable = "fma,avx,avx2")]
+        #[target_feature(enable = "fma,avx")]
         unsafe fn fused(segments: &[Segment2], table: &[Prepared], i: usize, j: usize) -> Point2 {
             round_crossing_of_with::<Fused>(segments, table, i, j)
         }
@@ -587,7 +586,7 @@ mod fma {
     /// lanes).
     #[cfg(test)]
     pub(super) fn certified<const L: usize>(cs: &[Crossing; L]) -> Option<(V<L>, V<L>, [bool; L])> {
-        #[target_feature(enable = "fma,avx,avx2")]
+        #[target_feature(enable = "fma,avx")]
         unsafe fn fused<const L: usize>(cs: &[Crossing; L]) -> (V<L>, V<L>, [bool; L]) {
             super::certified::<Fused, L>(cs)
         }
