@@ -210,7 +210,8 @@ trait Products {
 }
 
 /// Dekker's product from Veltkamp's splits of both operands: plain `f64` operations,
-/// for any processor.
+/// for any processor (only the tests use it in builds whose target has FMA).
+#[cfg_attr(target_feature = "fma", allow(dead_code))]
 struct Dekker;
 
 impl Products for Dekker {
