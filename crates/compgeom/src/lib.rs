@@ -34,7 +34,10 @@
 //! Every branch taken on geometry is decided exactly, for input points and for points an
 //! algorithm constructs. Coordinates are `f64`; non-finite input is rejected with an
 //! [`Error`] that says where it was found.
-#![forbid(unsafe_code)]
+// (`deny`, not `forbid`: one module, `intersect::round::fma`, allows itself the calls
+// into functions compiled for FMA once the processor is known to have it; nothing else
+// may use `unsafe`.)
+#![deny(unsafe_code)]
 #![deny(missing_docs)]
 #![deny(rustdoc::broken_intra_doc_links)]
 

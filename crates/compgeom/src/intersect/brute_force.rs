@@ -8,7 +8,7 @@
 use super::bucket;
 use super::list::defining_second;
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
-use super::round::{round_crossing_of, Prepared};
+use super::round::{round_crossing_of, round_crossings_of, Prepared};
 use super::small_int::{self, Hom};
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
@@ -32,6 +32,7 @@ pub fn brute_force_intersections(segments: &[Segment2]) -> Result<Intersections>
             found.test(segments, &table, i, j, f64::INFINITY);
         }
     }
+    found.flush(segments, &table);
     Ok(found.assemble(segments))
 }
 
@@ -137,7 +138,15 @@ pub(crate) fn check_count(segments: &[Segment2]) -> Result<()> {
 pub(crate) struct PairResults {
     records: Vec<Record>,
     overlapping: Vec<(usize, usize)>,
+    /// Proper crossings found and not yet rounded (the first `pending_len`): rounded
+    /// [`LANES`] at a time, whose independent lanes overlap; the rest by
+    /// [`PairResults::flush`].
+    pending: [(usize, usize); LANES],
+    pending_len: usize,
 }
+
+/// How many crossings are rounded together.
+const LANES: usize = 8;
 
 /// From this many records on, sorting and building the points run on the rayon pool.
 const PARALLEL_ASSEMBLY_FROM: usize = 50_000;
@@ -160,20 +169,14 @@ impl PairResults {
         // Most pairs are decided by the inlined filters; the rest by the exact test.
         match quick_crossing_static(s, t, bound) {
             Some(false) => return,
-            Some(true) => {
-                let p = round_crossing_of(segments, table, i, j);
-                return self.records.push(Record::new(p, i, j, true));
-            }
+            Some(true) => return self.push_crossing(segments, table, i, j),
             None => {}
         }
         match segment_intersection(s, t) {
             SegmentIntersection::None => {}
             SegmentIntersection::Endpoint(q) => self.records.push(Record::new(q, i, j, false)),
             // (The crossing point does not depend on the order of the two segments.)
-            SegmentIntersection::Crossing(_) => {
-                let p = round_crossing_of(segments, table, i, j);
-                self.records.push(Record::new(p, i, j, true))
-            }
+            SegmentIntersection::Crossing(_) => self.push_crossing(segments, table, i, j),
             SegmentIntersection::Overlap(a, b) => {
                 self.records.push(Record::new(a, i, j, false));
                 self.records.push(Record::new(b, i, j, false));
@@ -182,11 +185,35 @@ impl PairResults {
         }
     }
 
+    /// Record the proper crossing of `i < j`, rounded now or with the next ones.
+    #[inline]
+    fn push_crossing(&mut self, segments: &[Segment2], table: &[Prepared], i: usize, j: usize) {
+        self.pending[self.pending_len] = (i, j);
+        self.pending_len += 1;
+        if self.pending_len == LANES {
+            let points = round_crossings_of(segments, table, &self.pending);
+            for (&p, &(i, j)) in points.iter().zip(&self.pending) {
+                self.records.push(Record::new(p, i, j, true));
+            }
+            self.pending_len = 0;
+        }
+    }
+
+    /// Round and record the crossings still pending: due after the last
+    /// [`PairResults::test`], before the records are read.
+    pub(crate) fn flush(&mut self, segments: &[Segment2], table: &[Prepared]) {
+        for &(i, j) in &self.pending[..self.pending_len] {
+            let p = round_crossing_of(segments, table, i, j);
+            self.records.push(Record::new(p, i, j, true));
+        }
+        self.pending_len = 0;
+    }
+
     /// Empty results with room for `records` records.
     pub(crate) fn with_capacity(records: usize) -> PairResults {
         PairResults {
             records: Vec::with_capacity(records),
-            overlapping: Vec::new(),
+            ..PairResults::default()
         }
     }
 
@@ -204,6 +231,7 @@ impl PairResults {
             return PairResults {
                 records: bucket::sort_parts(records, record_key, Record::cmp),
                 overlapping,
+                ..PairResults::default()
             }
             .assemble_sorted(segments);
         }

@@ -555,6 +555,7 @@ pub(crate) fn intersections_on(segments: &[Segment2], pairs: &Pairs) -> Intersec
     let table = Prepared::table(segments);
     let scan = |k: usize, found: &mut PairResults| {
         pairs.scan_from(k, |i, j| found.test(segments, &table, i, j, bound));
+        found.flush(segments, &table);
     };
     let candidates = pairs.candidates();
     let found = if candidates < PARALLEL_SCAN_FROM {
