@@ -472,15 +472,19 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 }
 
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
-/// `BOOLEAN_INPUT=star|squares|water|dissolve`, `BOOLEAN_REPS` for the dissolve): run one
-/// contender once on the star union, the squares input, the water map union or the
-/// GEOS-837 dissolve (`union_all`), for instruction counts (`valgrind
-/// --tool=callgrind`).
+/// `BOOLEAN_INPUT=star|squares|water|jts|dissolve`, `BOOLEAN_REPS` calls except for the
+/// squares): run one contender on the star union, the squares input, the water map
+/// union, the unions of the 52 JTS pairs or the GEOS-837 dissolve (`union_all`), for
+/// instruction counts (`valgrind --tool=callgrind`).
 fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     let n: usize = std::env::var("BOOLEAN_N")
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(100_000);
+    let reps: usize = std::env::var("BOOLEAN_REPS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1);
     let squares = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "squares");
     if squares {
         let sq = random_squares(rng, n);
@@ -505,10 +509,6 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         let pa = io_paths_oriented(&d.a);
         let empty: Vec<Vec<[f64; 2]>> = Vec::new();
         let gs = geo_poly(&d.a).0;
-        let reps: usize = std::env::var("BOOLEAN_REPS")
-            .ok()
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(1);
         for _ in 0..reps {
             match who {
                 "ours" => drop(black_box(union_all(&d.a).map_err(|e| e.to_string())?)),
@@ -518,6 +518,36 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
                     FillRule::NonZero,
                 ))),
                 _ => drop(black_box(geo::unary_union(gs.iter()))),
+            }
+        }
+        return Ok(());
+    }
+    if std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "jts") {
+        let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
+        let jts = real_maps::jts_robust_pairs(&dir);
+        let io: Vec<_> = jts
+            .iter()
+            .map(|p| (io_paths(&p.a), io_paths(&p.b)))
+            .collect();
+        let geo: Vec<_> = jts
+            .iter()
+            .map(|p| (geo_poly(&p.a), geo_poly(&p.b)))
+            .collect();
+        for _ in 0..reps {
+            for (k, p) in jts.iter().enumerate() {
+                match who {
+                    "ours" => drop(black_box(
+                        boolean(&p.a, &p.b, BooleanOp::Union).map_err(|e| e.to_string())?,
+                    )),
+                    "io" => drop(black_box(io[k].0.overlay(
+                        &io[k].1,
+                        OverlayRule::Union,
+                        FillRule::EvenOdd,
+                    ))),
+                    _ => drop(black_box(
+                        geo[k].0.boolean_op(&geo[k].1, geo::OpType::Union),
+                    )),
+                }
             }
         }
         return Ok(());
@@ -533,21 +563,19 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
             MultiPolygon(vec![Polygon::new(star(rng, n, 0.3, 0.0), vec![])]),
         )
     };
-    match who {
-        "ours" => drop(black_box(
-            boolean(&a, &b, BooleanOp::Union).map_err(|e| e.to_string())?,
-        )),
-        "io" => {
-            let (pa, pb) = (io_paths(&a), io_paths(&b));
-            drop(black_box(pa.overlay(
+    let (pa, pb) = (io_paths(&a), io_paths(&b));
+    let (ga, gb) = (geo_poly(&a), geo_poly(&b));
+    for _ in 0..reps {
+        match who {
+            "ours" => drop(black_box(
+                boolean(&a, &b, BooleanOp::Union).map_err(|e| e.to_string())?,
+            )),
+            "io" => drop(black_box(pa.overlay(
                 &pb,
                 OverlayRule::Union,
                 FillRule::EvenOdd,
-            )))
-        }
-        _ => {
-            let (ga, gb) = (geo_poly(&a), geo_poly(&b));
-            drop(black_box(ga.boolean_op(&gb, geo::OpType::Union)))
+            ))),
+            _ => drop(black_box(ga.boolean_op(&gb, geo::OpType::Union))),
         }
     }
     Ok(())

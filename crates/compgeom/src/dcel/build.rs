@@ -303,50 +303,87 @@ pub fn polygon_segments(polygons: &MultiPolygon) -> Result<(Vec<Segment2>, Vec<u
     let mut owner = Vec::new();
     for (pi, poly) in polygons.0.iter().enumerate() {
         for (ri, ring) in poly.rings().enumerate() {
-            let what = || {
-                if ri == 0 {
-                    format!("polygon {pi} exterior")
-                } else {
-                    format!("polygon {pi} hole {}", ri - 1)
-                }
-            };
-            if let Some(p) = ring.iter().find(|p| !p.is_finite()) {
-                let value = if p.x.is_finite() { p.y } else { p.x };
-                return Err(Error::NonFinite {
-                    what: what(),
-                    value,
-                });
-            }
-            let mut r: &[Point2] = ring;
-            if r.len() > 1 && r[0] == r[r.len() - 1] {
-                r = &r[..r.len() - 1];
-            }
-            // Three distinct points, found in one pass: the first point, the first one
-            // different from it, the first one different from both.
-            let first = r.first().map(|&p| key(p));
-            let second = first.and_then(|f| r.iter().map(|&p| key(p)).find(|&k| k != f));
-            let third = second.and_then(|s| {
-                r.iter()
-                    .map(|&p| key(p))
-                    .find(|&k| Some(k) != first && k != s)
-            });
-            if third.is_none() {
-                let distinct = usize::from(first.is_some()) + usize::from(second.is_some());
-                return Err(Error::InvalidInput(format!(
-                    "{}: a ring needs at least 3 distinct points, found {distinct}",
-                    what(),
-                )));
-            }
-            for i in 0..r.len() {
-                let s = Segment2::new(r[i], r[(i + 1) % r.len()]);
-                if !s.is_degenerate() {
-                    segs.push(s);
-                    owner.push(pi);
-                }
-            }
+            push_ring_segments(pi, ri, ring, false, &mut segs)?;
+            owner.resize(segs.len(), pi);
         }
     }
     Ok((segs, owner))
+}
+
+/// Append the segments [`polygon_segments`] gives for ring `ri` of polygon `pi` (the
+/// same checks and errors), or with `reversed` those it gives for the reversed ring,
+/// without building that ring.
+pub(crate) fn push_ring_segments(
+    pi: usize,
+    ri: usize,
+    ring: &[Point2],
+    reversed: bool,
+    segs: &mut Vec<Segment2>,
+) -> Result<()> {
+    let what = || {
+        if ri == 0 {
+            format!("polygon {pi} exterior")
+        } else {
+            format!("polygon {pi} hole {}", ri - 1)
+        }
+    };
+    // The first non-finite point in ring order (a reversed ring reports its own first).
+    let mut bad = ring.iter().filter(|p| !p.is_finite());
+    if let Some(p) = if reversed {
+        bad.next_back()
+    } else {
+        bad.next()
+    } {
+        let value = if p.x.is_finite() { p.y } else { p.x };
+        return Err(Error::NonFinite {
+            what: what(),
+            value,
+        });
+    }
+    let mut r: &[Point2] = ring;
+    // Reversed or not, the ring is closed exactly when its two ends are equal; reversed,
+    // the end dropped is `ring[0]`, so the remaining points start at `ring[len − 1]`.
+    let closed = r.len() > 1 && r[0] == r[r.len() - 1];
+    if closed {
+        r = if reversed { &r[1..] } else { &r[..r.len() - 1] };
+    }
+    // Three distinct points, found in one pass: the first point, the first one different
+    // from it, the first one different from both (whether there are three does not
+    // depend on the order, nor does the count in the error).
+    let first = r.first().map(|&p| key(p));
+    let second = first.and_then(|f| r.iter().map(|&p| key(p)).find(|&k| k != f));
+    let third = second.and_then(|s| {
+        r.iter()
+            .map(|&p| key(p))
+            .find(|&k| Some(k) != first && k != s)
+    });
+    if third.is_none() {
+        let distinct = usize::from(first.is_some()) + usize::from(second.is_some());
+        return Err(Error::InvalidInput(format!(
+            "{}: a ring needs at least 3 distinct points, found {distinct}",
+            what(),
+        )));
+    }
+    let n = r.len();
+    segs.reserve(n);
+    if reversed {
+        // The reversed sequence r[n − 1], …, r[0]: segment i runs from r[n − 1 − i] to
+        // r[n − 2 − i], the last from r[0] back to r[n − 1].
+        for i in (0..n).rev() {
+            let s = Segment2::new(r[i], r[(i + n - 1) % n]);
+            if !s.is_degenerate() {
+                segs.push(s);
+            }
+        }
+    } else {
+        for i in 0..n {
+            let s = Segment2::new(r[i], r[(i + 1) % n]);
+            if !s.is_degenerate() {
+                segs.push(s);
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Link half-edges around vertices, form cycles and faces.

@@ -46,6 +46,7 @@ mod holes;
 mod noding;
 mod validate;
 
+pub(crate) use build::push_ring_segments;
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
 pub use export::exact_coords;
 pub(crate) use flat::Flat;

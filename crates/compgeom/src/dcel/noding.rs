@@ -47,6 +47,7 @@
 use super::build::Source;
 use super::flat::{Flat, Pieces};
 use super::holes::{compare_xy_filtered, Rounded};
+use crate::delaunay::EdgeMap;
 use crate::intersect::{prefer_pairwise, round_crossing, PARALLEL_SCAN_FROM};
 use crate::kernel::{
     compare_xy, orient2d, orient_static, quick_crossing_static, static_orient_bound, Crossing,
@@ -54,8 +55,8 @@ use crate::kernel::{
 };
 use crate::Result;
 use rayon::prelude::*;
+use std::borrow::Cow;
 use std::cmp::Ordering;
-use std::collections::HashMap;
 
 const NONE: u32 = u32::MAX;
 
@@ -95,6 +96,7 @@ impl Found {
             return;
         }
         let mut shared = None;
+        let mut ends_shared = 0;
         for (x, p, far_s) in [(0, s.a, s.b), (1, s.b, s.a)] {
             for (y, q, far_t) in [(0, t.a, t.b), (1, t.b, t.a)] {
                 if p == q {
@@ -103,8 +105,14 @@ impl Found {
                         self.same.push((2 * i32_ + x, 2 * j32 + y));
                     }
                     shared = Some((p, far_s, far_t));
+                    ends_shared += 1;
                 }
             }
+        }
+        if ends_shared == 2 {
+            // The same segment twice (an edge two rings share, common in maps): an
+            // overlap whose ends are ends of both, so it cuts neither.
+            return self.overlapping.push((i32_, j32));
         }
         if let Some((p, far_s, far_t)) = shared {
             // Not collinear: the lines meet only at p, an end of both (the static filter
@@ -230,6 +238,17 @@ fn max2(a: f64, b: f64) -> f64 {
     }
 }
 
+/// The bounding box `[min x, max x, min y, max y]` of a segment.
+#[inline(always)]
+fn box_of(s: &Segment2) -> [f64; 4] {
+    [
+        min2(s.a.x, s.b.x),
+        max2(s.a.x, s.b.x),
+        min2(s.a.y, s.b.y),
+        max2(s.a.y, s.b.y),
+    ]
+}
+
 /// `map` over `items` in order, on the rayon pool when `parallel`.
 fn map_vec<T: Sync, U: Send>(
     items: &[T],
@@ -244,17 +263,10 @@ fn map_vec<T: Sync, U: Send>(
 }
 
 impl XSweep {
-    /// The sweep order of the segments `sub` with bounding boxes `boxes` and x-extent
-    /// `lo..=hi`, or `None` when it would look at more than `budget` pairs (long
-    /// segments, or many separated in y only) or the x-extent is zero or overflows.
-    /// O(n + pairs looked at).
-    fn new(
-        sub: &[Segment2],
-        boxes: &[[f64; 4]],
-        lo: f64,
-        hi: f64,
-        budget: usize,
-    ) -> Option<XSweep> {
+    /// The sweep order of the segments `sub` with x-extent `lo..=hi`, or `None` when it
+    /// would look at more than `budget` pairs (long segments, or many separated in y
+    /// only) or the x-extent is zero or overflows. O(n + pairs looked at).
+    fn new(sub: &[Segment2], lo: f64, hi: f64, budget: usize) -> Option<XSweep> {
         let n = sub.len();
         let size = hi - lo;
         if !(size.is_finite() && size > 0.0) {
@@ -268,7 +280,7 @@ impl XSweep {
         let last = buckets as u32 - 1;
         let bucket = |x: f64| (((x - lo) * inv) as u32).min(last);
         // Counting sort by left bucket, index order within a bucket.
-        let left_of: Vec<u32> = map_vec(boxes, parallel, |b| bucket(b[0]));
+        let left_of: Vec<u32> = map_vec(sub, parallel, |s| bucket(min2(s.a.x, s.b.x)));
         let mut start = vec![0u32; buckets + 1];
         for &b in &left_of {
             start[b as usize + 1] += 1;
@@ -285,7 +297,8 @@ impl XSweep {
         let left: Vec<u32> = map_vec(&ids, parallel, |&i| left_of[i as usize]);
         drop(left_of);
         let segs: Vec<Segment2> = map_vec(&ids, parallel, |&i| sub[i as usize]);
-        let boxes: Vec<[f64; 4]> = map_vec(&ids, parallel, |&i| boxes[i as usize]);
+        // The boxes only in sweep order (built here, not permuted: less memory).
+        let boxes: Vec<[f64; 4]> = map_vec(&ids, parallel, |&i| box_of(&sub[i as usize]));
         let mut looked = 0usize;
         let mut stop = Vec::with_capacity(n);
         for (p, b) in boxes.iter().enumerate() {
@@ -316,20 +329,40 @@ impl XSweep {
     #[inline(always)]
     fn scan_one(&self, p: usize, found: &mut Found, bound: f64) {
         let (a, s, i) = (self.boxes[p], self.segs[p], self.ids[p]);
-        for q in p + 1..self.stop[p] as usize {
-            let b = &self.boxes[q];
-            if b[0] > a[1] || a[0] > b[1] || b[2] > a[3] || a[2] > b[3] {
-                continue;
+        let end = self.stop[p] as usize;
+        // The box tests first, without branches (their outcome is a coin toss for the
+        // branch predictor: most of the scan's time was mispredictions), writing the
+        // overlapping entries to `hits` in order; then the pair tests in that order.
+        const CHUNK: usize = 32;
+        let mut hits = [0u32; CHUNK];
+        let mut from = p + 1;
+        while from < end {
+            let to = end.min(from + CHUNK);
+            let mut k = 0;
+            for (q, b) in self.boxes[from..to].iter().enumerate() {
+                let apart = (b[0] > a[1]) | (a[0] > b[1]) | (b[2] > a[3]) | (a[2] > b[3]);
+                // (k < CHUNK always; the mask lets the compiler drop the bounds check.)
+                hits[k & (CHUNK - 1)] = (from + q) as u32;
+                k += usize::from(!apart);
             }
-            let (t, j) = (self.segs[q], self.ids[q]);
-            let (s, t, i, j) = if i < j { (s, t, i, j) } else { (t, s, j, i) };
-            // Consecutive ring edges (the common pair), inlined here: joined at
-            // s.b = t.a without a record, and meeting only there unless collinear.
-            if j == i + 1 && s.b == t.a && orient_static(s.a, s.b, t.b, bound) != 0 {
-                continue;
+            from = to;
+            for &q in &hits[..k] {
+                self.test_pair(s, i, q as usize, found, bound);
             }
-            found.test(s, t, i, j, bound);
         }
+    }
+
+    /// Test entry `q` against segment `s` = number `i` (their boxes overlap).
+    #[inline(always)]
+    fn test_pair(&self, s: Segment2, i: u32, q: usize, found: &mut Found, bound: f64) {
+        let (t, j) = (self.segs[q], self.ids[q]);
+        let (s, t, i, j) = if i < j { (s, t, i, j) } else { (t, s, j, i) };
+        // Consecutive ring edges (the common pair), inlined here: joined at
+        // s.b = t.a without a record, and meeting only there unless collinear.
+        if j == i + 1 && s.b == t.a && orient_static(s.a, s.b, t.b, bound) != 0 {
+            return;
+        }
+        found.test(s, t, i, j, bound);
     }
 }
 
@@ -355,16 +388,24 @@ impl Flat {
     /// [`Flat::noded`] with the candidate pairs from `how`; every choice gives the same
     /// arrangement, numbered alike.
     pub(crate) fn noded_by(segments: &[Segment2], how: Candidates) -> Result<Flat> {
-        let kept: Vec<usize> = (0..segments.len())
-            .filter(|&i| !segments[i].is_degenerate())
-            .collect();
+        // The segments that are not points, and their input numbers (`None`: all of
+        // them, the usual case, with no copy).
+        let (sub, kept): (Cow<[Segment2]>, Option<Vec<usize>>) =
+            if segments.iter().any(Segment2::is_degenerate) {
+                let kept: Vec<usize> = (0..segments.len())
+                    .filter(|&i| !segments[i].is_degenerate())
+                    .collect();
+                let sub = kept.iter().map(|&i| segments[i]).collect();
+                (Cow::Owned(sub), Some(kept))
+            } else {
+                (Cow::Borrowed(segments), None)
+            };
         // Item ids below are u32: 2 per segment plus the contacts.
-        if kept.len() >= 1 << 29 {
+        if sub.len() >= 1 << 29 {
             return Flat::general(segments);
         }
-        let sub: Vec<Segment2> = kept.iter().map(|&i| segments[i]).collect();
         match found_by(&sub, how) {
-            Some(found) => Ok(assemble(&sub, &kept, found)),
+            Some(found) => Ok(assemble(&sub, kept.as_deref(), found)),
             None => Flat::general(segments),
         }
     }
@@ -374,16 +415,9 @@ impl Flat {
 /// from the candidates of `how`; `None` when the grid would test too many pairs or the
 /// item ids would not fit in `u32` (the intersection sweep then does it all).
 fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
-    let boxes: Vec<[f64; 4]> = map_vec(sub, sub.len() >= PARALLEL_SWEEP_FROM, |s| {
-        [
-            min2(s.a.x, s.b.x),
-            max2(s.a.x, s.b.x),
-            min2(s.a.y, s.b.y),
-            max2(s.a.y, s.b.y),
-        ]
-    });
     let inf = f64::INFINITY;
-    let e = boxes.iter().fold([inf, -inf, inf, -inf], |e, b| {
+    let e = sub.iter().fold([inf, -inf, inf, -inf], |e, s| {
+        let b = box_of(s);
         [
             min2(e[0], b[0]),
             max2(e[1], b[1]),
@@ -395,17 +429,12 @@ fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
     let m = max2(max2(-e[0], e[1]), max2(-e[2], e[3]));
     let bound = static_orient_bound(m);
     let sweep = match how {
-        Candidates::Auto => XSweep::new(
-            sub,
-            &boxes,
-            e[0],
-            e[1],
-            SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024,
-        ),
-        Candidates::Sweep => XSweep::new(sub, &boxes, e[0], e[1], usize::MAX),
+        Candidates::Auto => {
+            XSweep::new(sub, e[0], e[1], SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024)
+        }
+        Candidates::Sweep => XSweep::new(sub, e[0], e[1], usize::MAX),
         Candidates::Grid => None,
     };
-    drop(boxes);
     let found = if let Some(sweep) = sweep {
         let n = sub.len();
         if n < PARALLEL_SWEEP_FROM {
@@ -473,7 +502,9 @@ fn union(parent: &mut [u32], a: u32, b: u32) {
 /// Work over all segments is a few plain passes; everything that depends on the contacts
 /// (exact points, cut order, representatives) is O(K log K) for K contacts. Vertices are
 /// numbered in order of first use by the edges, as they are made.
-fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
+fn assemble(sub: &[Segment2], kept: Option<&[usize]>, found: Found) -> Flat {
+    // The input number of segment k of `sub`.
+    let input = |k: usize| kept.map_or(k, |kept| kept[k]);
     let m = sub.len();
     let contacts = &found.contacts;
     let k_count = contacts.len();
@@ -601,7 +632,8 @@ fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
         }
         vertex_of[r]
     };
-    let mut merged: HashMap<(u32, u32), u32> = HashMap::new();
+    // Keyed by vertex pair; a multiply–rotate hash (SipHash was most of the merge).
+    let mut merged = EdgeMap::default();
     let mut pieces = Pieces {
         edges: Vec::with_capacity(m + cuts.len()),
         pairs: Vec::with_capacity(m + cuts.len()),
@@ -633,7 +665,7 @@ fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
                 pieces.pairs.push((
                     pieces.edges.len() as u32,
                     Source {
-                        segment: kept[k],
+                        segment: input(k),
                         forward: true,
                     },
                 ));
@@ -648,7 +680,7 @@ fn assemble(sub: &[Segment2], kept: &[usize], found: Found) -> Flat {
             pieces.pairs.push((
                 e,
                 Source {
-                    segment: kept[k],
+                    segment: input(k),
                     forward,
                 },
             ));
@@ -715,7 +747,7 @@ mod tests {
         let boxes: Vec<[f64; 4]> = segs.iter().map(Segment2::bounds).collect();
         let lo = boxes.iter().map(|b| b[0]).fold(f64::INFINITY, f64::min);
         let hi = boxes.iter().map(|b| b[1]).fold(f64::NEG_INFINITY, f64::max);
-        XSweep::new(segs, &boxes, lo, hi, budget)
+        XSweep::new(segs, lo, hi, budget)
     }
 
     /// Long segments spanning the x-extent make the sweep look at Θ(n²) pairs: the budget

@@ -52,6 +52,8 @@
 
 mod cdt;
 mod constrain;
+/// The fast edge-key map (also used by the arrangement's merge of overlapping pieces).
+pub(crate) use constrain::EdgeMap;
 mod emst;
 mod fast;
 mod incremental;

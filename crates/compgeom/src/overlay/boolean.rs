@@ -32,9 +32,9 @@
 //! hole-linking sweep (see [`crate::dcel`]).
 #[cfg(test)]
 use super::result::faces_to_polygons;
-use crate::dcel::{polygon_segments, Carrier, Dcel, Flat};
+use crate::dcel::{push_ring_segments, Carrier, Dcel, Flat};
 use crate::io::ring_orientation;
-use crate::kernel::{MultiPolygon, Orientation, Polygon, Segment2};
+use crate::kernel::{MultiPolygon, Orientation, Segment2};
 use crate::Result;
 
 /// The four operations.
@@ -110,32 +110,37 @@ pub struct BooleanEdge {
     pub carrier: Carrier,
 }
 
-/// The segments of a polygon set, oriented for the fill rule.
-pub(super) fn oriented_segments(p: &MultiPolygon, rule: FillRule) -> Result<Vec<Segment2>> {
-    if rule != FillRule::Positive {
-        return Ok(polygon_segments(p)?.0);
+/// The segments of the polygon sets `a` and `b`, each oriented for the fill rule, in one
+/// vector, and the number from `a`: [`crate::dcel::polygon_segments`] of each (of each with its rings
+/// turned, for [`FillRule::Positive`]), without copying rings or listing owners.
+pub(super) fn oriented_segments(
+    a: &MultiPolygon,
+    b: &MultiPolygon,
+    rule: FillRule,
+) -> Result<(Vec<Segment2>, usize)> {
+    let points =
+        |p: &MultiPolygon| -> usize { p.0.iter().flat_map(|q| q.rings()).map(Vec::len).sum() };
+    let mut segs = Vec::with_capacity(points(a) + points(b));
+    push_oriented(a, rule, &mut segs)?;
+    let na = segs.len();
+    push_oriented(b, rule, &mut segs)?;
+    Ok((segs, na))
+}
+
+/// Append the segments of `p`'s rings; for [`FillRule::Positive`] each exterior turned
+/// counter-clockwise and each hole clockwise first, by the exact sign of its area.
+fn push_oriented(p: &MultiPolygon, rule: FillRule, segs: &mut Vec<Segment2>) -> Result<()> {
+    for (pi, poly) in p.0.iter().enumerate() {
+        for (ri, ring) in poly.rings().enumerate() {
+            let reversed = rule == FillRule::Positive && {
+                let o = ring_orientation(ring);
+                let ccw = ri == 0;
+                (o == Orientation::Clockwise && ccw) || (o == Orientation::CounterClockwise && !ccw)
+            };
+            push_ring_segments(pi, ri, ring, reversed, segs)?;
+        }
     }
-    let fixed = MultiPolygon(
-        p.0.iter()
-            .map(|poly| {
-                let orient = |r: &Vec<crate::Point2>, ccw: bool| {
-                    let o = ring_orientation(r);
-                    let flip = (o == Orientation::Clockwise && ccw)
-                        || (o == Orientation::CounterClockwise && !ccw);
-                    let mut r = r.clone();
-                    if flip {
-                        r.reverse();
-                    }
-                    r
-                };
-                Polygon::new(
-                    orient(&poly.exterior, true),
-                    poly.holes.iter().map(|h| orient(h, false)).collect(),
-                )
-            })
-            .collect(),
-    );
-    Ok(polygon_segments(&fixed)?.0)
+    Ok(())
 }
 
 /// The arrangement of both inputs with every face labelled by its winding numbers
@@ -146,9 +151,7 @@ pub fn boolean_dcel(
     b: &MultiPolygon,
     rule: FillRule,
 ) -> Result<Dcel<(), BooleanEdge, (i32, i32)>> {
-    let mut segs = oriented_segments(a, rule)?;
-    let na = segs.len();
-    segs.extend(oriented_segments(b, rule)?);
+    let (segs, na) = oriented_segments(a, b, rule)?;
     let flat = Flat::of_segments(&segs)?;
     let d = Dcel::linked_flat(
         flat,
@@ -199,9 +202,7 @@ pub fn boolean_with(
     opts: &BooleanOptions,
 ) -> Result<MultiPolygon> {
     let rule = opts.fill_rule;
-    let mut segs = oriented_segments(a, rule)?;
-    let na = segs.len();
-    segs.extend(oriented_segments(b, rule)?);
+    let (segs, na) = oriented_segments(a, b, rule)?;
     super::trace::traced_boolean(
         &segs,
         na,
@@ -271,4 +272,105 @@ pub fn make_valid(polygons: &MultiPolygon, rule: FillRule) -> Result<MultiPolygo
             keep_collinear: false,
         },
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dcel::polygon_segments;
+    use crate::Point2;
+    use proptest::prelude::*;
+
+    /// The segments as they were built before [`oriented_segments`] worked in place: each
+    /// ring cloned and reversed where needed, then [`polygon_segments`] of each set.
+    fn by_copies(a: &MultiPolygon, b: &MultiPolygon, rule: FillRule) -> Result<Vec<Segment2>> {
+        let one = |p: &MultiPolygon| -> Result<Vec<Segment2>> {
+            if rule != FillRule::Positive {
+                return Ok(polygon_segments(p)?.0);
+            }
+            let orient = |r: &Vec<Point2>, ccw: bool| {
+                let o = ring_orientation(r);
+                let mut r = r.clone();
+                if (o == Orientation::Clockwise && ccw)
+                    || (o == Orientation::CounterClockwise && !ccw)
+                {
+                    r.reverse();
+                }
+                r
+            };
+            let fixed = MultiPolygon(
+                p.0.iter()
+                    .map(|q| {
+                        crate::Polygon::new(
+                            orient(&q.exterior, true),
+                            q.holes.iter().map(|h| orient(h, false)).collect(),
+                        )
+                    })
+                    .collect(),
+            );
+            Ok(polygon_segments(&fixed)?.0)
+        };
+        let mut segs = one(a)?;
+        segs.extend(one(b)?);
+        Ok(segs)
+    }
+
+    /// Rings on a coarse grid (repeated and collinear points, closed or open, too few
+    /// distinct points), scaled to tiny or huge magnitudes, with `-0.0` and now and then
+    /// a non-finite coordinate.
+    fn ring() -> impl Strategy<Value = Vec<Point2>> {
+        (
+            prop::collection::vec((-2i32..3, -2i32..3), 0..8),
+            any::<bool>(),
+            prop::sample::select(vec![1.0, 1e-300, 1e300, -0.5]),
+            0u8..20,
+        )
+            .prop_map(|(pts, close, scale, bad)| {
+                let mut r: Vec<Point2> = pts
+                    .iter()
+                    .map(|&(x, y)| {
+                        let c = |v: i32| if v == 0 { -0.0 } else { f64::from(v) * scale };
+                        Point2::new(c(x), c(y))
+                    })
+                    .collect();
+                if close && !r.is_empty() {
+                    r.push(r[0]);
+                }
+                if bad == 0 && !r.is_empty() {
+                    let k = pts.len() / 2;
+                    r[k].y = f64::NAN;
+                }
+                r
+            })
+    }
+
+    fn set() -> impl Strategy<Value = MultiPolygon> {
+        prop::collection::vec((ring(), prop::collection::vec(ring(), 0..3)), 0..3).prop_map(|ps| {
+            MultiPolygon(
+                ps.into_iter()
+                    .map(|(e, h)| crate::Polygon::new(e, h))
+                    .collect(),
+            )
+        })
+    }
+
+    proptest! {
+        /// In place (rings read backwards where they are turned) gives the segments, their
+        /// order and the errors of copying the turned rings.
+        #[test]
+        fn oriented_segments_match_turned_copies(a in set(), b in set()) {
+            for rule in [FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive] {
+                let fast = oriented_segments(&a, &b, rule);
+                match (fast, by_copies(&a, &b, rule)) {
+                    (Ok((segs, na)), Ok(slow)) => {
+                        prop_assert_eq!(&segs, &slow);
+                        let only_a = by_copies(&a, &MultiPolygon::default(), rule).unwrap();
+                        prop_assert_eq!(na, only_a.len());
+                    }
+                    (Err(x), Err(y)) => prop_assert_eq!(x.to_string(), y.to_string()),
+                    (x, y) => prop_assert!(false, "{:?} vs {:?}", x.map(|s| s.1), y.map(|s| s.len())),
+                }
+            }
+        }
+    }
 }

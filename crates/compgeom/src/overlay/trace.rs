@@ -922,9 +922,7 @@ mod tests {
                 for op in OPS {
                     let fast = boolean_with(a, b, op, &opts).unwrap();
                     let slow = boolean_via_dcel(a, b, op, &opts).unwrap();
-                    let mut segs = oriented_segments(a, rule).unwrap();
-                    let na = segs.len();
-                    segs.extend(oriented_segments(b, rule).unwrap());
+                    let (segs, na) = oriented_segments(a, b, rule).unwrap();
                     let inside = |wa, wb| op.apply(rule.inside(wa), rule.inside(wb));
                     let swept = super::traced(&segs, na, inside, keep_collinear, false).unwrap();
                     prop_assert_eq!(canonical(&swept), canonical(&slow));
@@ -1080,8 +1078,7 @@ mod tests {
             MultiPolygon(v)
         };
         let (a, b) = (bars(0.0, 0.0), bars(0.5, 1.0 / 3.0));
-        let mut segs = oriented_segments(&a, FillRule::EvenOdd).unwrap();
-        segs.extend(oriented_segments(&b, FillRule::EvenOdd).unwrap());
+        let (segs, _) = oriented_segments(&a, &b, FillRule::EvenOdd).unwrap();
         let low: Vec<Point2> = [a.0.clone(), b.0.clone()]
             .concat()
             .iter()
