@@ -221,6 +221,7 @@ impl PairResults {
     /// records are sorted straight from the parts ([`bucket::sort_parts`]), without
     /// concatenating them first.
     pub(crate) fn assemble_parts(parts: Vec<PairResults>, segments: &[Segment2]) -> Intersections {
+        debug_assert!(parts.iter().all(|p| p.pending_len == 0), "unflushed crossings");
         let overlapping = parts
             .iter()
             .flat_map(|p| p.overlapping.iter().copied())
@@ -241,6 +242,7 @@ impl PairResults {
     /// Group equal points (exactly), split their segments into U/L/C, and build the
     /// maximal overlap pieces.
     pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
+        debug_assert_eq!(self.pending_len, 0, "unflushed crossings");
         sort_records(&mut self.records);
         self.assemble_sorted(segments)
     }
@@ -687,6 +689,7 @@ mod tests {
                 out[(i * 7 + j) % parts].test(segments, &table, i, j, f64::INFINITY);
             }
         }
+        out.iter_mut().for_each(|p| p.flush(segments, &table));
         out
     }
 
