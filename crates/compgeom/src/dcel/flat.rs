@@ -392,63 +392,87 @@ impl Flat {
             last.1 = r + 1;
             line_of[k as usize] = lines.len() as u32 - 1;
         }
-        // Cuts: (line, key of the position along it). Endpoints first.
-        let mut cuts: Vec<(u32, u64)> = Vec::with_capacity(4 * segs.len());
-        for (k, s) in segs.iter().enumerate() {
-            cuts.push((line_of[k], okey(s.lo)));
-            cuts.push((line_of[k], okey(s.hi)));
-        }
-        // Contacts of horizontal and vertical segments (closed): sweep in x; at equal x,
-        // horizontals enter, then verticals query [lo, hi] in y, then horizontals leave.
-        let mut events: Vec<(u64, u8, u32)> = Vec::new();
-        for (k, s) in segs.iter().enumerate() {
-            if s.axis == 0 {
-                events.push((okey(s.lo), 0, k as u32));
-                events.push((okey(s.hi), 2, k as u32));
-            } else {
-                events.push((okey(s.across), 1, k as u32));
+        // Contacts of horizontal and vertical segments (closed), as (horizontal, vertical)
+        // pairs: sweep in x; at equal x, horizontals enter, then verticals query [lo, hi]
+        // in y, then horizontals leave. The sweep's records are dropped before the cuts
+        // are built (peak memory decides the page faults of the whole call).
+        let contacts: Vec<(u32, u32)> = {
+            let mut events: Vec<(u64, u8, u32)> = Vec::with_capacity(segs.len() * 3 / 2);
+            for (k, s) in segs.iter().enumerate() {
+                if s.axis == 0 {
+                    events.push((okey(s.lo), 0, k as u32));
+                    events.push((okey(s.hi), 2, k as u32));
+                } else {
+                    events.push((okey(s.across), 1, k as u32));
+                }
             }
-        }
-        events.sort_unstable();
-        let mut active: BTreeSet<(u64, u32)> = BTreeSet::new();
-        for &(_, kind, k) in &events {
-            let s = &segs[k as usize];
-            match kind {
-                0 => {
-                    active.insert((okey(s.across), k));
-                }
-                2 => {
-                    active.remove(&(okey(s.across), k));
-                }
-                _ => {
-                    for &(y, h) in active.range((okey(s.lo), 0)..=(okey(s.hi), u32::MAX)) {
-                        cuts.push((line_of[h as usize], okey(s.across)));
-                        cuts.push((line_of[k as usize], y));
+            events.sort_unstable();
+            let mut active: BTreeSet<(u64, u32)> = BTreeSet::new();
+            let mut contacts = Vec::with_capacity(2 * segs.len());
+            for &(_, kind, k) in &events {
+                let s = &segs[k as usize];
+                match kind {
+                    0 => {
+                        active.insert((okey(s.across), k));
+                    }
+                    2 => {
+                        active.remove(&(okey(s.across), k));
+                    }
+                    _ => {
+                        let range = (okey(s.lo), 0)..=(okey(s.hi), u32::MAX);
+                        contacts.extend(active.range(range).map(|&(_, h)| (h, k)));
                     }
                 }
             }
+            contacts
+        };
+        // Cuts: the positions (keys) along each line of its segments' endpoints and
+        // contacts, one array cut into per-line runs by a counting sort on the line (the
+        // line is implied by the run, so a cut is one key), then each run sorted and
+        // deduplicated in place (a line holds few cuts).
+        let mut cut_start = vec![0usize; lines.len() + 1];
+        for &l in &line_of {
+            cut_start[l as usize + 1] += 2;
         }
-        // Sorted by line, then position: a counting sort by line, then one small sort
-        // per line (a line holds few cuts).
-        let mut line_start = vec![0usize; lines.len() + 1];
-        for &(l, _) in &cuts {
-            line_start[l as usize + 1] += 1;
+        for &(h, v) in &contacts {
+            cut_start[line_of[h as usize] as usize + 1] += 1;
+            cut_start[line_of[v as usize] as usize + 1] += 1;
         }
         for l in 0..lines.len() {
-            line_start[l + 1] += line_start[l];
+            cut_start[l + 1] += cut_start[l];
         }
-        let mut by_line = vec![(0u32, 0u64); cuts.len()];
-        let mut fill = line_start.clone();
-        for &c in &cuts {
-            by_line[fill[c.0 as usize]] = c;
-            fill[c.0 as usize] += 1;
+        let mut cuts = vec![0u64; cut_start[lines.len()]];
+        {
+            let mut fill: Vec<usize> = cut_start[..lines.len()].to_vec();
+            let mut put = |l: u32, key: u64| {
+                cuts[fill[l as usize]] = key;
+                fill[l as usize] += 1;
+            };
+            for (s, &l) in segs.iter().zip(&line_of) {
+                put(l, okey(s.lo));
+                put(l, okey(s.hi));
+            }
+            for &(h, v) in &contacts {
+                let (sh, sv) = (&segs[h as usize], &segs[v as usize]);
+                put(line_of[h as usize], okey(sv.across));
+                put(line_of[v as usize], okey(sh.across));
+            }
         }
-        drop(fill);
+        drop(contacts);
+        let mut kept = 0;
         for l in 0..lines.len() {
-            by_line[line_start[l]..line_start[l + 1]].sort_unstable_by_key(|c| c.1);
+            let (a, b) = (cut_start[l], cut_start[l + 1]);
+            cuts[a..b].sort_unstable();
+            cut_start[l] = kept;
+            for c in a..b {
+                if c == a || cuts[c] != cuts[c - 1] {
+                    cuts[kept] = cuts[c];
+                    kept += 1;
+                }
+            }
         }
-        let mut cuts = by_line;
-        cuts.dedup();
+        cut_start[lines.len()] = kept;
+        cuts.truncate(kept);
         // Vertices: every cut as a point, each point once. A point lies on at most one
         // horizontal and one vertical line, so the cuts of the vertical lines are distinct
         // points; a cut of a horizontal line at (x, y) is the same point as the cut at
@@ -465,20 +489,13 @@ impl Flat {
         let line_axis = |l: usize| segs[order[lines[l].0] as usize].axis;
         let line_across = |l: usize| segs[order[lines[l].0] as usize].across;
         let first_vertical = lines.partition_point(|&(r0, _)| segs[order[r0] as usize].axis == 0);
-        let mut cut_start = vec![0usize; lines.len() + 1];
-        for &(l, _) in &cuts {
-            cut_start[l as usize + 1] += 1;
-        }
-        for l in 0..lines.len() {
-            cut_start[l + 1] += cut_start[l];
-        }
         let mut vertices: Vec<Point2> = Vec::with_capacity(cuts.len());
         let mut cut_vertex = vec![0u32; cuts.len()];
         for l in first_vertical..lines.len() {
             let x = line_across(l);
             for c in cut_start[l]..cut_start[l + 1] {
                 cut_vertex[c] = vertices.len() as u32;
-                vertices.push(point(1, x, unkey(cuts[c].1)));
+                vertices.push(point(1, x, unkey(cuts[c])));
             }
         }
         // The vertical lines' positions, contiguous for the binary searches.
@@ -493,14 +510,14 @@ impl Flat {
             // previous cut's ended (galloping), O(log gap) instead of O(log V) per cut.
             let mut from = 0;
             for c in cut_start[l]..cut_start[l + 1] {
-                let kx = cuts[c].1;
+                let kx = cuts[c];
                 from = gallop(&verticals, from, kx);
                 let at = (verticals.get(from) == Some(&kx))
                     .then_some(first_vertical + from)
                     .and_then(|v| {
                         let range = cut_start[v]..cut_start[v + 1];
                         cuts[range.clone()]
-                            .binary_search_by(|cut| cut.1.cmp(&ky))
+                            .binary_search(&ky)
                             .ok()
                             .map(|j| range.start + j)
                     });
@@ -513,38 +530,27 @@ impl Flat {
                 };
             }
         }
+        drop(verticals);
         // Pieces, line by line: between consecutive cuts, the segments covering them.
+        let pieces_bound = cuts.len();
         let mut pieces = Pieces {
-            edges: Vec::with_capacity(cuts.len()),
-            pairs: Vec::with_capacity(cuts.len()),
+            edges: Vec::with_capacity(pieces_bound),
+            pairs: Vec::with_capacity(pieces_bound),
         };
-        let mut c0 = 0;
         let mut first_edge: Vec<u32> = Vec::new(); // per cut gap of the line: edge or NONE
                                                    // Per edge: its lowest source segment and its position along that segment.
-        let mut place: Vec<(u32, u64)> = Vec::with_capacity(cuts.len());
+        let mut place: Vec<(u32, u64)> = Vec::with_capacity(pieces_bound);
         for (line, &(r0, r1)) in lines.iter().enumerate() {
-            let mut c1 = c0;
-            while c1 < cuts.len() && cuts[c1].0 == line as u32 {
-                c1 += 1;
-            }
-            let along = &cuts[c0..c1];
+            let c0 = cut_start[line];
+            let along = &cuts[c0..cut_start[line + 1]];
             first_edge.clear();
             first_edge.resize(along.len().saturating_sub(1), u32::MAX);
             for &k in &order[r0..r1] {
                 let s = &segs[k as usize];
-                let find = |v: f64| {
-                    let k = okey(v);
-                    along
-                        .binary_search_by(|c| c.1.cmp(&k))
-                        .expect("endpoints are cuts")
-                };
+                let find = |v: f64| along.binary_search(&okey(v)).expect("endpoints are cuts");
                 let (i0, i1) = (find(s.lo), find(s.hi));
                 for g in i0..i1 {
-                    let pos = if s.increasing {
-                        along[g].1
-                    } else {
-                        !along[g].1
-                    };
+                    let pos = if s.increasing { along[g] } else { !along[g] };
                     if first_edge[g] == u32::MAX {
                         first_edge[g] = pieces.edges.len() as u32;
                         pieces
@@ -564,10 +570,14 @@ impl Flat {
                     ));
                 }
             }
-            c0 = c1;
         }
+        // The line records are done: free them before the renumbering allocates.
+        drop((
+            cuts, cut_vertex, cut_start, first_edge, segs, order, line_of, lines,
+        ));
         // Edges along the input segments (ring order for polygon data), for locality.
         pieces.reorder_edges(&place, segments.len());
+        drop(place);
         Some(pieces.finish(vertices))
     }
 }
