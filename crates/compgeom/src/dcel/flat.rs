@@ -32,7 +32,7 @@ use super::build::Source;
 use crate::intersect::find_intersections;
 use crate::kernel::{ExactPoint, Point2, Segment2};
 use crate::{Error, Result};
-use std::collections::{BTreeSet, HashMap};
+use std::collections::HashMap;
 
 /// The arrangement of `segments`: edge `i` runs `edges[i][0] → edges[i][1]` and is carried
 /// by `sources[src_start[i]..src_start[i + 1]]` (ascending segment index; `forward` is
@@ -74,6 +74,71 @@ fn gallop(sorted: &[u64], from: usize, key: u64) -> usize {
     }
     let hi = hi.min(sorted.len());
     lo + sorted[lo..hi].partition_point(|&v| v < key)
+}
+
+/// A set of numbers below a bound, as bits, with one summary bit per word of bits
+/// (set iff the word is not zero), so that listing the members in a range skips empty
+/// stretches 4096 numbers at a time: O(range / 4096 + words touched + members).
+struct BitSet {
+    words: Vec<u64>,
+    summary: Vec<u64>,
+}
+
+impl BitSet {
+    fn new(bound: usize) -> Self {
+        let words = bound.div_ceil(64);
+        BitSet {
+            words: vec![0; words],
+            summary: vec![0; words.div_ceil(64)],
+        }
+    }
+
+    fn insert(&mut self, i: usize) {
+        let w = i >> 6;
+        self.words[w] |= 1 << (i & 63);
+        self.summary[w >> 6] |= 1 << (w & 63);
+    }
+
+    fn remove(&mut self, i: usize) {
+        let w = i >> 6;
+        self.words[w] &= !(1 << (i & 63));
+        if self.words[w] == 0 {
+            self.summary[w >> 6] &= !(1 << (w & 63));
+        }
+    }
+
+    /// Calls `f` on the members in `a..b`, ascending.
+    fn for_each_in(&self, a: usize, b: usize, mut f: impl FnMut(usize)) {
+        if a >= b {
+            return;
+        }
+        let (w0, w1) = (a >> 6, (b - 1) >> 6);
+        let mut w = w0;
+        while w <= w1 {
+            // The next non-empty word at or after w, by the summary.
+            let pending = self.summary[w >> 6] >> (w & 63);
+            if pending == 0 {
+                w = ((w >> 6) + 1) << 6;
+                continue;
+            }
+            w += pending.trailing_zeros() as usize;
+            if w > w1 {
+                break;
+            }
+            let mut bits = self.words[w];
+            if w == w0 {
+                bits &= !0u64 << (a & 63);
+            }
+            if w == w1 {
+                bits &= !0u64 >> (63 - ((b - 1) & 63));
+            }
+            while bits != 0 {
+                f((w << 6) + bits.trailing_zeros() as usize);
+                bits &= bits - 1;
+            }
+            w += 1;
+        }
+    }
 }
 
 /// Edges with their sources, collected piece by piece.
@@ -329,6 +394,7 @@ impl Flat {
     pub(crate) fn axis_parallel(segments: &[Segment2]) -> Option<Flat> {
         // Per segment: axis (0 = horizontal: runs along x; 1 = vertical), the fixed
         // coordinate, and the range along the axis.
+        #[derive(Clone, Copy)]
         struct Seg {
             axis: u8,
             across: f64,
@@ -370,85 +436,119 @@ impl Flat {
         // Lines: segments grouped by (axis, across), ordered by `lo` within a line.
         // The keys are sorted themselves (not indices looking them up per comparison);
         // `k` last: segments are in input order, so it breaks ties as `index` would.
-        let mut keyed: Vec<(u8, u64, u64, u32)> = segs
-            .iter()
-            .enumerate()
-            .map(|(k, s)| (s.axis, okey(s.across), okey(s.lo), k as u32))
-            .collect();
-        keyed.sort_unstable();
-        let order: Vec<u32> = keyed.into_iter().map(|t| t.3).collect();
-        let mut line_of = vec![0u32; segs.len()];
-        let mut lines: Vec<(usize, usize)> = Vec::new(); // ranges of `order`
-        for (r, &k) in order.iter().enumerate() {
-            let s = &segs[k as usize];
+        // The segments are then copied into that order: every later pass (the sweep,
+        // the cuts, the pieces) reads them front to back instead of at random.
+        let segs: Vec<Seg> = {
+            let mut keyed: Vec<(u8, u64, u64, u32)> = segs
+                .iter()
+                .enumerate()
+                .map(|(k, s)| (s.axis, okey(s.across), okey(s.lo), k as u32))
+                .collect();
+            keyed.sort_unstable();
+            keyed.iter().map(|t| segs[t.3 as usize]).collect()
+        };
+        let n = segs.len();
+        let mut line_of = vec![0u32; n];
+        let mut lines: Vec<usize> = Vec::with_capacity(n + 1); // line starts in `segs`
+        for r in 0..n {
             let same = r > 0 && {
-                let t = &segs[order[r - 1] as usize];
+                let (s, t) = (&segs[r], &segs[r - 1]);
                 t.axis == s.axis && t.across == s.across
             };
             if !same {
-                lines.push((r, r));
+                lines.push(r);
             }
-            let last = lines.last_mut().expect("pushed");
-            last.1 = r + 1;
-            line_of[k as usize] = lines.len() as u32 - 1;
+            line_of[r] = lines.len() as u32 - 1;
         }
-        // Cuts: (line, key of the position along it). Endpoints first.
-        let mut cuts: Vec<(u32, u64)> = Vec::with_capacity(4 * segs.len());
-        for (k, s) in segs.iter().enumerate() {
-            cuts.push((line_of[k], okey(s.lo)));
-            cuts.push((line_of[k], okey(s.hi)));
+        let line_count = lines.len();
+        lines.push(n);
+        // Horizontals first (by y, then x), then verticals (by x, then y).
+        let first_vertical_seg = segs.partition_point(|s| s.axis == 0);
+        // Contacts of horizontal and vertical segments (closed), as (horizontal,
+        // vertical) positions in `segs`: sweep in x; at equal x, horizontals enter, then
+        // verticals query [lo, hi] in y, then horizontals leave. The horizontals are
+        // numbered in y order, so the active ones are a bit set and the horizontals in a
+        // y range are a range of numbers (two binary searches in their y keys). The
+        // sweep's records are dropped before the cuts are built (peak memory decides
+        // the page faults of the whole call).
+        let contacts: Vec<(u32, u32)> = {
+            let horizontals = &segs[..first_vertical_seg];
+            let hy: Vec<u64> = horizontals.iter().map(|s| okey(s.across)).collect();
+            let mut enter: Vec<(u64, u32)> = Vec::with_capacity(horizontals.len());
+            let mut leave: Vec<(u64, u32)> = Vec::with_capacity(horizontals.len());
+            for (h, s) in horizontals.iter().enumerate() {
+                enter.push((okey(s.lo), h as u32));
+                leave.push((okey(s.hi), h as u32));
+            }
+            enter.sort_unstable();
+            leave.sort_unstable();
+            let mut active = BitSet::new(horizontals.len());
+            let (mut ei, mut li) = (0, 0);
+            let mut contacts = Vec::with_capacity(2 * n);
+            for (v, s) in segs.iter().enumerate().skip(first_vertical_seg) {
+                let x = okey(s.across);
+                while ei < enter.len() && enter[ei].0 <= x {
+                    active.insert(enter[ei].1 as usize);
+                    ei += 1;
+                }
+                while li < leave.len() && leave[li].0 < x {
+                    active.remove(leave[li].1 as usize);
+                    li += 1;
+                }
+                let (lo, hi) = (okey(s.lo), okey(s.hi));
+                let a = hy.partition_point(|&y| y < lo);
+                let b = a + hy[a..].partition_point(|&y| y <= hi);
+                active.for_each_in(a, b, |h| contacts.push((h as u32, v as u32)));
+            }
+            contacts
+        };
+        // Cuts: the positions (keys) along each line of its segments' endpoints and
+        // contacts, one array cut into per-line runs by a counting sort on the line (the
+        // line is implied by the run, so a cut is one key), then each run sorted and
+        // deduplicated in place (a line holds few cuts).
+        let mut cut_start = vec![0usize; line_count + 1];
+        for &l in &line_of {
+            cut_start[l as usize + 1] += 2;
         }
-        // Contacts of horizontal and vertical segments (closed): sweep in x; at equal x,
-        // horizontals enter, then verticals query [lo, hi] in y, then horizontals leave.
-        let mut events: Vec<(u64, u8, u32)> = Vec::new();
-        for (k, s) in segs.iter().enumerate() {
-            if s.axis == 0 {
-                events.push((okey(s.lo), 0, k as u32));
-                events.push((okey(s.hi), 2, k as u32));
-            } else {
-                events.push((okey(s.across), 1, k as u32));
+        for &(h, v) in &contacts {
+            cut_start[line_of[h as usize] as usize + 1] += 1;
+            cut_start[line_of[v as usize] as usize + 1] += 1;
+        }
+        for l in 0..line_count {
+            cut_start[l + 1] += cut_start[l];
+        }
+        let mut cuts = vec![0u64; cut_start[line_count]];
+        {
+            let mut fill: Vec<usize> = cut_start[..line_count].to_vec();
+            let mut put = |l: u32, key: u64| {
+                cuts[fill[l as usize]] = key;
+                fill[l as usize] += 1;
+            };
+            for (s, &l) in segs.iter().zip(&line_of) {
+                put(l, okey(s.lo));
+                put(l, okey(s.hi));
+            }
+            for &(h, v) in &contacts {
+                let (sh, sv) = (&segs[h as usize], &segs[v as usize]);
+                put(line_of[h as usize], okey(sv.across));
+                put(line_of[v as usize], okey(sh.across));
             }
         }
-        events.sort_unstable();
-        let mut active: BTreeSet<(u64, u32)> = BTreeSet::new();
-        for &(_, kind, k) in &events {
-            let s = &segs[k as usize];
-            match kind {
-                0 => {
-                    active.insert((okey(s.across), k));
-                }
-                2 => {
-                    active.remove(&(okey(s.across), k));
-                }
-                _ => {
-                    for &(y, h) in active.range((okey(s.lo), 0)..=(okey(s.hi), u32::MAX)) {
-                        cuts.push((line_of[h as usize], okey(s.across)));
-                        cuts.push((line_of[k as usize], y));
-                    }
+        drop(contacts);
+        let mut kept = 0;
+        for l in 0..line_count {
+            let (a, b) = (cut_start[l], cut_start[l + 1]);
+            cuts[a..b].sort_unstable();
+            cut_start[l] = kept;
+            for c in a..b {
+                if c == a || cuts[c] != cuts[c - 1] {
+                    cuts[kept] = cuts[c];
+                    kept += 1;
                 }
             }
         }
-        // Sorted by line, then position: a counting sort by line, then one small sort
-        // per line (a line holds few cuts).
-        let mut line_start = vec![0usize; lines.len() + 1];
-        for &(l, _) in &cuts {
-            line_start[l as usize + 1] += 1;
-        }
-        for l in 0..lines.len() {
-            line_start[l + 1] += line_start[l];
-        }
-        let mut by_line = vec![(0u32, 0u64); cuts.len()];
-        let mut fill = line_start.clone();
-        for &c in &cuts {
-            by_line[fill[c.0 as usize]] = c;
-            fill[c.0 as usize] += 1;
-        }
-        drop(fill);
-        for l in 0..lines.len() {
-            by_line[line_start[l]..line_start[l + 1]].sort_unstable_by_key(|c| c.1);
-        }
-        let mut cuts = by_line;
-        cuts.dedup();
+        cut_start[line_count] = kept;
+        cuts.truncate(kept);
         // Vertices: every cut as a point, each point once. A point lies on at most one
         // horizontal and one vertical line, so the cuts of the vertical lines are distinct
         // points; a cut of a horizontal line at (x, y) is the same point as the cut at
@@ -462,27 +562,22 @@ impl Flat {
                 f64::from_bits(!k)
             }
         };
-        let line_axis = |l: usize| segs[order[lines[l].0] as usize].axis;
-        let line_across = |l: usize| segs[order[lines[l].0] as usize].across;
-        let first_vertical = lines.partition_point(|&(r0, _)| segs[order[r0] as usize].axis == 0);
-        let mut cut_start = vec![0usize; lines.len() + 1];
-        for &(l, _) in &cuts {
-            cut_start[l as usize + 1] += 1;
-        }
-        for l in 0..lines.len() {
-            cut_start[l + 1] += cut_start[l];
-        }
+        let line_axis = |l: usize| segs[lines[l]].axis;
+        let line_across = |l: usize| segs[lines[l]].across;
+        let first_vertical = line_of
+            .get(first_vertical_seg)
+            .map_or(line_count, |&l| l as usize);
         let mut vertices: Vec<Point2> = Vec::with_capacity(cuts.len());
         let mut cut_vertex = vec![0u32; cuts.len()];
-        for l in first_vertical..lines.len() {
+        for l in first_vertical..line_count {
             let x = line_across(l);
             for c in cut_start[l]..cut_start[l + 1] {
                 cut_vertex[c] = vertices.len() as u32;
-                vertices.push(point(1, x, unkey(cuts[c].1)));
+                vertices.push(point(1, x, unkey(cuts[c])));
             }
         }
         // The vertical lines' positions, contiguous for the binary searches.
-        let verticals: Vec<u64> = (first_vertical..lines.len())
+        let verticals: Vec<u64> = (first_vertical..line_count)
             .map(|l| okey(line_across(l)))
             .collect();
         for l in 0..first_vertical {
@@ -493,14 +588,14 @@ impl Flat {
             // previous cut's ended (galloping), O(log gap) instead of O(log V) per cut.
             let mut from = 0;
             for c in cut_start[l]..cut_start[l + 1] {
-                let kx = cuts[c].1;
+                let kx = cuts[c];
                 from = gallop(&verticals, from, kx);
                 let at = (verticals.get(from) == Some(&kx))
                     .then_some(first_vertical + from)
                     .and_then(|v| {
                         let range = cut_start[v]..cut_start[v + 1];
                         cuts[range.clone()]
-                            .binary_search_by(|cut| cut.1.cmp(&ky))
+                            .binary_search(&ky)
                             .ok()
                             .map(|j| range.start + j)
                     });
@@ -513,38 +608,26 @@ impl Flat {
                 };
             }
         }
+        drop(verticals);
         // Pieces, line by line: between consecutive cuts, the segments covering them.
+        let pieces_bound = cuts.len();
         let mut pieces = Pieces {
-            edges: Vec::with_capacity(cuts.len()),
-            pairs: Vec::with_capacity(cuts.len()),
+            edges: Vec::with_capacity(pieces_bound),
+            pairs: Vec::with_capacity(pieces_bound),
         };
-        let mut c0 = 0;
         let mut first_edge: Vec<u32> = Vec::new(); // per cut gap of the line: edge or NONE
                                                    // Per edge: its lowest source segment and its position along that segment.
-        let mut place: Vec<(u32, u64)> = Vec::with_capacity(cuts.len());
-        for (line, &(r0, r1)) in lines.iter().enumerate() {
-            let mut c1 = c0;
-            while c1 < cuts.len() && cuts[c1].0 == line as u32 {
-                c1 += 1;
-            }
-            let along = &cuts[c0..c1];
+        let mut place: Vec<(u32, u64)> = Vec::with_capacity(pieces_bound);
+        for line in 0..line_count {
+            let c0 = cut_start[line];
+            let along = &cuts[c0..cut_start[line + 1]];
             first_edge.clear();
             first_edge.resize(along.len().saturating_sub(1), u32::MAX);
-            for &k in &order[r0..r1] {
-                let s = &segs[k as usize];
-                let find = |v: f64| {
-                    let k = okey(v);
-                    along
-                        .binary_search_by(|c| c.1.cmp(&k))
-                        .expect("endpoints are cuts")
-                };
+            for s in &segs[lines[line]..lines[line + 1]] {
+                let find = |v: f64| along.binary_search(&okey(v)).expect("endpoints are cuts");
                 let (i0, i1) = (find(s.lo), find(s.hi));
                 for g in i0..i1 {
-                    let pos = if s.increasing {
-                        along[g].1
-                    } else {
-                        !along[g].1
-                    };
+                    let pos = if s.increasing { along[g] } else { !along[g] };
                     if first_edge[g] == u32::MAX {
                         first_edge[g] = pieces.edges.len() as u32;
                         pieces
@@ -564,10 +647,14 @@ impl Flat {
                     ));
                 }
             }
-            c0 = c1;
         }
+        // The line records are done: free them before the renumbering allocates.
+        drop((
+            cuts, cut_vertex, cut_start, first_edge, segs, line_of, lines,
+        ));
         // Edges along the input segments (ring order for polygon data), for locality.
         pieces.reorder_edges(&place, segments.len());
+        drop(place);
         Some(pieces.finish(vertices))
     }
 }
@@ -787,6 +874,35 @@ mod tests {
                 .map(|e| fast.sources_of(e)[0].segment)
                 .collect();
             prop_assert!(lowest.windows(2).all(|w| w[0] <= w[1]));
+        }
+
+        /// The bit set lists exactly the members of a range (a sorted set as oracle),
+        /// across word and summary boundaries.
+        #[test]
+        fn bit_set_lists_the_members_of_a_range(
+            ops in prop::collection::vec((0..9000usize, 0..300usize, any::<bool>()), 0..60),
+            a in 0..9100usize, len in 0..9100usize,
+        ) {
+            let bound = 9000;
+            let mut set = BitSet::new(bound);
+            let mut oracle = std::collections::BTreeSet::new();
+            // Runs of inserts and removes: dense and empty words and summary words.
+            for (start, count, add) in ops {
+                for i in start..(start + count).min(bound) {
+                    if add {
+                        set.insert(i);
+                        oracle.insert(i);
+                    } else {
+                        set.remove(i);
+                        oracle.remove(&i);
+                    }
+                }
+            }
+            let (a, b) = (a.min(bound), (a + len).min(bound));
+            let mut got = Vec::new();
+            set.for_each_in(a, b, |i| got.push(i));
+            let want: Vec<usize> = oracle.range(a..b.max(a)).copied().collect();
+            prop_assert_eq!(got, want);
         }
 
         /// The galloping search is the partition point from any start at or before it,

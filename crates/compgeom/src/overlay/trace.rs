@@ -147,6 +147,13 @@ fn traced(
             }
         })
         .collect();
+    // The sources are summed up in `info`: freed now, so that the arrays below reuse
+    // their memory (fresh pages are a large part of the cost on big inputs).
+    let flat = Flat {
+        src_start: Vec::new(),
+        sources: Vec::new(),
+        ..flat
+    };
     let carrier = |h: u32| {
         let e = &info[(h >> 1) as usize];
         Carrier {
