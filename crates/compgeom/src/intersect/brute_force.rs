@@ -221,7 +221,10 @@ impl PairResults {
     /// records are sorted straight from the parts ([`bucket::sort_parts`]), without
     /// concatenating them first.
     pub(crate) fn assemble_parts(parts: Vec<PairResults>, segments: &[Segment2]) -> Intersections {
-        debug_assert!(parts.iter().all(|p| p.pending_len == 0), "unflushed crossings");
+        debug_assert!(
+            parts.iter().all(|p| p.pending_len == 0),
+            "unflushed crossings"
+        );
         let overlapping = parts
             .iter()
             .flat_map(|p| p.overlapping.iter().copied())
