@@ -174,6 +174,25 @@ fn io_area(shapes: &[Vec<Vec<[f64; 2]>>]) -> f64 {
         .abs()
 }
 
+/// A polygon set as i_overlay takes it: closed paths of points.
+type IoPaths = Vec<Vec<[f64; 2]>>;
+
+/// Each pair of maps as i_overlay's input.
+fn io_pairs(pairs: &[real_maps::MapPair]) -> Vec<(IoPaths, IoPaths)> {
+    pairs
+        .iter()
+        .map(|p| (io_paths(&p.a), io_paths(&p.b)))
+        .collect()
+}
+
+/// Each pair of maps as geo's input.
+fn geo_pairs(pairs: &[real_maps::MapPair]) -> Vec<(geo::MultiPolygon, geo::MultiPolygon)> {
+    pairs
+        .iter()
+        .map(|p| (geo_poly(&p.a), geo_poly(&p.b)))
+        .collect()
+}
+
 fn geo_poly(m: &MultiPolygon) -> geo::MultiPolygon<f64> {
     geo::MultiPolygon::new(
         m.0.iter()
@@ -357,14 +376,7 @@ fn real_map_rows(runs: usize) -> Result<(), String> {
             row(&format!("water {name}"), n, t, med, dev);
         }
         if !jts.is_empty() {
-            let io: Vec<_> = jts
-                .iter()
-                .map(|p| (io_paths(&p.a), io_paths(&p.b)))
-                .collect();
-            let geo: Vec<_> = jts
-                .iter()
-                .map(|p| (geo_poly(&p.a), geo_poly(&p.b)))
-                .collect();
+            let (io, geo) = (io_pairs(&jts), geo_pairs(&jts));
             let mut dev: f64 = 0.0;
             for (p, (pa, pb)) in jts.iter().zip(&io) {
                 let x = area(&boolean(&p.a, &p.b, op).map_err(|e| e.to_string())?);
@@ -525,14 +537,7 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     if std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "jts") {
         let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
         let jts = real_maps::jts_robust_pairs(&dir);
-        let io: Vec<_> = jts
-            .iter()
-            .map(|p| (io_paths(&p.a), io_paths(&p.b)))
-            .collect();
-        let geo: Vec<_> = jts
-            .iter()
-            .map(|p| (geo_poly(&p.a), geo_poly(&p.b)))
-            .collect();
+        let (io, geo) = (io_pairs(&jts), geo_pairs(&jts));
         for _ in 0..reps {
             for (k, p) in jts.iter().enumerate() {
                 match who {

@@ -320,26 +320,10 @@ fn group_starts(segments: &[Segment2], records: &mut [Record], starts: &mut Vec<
 /// [`group_starts`] does) with [`GROUP_START`], and return the number of groups.
 fn mark_groups(segments: &[Segment2], records: &mut [Record]) -> usize {
     let mut groups = 0;
-    let mut k = 0;
-    while k < records.len() {
-        let ky = records[k].ky;
-        let mut end = k + 1;
-        while end < records.len() && records[end].ky == ky {
-            end += 1;
-        }
-        if end == k + 1 {
-            // Most runs are one record (dense crossings): a group of its own.
-            records[k].pair |= GROUP_START;
-            groups += 1;
-        } else {
-            // A run is grouped on its own, as [`group_starts`] groups it.
-            each_group_start(segments, &mut records[k..end], |r, m| {
-                r[m].pair |= GROUP_START;
-                groups += 1;
-            });
-        }
-        k = end;
-    }
+    each_group_start(segments, records, |r, m| {
+        r[m].pair |= GROUP_START;
+        groups += 1;
+    });
     groups
 }
 
@@ -359,7 +343,10 @@ fn each_group_start(
             end += 1;
         }
         let run = &mut records[k..end];
-        if run.len() >= 2 && run.iter().any(Record::is_crossing) {
+        if end == k + 1 {
+            // Most runs are one record (dense crossings): a group of its own.
+            start(records, k);
+        } else if run.iter().any(Record::is_crossing) {
             for g in exact_groups(segments, run) {
                 start(records, k + g);
             }
