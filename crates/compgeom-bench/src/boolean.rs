@@ -23,6 +23,23 @@
 //! a different random input); water 0.90–1.10 / 0.95–1.16; JTS robust pairs ×52
 //! 1.42–1.50 / 1.36–1.46; GEOS-837 dissolve 2.50 / 2.27 (1.13 ms against 0.45).
 //!
+//! Session 8 (branches s8-small and s8-squares merged; quiet machine, load 0.5–2, three
+//! full runs, ratio compgeom / peer of best times, medians of per-round ratios in
+//! brackets): star 1e3 0.91–1.07 (0.91–1.12) against i_overlay and 0.89–1.12 against
+//! geo (xor is the one above 1); star 1e4 0.65–0.78 / 0.57–0.80; star 1e5 0.55–0.76 /
+//! 0.63–0.87; squares 1.20–1.35 (1.20–1.37) / 1.08–1.22; water 0.82–1.49 / 0.78–1.39
+//! (the session-7 binary alternated with this one: 1.01–1.32 against 0.82–1.49, the
+//! same within noise); JTS ×52 1.14–1.32 / 1.07–1.32; GEOS-837 dissolve 2.00–2.10
+//! (1.0–1.3 ms against 0.46–0.67) / 1.62–1.91, the session-7 binary 2.45–2.54 in the
+//! same runs. Squares: the axis-parallel sweep now runs over y-sorted horizontals in a
+//! two-level bit set with cuts as per-line keys from a compact contact list (peak
+//! memory 55 → 36 MB, instructions 368.5M → 338.2M against i_overlay's 313.7M). Small
+//! inputs: oriented segments without ring copies, identical segments recorded as
+//! overlaps without exact tests, branch-free box tests in the noding sweep (−37% branch
+//! mispredictions on star 1e3), a fast hash for merged pieces (dissolve 9.79M → 9.10M
+//! instructions per call; i_overlay 4.05M). Still above 1 against geo: squares, water,
+//! JTS, dissolve.
+//!
 //! Measured, session 7 (load average 1.8 falling from 4, two runs, ms best of 5):
 //!
 //! | input | compgeom | i_overlay | geo | /i_overlay (median) | /geo (median) | before /i_overlay |

@@ -92,6 +92,17 @@
 //! (4.8–5.1 ms against 10.4–10.5), find 0.65–0.78× (14.0–16.8 ms against 10.8–11.0),
 //! so long find is still short of geo.
 //!
+//! Session 8 (all four branches merged; quiet machine, load 0.5–2): the rounding's exact
+//! products are fused multiply-adds chosen at run time on x86-64 (one generic fast path,
+//! Dekker or FMA; callgrind ~380 → ~175 instructions per crossing, whole find 256.6M →
+//! 210.4M single-threaded), crossings rounded eight lanes at a time in the scan, groups
+//! marked inside the bucket sort and points built from the marks (−9% instructions on
+//! long find). Long 1e3, six runs, ratio geo collect / compgeom find: 1.02×, 0.76×,
+//! 0.90×, 0.68×, 0.78×, 0.68× (find 10.8–17.0 ms, wide spread; geo 11.0–12.3 ms);
+//! alternated with the session-7 binary at load ~2: new 11.0–12.6 ms, old 13.4–15.5 ms.
+//! Count 1.84–2.29×. Short 1e5 6.61–6.85× / 5.62–5.63×, grid 1e4 1.45× / 2.02×
+//! (count / find). Long find reaches geo only in its best runs: still open.
+//!
 //! Session 7 (branch s7-round, the rounding only), load 7–8, full run:
 //!
 //! | input | n | count vs geo count() | find vs geo collect() | load |
