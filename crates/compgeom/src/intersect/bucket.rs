@@ -77,34 +77,7 @@ pub(super) fn sort_by_key_then<T: Copy + Send + Sync>(
                 to.copy_from_slice(from);
                 return;
             }
-            let base = c << shift;
-            local.clear();
-            local.resize(width + 1, 0);
-            for &f in from_fines {
-                local[f as usize - base + 1] += 1;
-            }
-            for f in 0..width {
-                local[f + 1] += local[f];
-            }
-            let mut at = local.clone();
-            for (t, &f) in from.iter().zip(from_fines) {
-                let f = f as usize - base;
-                to[at[f] as usize] = *t;
-                at[f] += 1;
-            }
-            for w in local.windows(2) {
-                let bucket = &mut to[w[0] as usize..w[1] as usize];
-                match bucket.len() {
-                    0 | 1 => {}
-                    // Most multi-item buckets hold two: one comparison.
-                    2 => {
-                        if cmp(&bucket[1], &bucket[0]) == Ordering::Less {
-                            bucket.swap(0, 1);
-                        }
-                    }
-                    _ => bucket.sort_unstable_by(cmp),
-                }
-            }
+            spread_and_sort(from, from_fines, to, c << shift, width, cmp, local);
         };
     let mut pieces = Vec::with_capacity(coarse_count);
     let mut rest = &mut items[..];
@@ -315,6 +288,20 @@ fn finish_bucket<T: Copy>(
     }
     scratch.clear();
     scratch.extend_from_slice(bucket);
+    spread_and_sort(scratch, fines, bucket, base, width, cmp, local);
+}
+
+/// Spread `from`, whose items are in fine buckets `fines` (within `base..base + width`),
+/// over those buckets in `to` (a counting sort, stable), then sort each fine bucket.
+fn spread_and_sort<T: Copy>(
+    from: &[T],
+    fines: &[u32],
+    to: &mut [T],
+    base: usize,
+    width: usize,
+    cmp: impl Fn(&T, &T) -> Ordering,
+    local: &mut Vec<u32>,
+) {
     local.clear();
     local.resize(width + 1, 0);
     for &f in fines {
@@ -324,21 +311,22 @@ fn finish_bucket<T: Copy>(
         local[f + 1] += local[f];
     }
     let mut at = local.clone();
-    for (t, &f) in scratch.iter().zip(fines) {
+    for (t, &f) in from.iter().zip(fines) {
         let f = f as usize - base;
-        bucket[at[f] as usize] = *t;
+        to[at[f] as usize] = *t;
         at[f] += 1;
     }
     for w in local.windows(2) {
-        let fine_bucket = &mut bucket[w[0] as usize..w[1] as usize];
+        let fine_bucket = &mut to[w[0] as usize..w[1] as usize];
         match fine_bucket.len() {
             0 | 1 => {}
+            // Most multi-item buckets hold two: one comparison.
             2 => {
                 if cmp(&fine_bucket[1], &fine_bucket[0]) == Ordering::Less {
                     fine_bucket.swap(0, 1);
                 }
             }
-            _ => fine_bucket.sort_unstable_by(cmp),
+            _ => fine_bucket.sort_unstable_by(&cmp),
         }
     }
 }
