@@ -141,6 +141,65 @@ impl BitSet {
     }
 }
 
+/// The order of the edges by `key` (one per edge: the edge's lowest source segment and
+/// its position along it; distinct edges have distinct keys, since pieces of one segment
+/// start at distinct cuts), as the list of old edge numbers. A counting sort by segment
+/// (`segments` bounds the indices), then a sort of each segment's few edges by position:
+/// O(n + m) plus the small sorts, instead of a comparison sort of all edges.
+fn edge_order(key: &[(u32, u64)], segments: usize) -> Vec<u32> {
+    let mut start = vec![0u32; segments + 1];
+    for &(s, _) in key {
+        start[s as usize + 1] += 1;
+    }
+    for i in 0..segments {
+        start[i + 1] += start[i];
+    }
+    let mut order = vec![0u32; key.len()];
+    let mut fill = start.clone();
+    for (e, &(s, _)) in key.iter().enumerate() {
+        order[fill[s as usize] as usize] = e as u32;
+        fill[s as usize] += 1;
+    }
+    drop(fill);
+    for w in start.windows(2) {
+        let run = &mut order[w[0] as usize..w[1] as usize];
+        if run.len() > 1 {
+            run.sort_unstable_by_key(|&e| key[e as usize].1);
+        }
+    }
+    debug_assert!(order
+        .windows(2)
+        .all(|w| key[w[0] as usize] < key[w[1] as usize]));
+    order
+}
+
+/// The vertices renumbered in order of first use by `edges` (whose ends are renamed in
+/// place), as exact points; vertices on no edge are appended.
+fn renumber_vertices<P: Copy + Into<ExactPoint>>(
+    edges: &mut [[u32; 2]],
+    vertices: &[P],
+) -> Vec<ExactPoint> {
+    let mut new_v = vec![u32::MAX; vertices.len()];
+    let mut renumbered: Vec<ExactPoint> = Vec::with_capacity(vertices.len());
+    for e in edges.iter_mut() {
+        for v in e.iter_mut() {
+            let slot = &mut new_v[*v as usize];
+            if *slot == u32::MAX {
+                *slot = renumbered.len() as u32;
+                renumbered.push(vertices[*v as usize].into());
+            }
+            *v = *slot;
+        }
+    }
+    // Vertices on no edge (none are made, but keep the invariant).
+    for (v, p) in vertices.iter().enumerate() {
+        if new_v[v] == u32::MAX {
+            renumbered.push((*p).into());
+        }
+    }
+    renumbered
+}
+
 /// Edges with their sources, collected piece by piece.
 pub(super) struct Pieces {
     pub(super) edges: Vec<[u32; 2]>,
@@ -149,68 +208,12 @@ pub(super) struct Pieces {
 }
 
 impl Pieces {
-    /// Renumber the edges in the order of `key` (one per edge: the edge's lowest source
-    /// segment and its position along it; distinct edges have distinct keys, since pieces
-    /// of one segment start at distinct cuts). A counting sort by segment (`segments`
-    /// bounds the indices), then a sort of each segment's few edges by position: O(n + m)
-    /// plus the small sorts, instead of a comparison sort of all edges.
-    fn reorder_edges(&mut self, key: &[(u32, u64)], segments: usize) {
-        let mut start = vec![0u32; segments + 1];
-        for &(s, _) in key {
-            start[s as usize + 1] += 1;
-        }
-        for i in 0..segments {
-            start[i + 1] += start[i];
-        }
-        let mut order = vec![0u32; key.len()];
-        let mut fill = start.clone();
-        for (e, &(s, _)) in key.iter().enumerate() {
-            order[fill[s as usize] as usize] = e as u32;
-            fill[s as usize] += 1;
-        }
-        drop(fill);
-        for w in start.windows(2) {
-            let run = &mut order[w[0] as usize..w[1] as usize];
-            if run.len() > 1 {
-                run.sort_unstable_by_key(|&e| key[e as usize].1);
-            }
-        }
-        debug_assert!(order
-            .windows(2)
-            .all(|w| key[w[0] as usize] < key[w[1] as usize]));
-        let mut new_id = vec![0u32; order.len()];
-        for (i, &e) in order.iter().enumerate() {
-            new_id[e as usize] = i as u32;
-        }
-        self.edges = order.iter().map(|&e| self.edges[e as usize]).collect();
-        for (e, _) in &mut self.pairs {
-            *e = new_id[*e as usize];
-        }
-    }
-
     /// The flat arrangement; vertices are renumbered in order of first use by the edges
     /// (edges follow the input segments, so boundary walks then touch nearby records).
     /// Vertices come in any type convertible to [`ExactPoint`] (the axis-parallel path
     /// keeps plain points, a fifth of the size, until this copy).
     pub(super) fn finish<P: Copy + Into<ExactPoint>>(mut self, vertices: Vec<P>) -> Flat {
-        let mut new_v = vec![u32::MAX; vertices.len()];
-        let mut renumbered: Vec<ExactPoint> = Vec::with_capacity(vertices.len());
-        for e in &mut self.edges {
-            for v in e.iter_mut() {
-                let slot = &mut new_v[*v as usize];
-                if *slot == u32::MAX {
-                    *slot = renumbered.len() as u32;
-                    renumbered.push(vertices[*v as usize].into());
-                }
-                *v = *slot;
-            }
-        }
-        // Vertices on no edge (none are made, but keep the invariant): appended.
-        for (v, p) in vertices.iter().enumerate() {
-            if new_v[v] == u32::MAX {
-                renumbered.push((*p).into());
-            }
-        }
+        let renumbered = renumber_vertices(&mut self.edges, &vertices);
         self.finish_numbered(renumbered)
     }
 
@@ -610,11 +613,13 @@ impl Flat {
         }
         drop(verticals);
         // Pieces, line by line: between consecutive cuts, the segments covering them.
+        // Each edge keeps its first source beside it; only collinear overlaps (a second
+        // segment over the same piece) go to a list of further sources, so without
+        // overlaps the sources need no sort and no (edge, source) list.
         let pieces_bound = cuts.len();
-        let mut pieces = Pieces {
-            edges: Vec::with_capacity(pieces_bound),
-            pairs: Vec::with_capacity(pieces_bound),
-        };
+        let mut edges: Vec<[u32; 2]> = Vec::with_capacity(pieces_bound);
+        let mut first: Vec<Source> = Vec::with_capacity(pieces_bound);
+        let mut further: Vec<(u32, Source)> = Vec::new();
         let mut first_edge: Vec<u32> = Vec::new(); // per cut gap of the line: edge or NONE
                                                    // Per edge: its lowest source segment and its position along that segment.
         let mut place: Vec<(u32, u64)> = Vec::with_capacity(pieces_bound);
@@ -626,25 +631,22 @@ impl Flat {
             for s in &segs[lines[line]..lines[line + 1]] {
                 let find = |v: f64| along.binary_search(&okey(v)).expect("endpoints are cuts");
                 let (i0, i1) = (find(s.lo), find(s.hi));
+                let src = Source {
+                    segment: s.index as usize,
+                    forward: s.increasing,
+                };
                 for g in i0..i1 {
                     let pos = if s.increasing { along[g] } else { !along[g] };
                     if first_edge[g] == u32::MAX {
-                        first_edge[g] = pieces.edges.len() as u32;
-                        pieces
-                            .edges
-                            .push([cut_vertex[c0 + g], cut_vertex[c0 + g + 1]]);
+                        first_edge[g] = edges.len() as u32;
+                        edges.push([cut_vertex[c0 + g], cut_vertex[c0 + g + 1]]);
+                        first.push(src);
                         place.push((s.index, pos));
                     } else {
                         let p = &mut place[first_edge[g] as usize];
                         *p = (*p).min((s.index, pos));
+                        further.push((first_edge[g], src));
                     }
-                    pieces.pairs.push((
-                        first_edge[g],
-                        Source {
-                            segment: s.index as usize,
-                            forward: s.increasing,
-                        },
-                    ));
                 }
             }
         }
@@ -653,9 +655,30 @@ impl Flat {
             cuts, cut_vertex, cut_start, first_edge, segs, line_of, lines,
         ));
         // Edges along the input segments (ring order for polygon data), for locality.
-        pieces.reorder_edges(&place, segments.len());
+        let order = edge_order(&place, segments.len());
         drop(place);
-        Some(pieces.finish(vertices))
+        let mut edges: Vec<[u32; 2]> = order.iter().map(|&e| edges[e as usize]).collect();
+        if further.is_empty() {
+            let sources: Vec<Source> = order.iter().map(|&e| first[e as usize]).collect();
+            drop((first, order));
+            let vertices = renumber_vertices(&mut edges, &vertices);
+            return Some(Flat {
+                vertices,
+                src_start: (0..=edges.len() as u32).collect(),
+                edges,
+                sources,
+            });
+        }
+        // Overlaps: all sources as (edge, source) pairs under the new numbers, sorted.
+        let mut new_id = vec![0u32; order.len()];
+        for (i, &e) in order.iter().enumerate() {
+            new_id[e as usize] = i as u32;
+        }
+        let mut pairs: Vec<(u32, Source)> = Vec::with_capacity(first.len() + further.len());
+        pairs.extend(first.iter().enumerate().map(|(e, &s)| (new_id[e], s)));
+        pairs.extend(further.iter().map(|&(e, s)| (new_id[e as usize], s)));
+        drop((first, further, new_id, order));
+        Some(Pieces { edges, pairs }.finish(vertices))
     }
 }
 
