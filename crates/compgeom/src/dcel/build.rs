@@ -54,7 +54,7 @@ impl Arrangement {
     /// edge). Non-finite coordinates are an error naming the segment.
     pub fn of_segments(segments: &[Segment2]) -> Result<Arrangement> {
         let flat = Flat::of_segments(segments)?;
-        let vertices = flat.vertices.clone();
+        let vertices = flat.vertices.clone().into_exact();
         let edges = (0..flat.edge_count())
             .map(|i| {
                 let [u, v] = flat.edges[i];
@@ -179,7 +179,7 @@ impl<E> Dcel<(), E, ()> {
         resolve_holes: bool,
     ) -> Dcel<(), E, ()> {
         let mut flat = Flat {
-            vertices: arr.vertices.clone(),
+            vertices: arr.vertices.clone().into(),
             edges: Vec::with_capacity(arr.edges.len()),
             src_start: Vec::with_capacity(arr.edges.len() + 1),
             sources: Vec::with_capacity(arr.edges.len()),
@@ -249,7 +249,7 @@ impl<E> Dcel<(), E, ()> {
             }
         }
         link(
-            flat.vertices,
+            flat.vertices.into_exact(),
             half_edges,
             carriers,
             &out_start,

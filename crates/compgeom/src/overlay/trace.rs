@@ -274,12 +274,12 @@ fn traced(
         if a == b {
             continue;
         }
-        let ExactPoint::Input(p) = flat.vertices[v] else {
+        let Some(p) = flat.vertices.input(v) else {
             continue;
         };
         let k = comp_of[cyc[out[a] as usize] as usize] as usize;
         let better = low[k] == NONE || {
-            let ExactPoint::Input(q) = flat.vertices[low[k] as usize] else {
+            let Some(q) = flat.vertices.input(low[k] as usize) else {
                 unreachable!("only input points are kept")
             };
             p.x < q.x || (p.x == q.x && p.y < q.y)
@@ -322,7 +322,7 @@ fn traced(
     // The cycle (of another component) whose face holds each component, from the hole
     // sweep: its exterior is joined to it in the regions below.
     let sweep_around = || -> Vec<u32> {
-        let points = &flat.vertices;
+        let points = &flat.vertices.exact();
         let approx: Vec<Rounded> = points.iter().map(|p| Rounded::of(p, p.approx())).collect();
         let origins: Vec<u32> = (0..m as u32).map(origin).collect();
         let carriers: Vec<Carrier> = (0..m as u32).map(carrier).collect();
@@ -364,7 +364,7 @@ fn traced(
     // their smallest vertex, so the face found for one (which lies left of it) is in a
     // component already resolved.
     let resolve = |around: &[u32], offset: &mut [(i32, i32)]| {
-        let input = |v: u32| flat.vertices[v as usize].approx();
+        let input = |v: u32| flat.vertices.approx(v as usize);
         let mut order: Vec<u32> = (0..ncomp).collect();
         order.sort_unstable_by(|&x, &y| {
             let (p, q) = (input(low[x as usize]), input(low[y as usize]));
@@ -381,11 +381,9 @@ fn traced(
         }
     };
     if ncomp > 1 {
-        let input = |v: u32| match flat.vertices[v as usize] {
-            ExactPoint::Input(p) => p,
-            ExactPoint::Crossing(_) => {
-                unreachable!("a component's smallest vertex is an input point")
-            }
+        let input = |v: u32| match flat.vertices.input(v as usize) {
+            Some(p) => p,
+            None => unreachable!("a component's smallest vertex is an input point"),
         };
         let queries: Vec<Point2> = low.iter().map(|&v| input(v)).collect();
         if let Some(w) = windings_left_of(segs, na, &queries).filter(|_| strips) {
@@ -440,11 +438,17 @@ fn traced(
             class[a as usize] = b;
         }
     }
-    // Rounded points and exactness flags of the boundary's vertices.
-    let mut rounded: Vec<Option<Rounded>> = vec![None; nv];
+    // Rounded points and exactness flags of the boundary's vertices (input points, as
+    // on the axis-parallel path, are their own rounding: no cache).
+    let all_input = flat.vertices.all_input();
+    let mut rounded: Vec<Option<Rounded>> = vec![None; if all_input { 0 } else { nv }];
     let point_of = |v: usize, rounded: &mut Vec<Option<Rounded>>| -> Rounded {
+        if all_input {
+            let p = flat.vertices.approx(v);
+            return Rounded::of(&ExactPoint::Input(p), p);
+        }
         *rounded[v].get_or_insert_with(|| {
-            let p = &flat.vertices[v];
+            let p = &flat.vertices.get(v);
             Rounded::of(p, p.approx())
         })
     };
@@ -521,8 +525,12 @@ fn traced(
             for (j, &h) in ring.iter().enumerate().skip(1) {
                 let v = origin(h) as usize;
                 let rv = point_of(v, &mut rounded);
-                let o =
-                    compare_xy_filtered(&flat.vertices[v], &rv, &flat.vertices[best_v], &best_r);
+                let o = compare_xy_filtered(
+                    &flat.vertices.get(v),
+                    &rv,
+                    &flat.vertices.get(best_v),
+                    &best_r,
+                );
                 if o == Ordering::Less {
                     lowest = j;
                     best_v = v;
@@ -649,7 +657,7 @@ fn faces_left_by_strips(
     queries: &[u32],
 ) -> Option<Vec<u32>> {
     let points = &flat.vertices;
-    let input_y = |v: u32| points[v as usize].approx().y;
+    let input_y = |v: u32| points.approx(v as usize).y;
     let ne = flat.edge_count();
     let (mut ranges, mut xr) = (Vec::with_capacity(ne), Vec::with_capacity(ne));
     for i in 0..ne {
@@ -665,7 +673,7 @@ fn faces_left_by_strips(
     let rounded = |v: u32| {
         let c = &cache[v as usize];
         c.get().unwrap_or_else(|| {
-            let p = &points[v as usize];
+            let p = &points.get(v as usize);
             let r = Rounded::of(p, p.approx());
             c.set(Some(r));
             r
@@ -673,9 +681,9 @@ fn faces_left_by_strips(
     };
     let cmp_y = |a: u32, b: u32| {
         compare_y_filtered(
-            &points[a as usize],
+            &points.get(a as usize),
             &rounded(a),
-            &points[b as usize],
+            &points.get(b as usize),
             &rounded(b),
         )
     };
@@ -691,7 +699,7 @@ fn faces_left_by_strips(
         } else {
             (s.b, s.a)
         };
-        side(&points[v as usize], rounded(v).point(), up, low)
+        side(&points.get(v as usize), rounded(v).point(), up, low)
     };
     // (edge, lower end, upper end); true when c lies east of b along the line.
     let east_of = |(ci, cl, cu): (usize, u32, u32), (bi, bl, bu): (usize, u32, u32)| {
@@ -711,7 +719,7 @@ fn faces_left_by_strips(
         queries
             .iter()
             .map(|&q| {
-                let (x, y) = (points[q as usize].approx().x, input_y(q));
+                let (x, y) = (points.approx(q as usize).x, input_y(q));
                 let (from, to) = strips.range(y);
                 let items = &strips.list[from..to];
                 // Entries by decreasing x_min: those wholly east of q come first.
