@@ -36,7 +36,8 @@ use std::collections::HashMap;
 
 /// The arrangement of `segments`: edge `i` runs `edges[i][0] → edges[i][1]` and is carried
 /// by `sources[src_start[i]..src_start[i + 1]]` (ascending segment index; `forward` is
-/// relative to the edge's direction). Segment indices refer to the caller's list
+/// relative to the edge's direction), or by `sources[i]` alone when `src_start` is empty
+/// (every edge on one segment: read them through [`Flat::sources_of`]). Segment indices refer to the caller's list
 /// (zero-length segments are skipped and carry nothing).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub(crate) struct Flat {
@@ -376,6 +377,9 @@ impl Flat {
 
     /// The sources of edge `i`.
     pub(crate) fn sources_of(&self, i: usize) -> &[Source] {
+        if self.src_start.is_empty() {
+            return std::slice::from_ref(&self.sources[i]);
+        }
         &self.sources[self.src_start[i] as usize..self.src_start[i + 1] as usize]
     }
 
@@ -704,10 +708,12 @@ impl Flat {
         // overlaps the sources need no sort and no (edge, source) list.
         let pieces_bound = cuts.len();
         let mut edges: Vec<[u32; 2]> = Vec::with_capacity(pieces_bound);
-        let mut first: Vec<Source> = Vec::with_capacity(pieces_bound);
+        // (segment, forward) of each edge's first source: half the bytes of a `Source`.
+        let mut first: Vec<(u32, bool)> = Vec::with_capacity(pieces_bound);
         let mut further: Vec<(u32, Source)> = Vec::new();
-        let mut first_edge: Vec<u32> = Vec::new(); // per cut gap of the line: edge or NONE
-                                                   // Per edge: its lowest source segment and its position along that segment.
+        // Per cut gap of the line: its edge or NONE.
+        let mut first_edge: Vec<u32> = Vec::new();
+        // Per edge: its lowest source segment and its position along that segment.
         let mut place: Vec<(u32, u64)> = Vec::with_capacity(pieces_bound);
         for line in 0..line_count {
             let c0 = cut_start[line];
@@ -726,7 +732,7 @@ impl Flat {
                     if first_edge[g] == u32::MAX {
                         first_edge[g] = edges.len() as u32;
                         edges.push([cut_vertex[c0 + g], cut_vertex[c0 + g + 1]]);
-                        first.push(src);
+                        first.push((s.index, s.increasing));
                         place.push((s.index, pos));
                     } else {
                         let p = &mut place[first_edge[g] as usize];
@@ -745,13 +751,22 @@ impl Flat {
         drop(place);
         let mut edges: Vec<[u32; 2]> = order.iter().map(|&e| edges[e as usize]).collect();
         if further.is_empty() {
-            let sources: Vec<Source> = order.iter().map(|&e| first[e as usize]).collect();
+            let sources: Vec<Source> = order
+                .iter()
+                .map(|&e| {
+                    let (segment, forward) = first[e as usize];
+                    Source {
+                        segment: segment as usize,
+                        forward,
+                    }
+                })
+                .collect();
             drop((first, order));
             let vertices = Vertices::Input(renumber_vertices(&mut edges, &vertices));
             return Some(Flat {
                 vertices,
-                src_start: (0..=edges.len() as u32).collect(),
                 edges,
+                src_start: Vec::new(),
                 sources,
             });
         }
@@ -761,7 +776,10 @@ impl Flat {
             new_id[e as usize] = i as u32;
         }
         let mut pairs: Vec<(u32, Source)> = Vec::with_capacity(first.len() + further.len());
-        pairs.extend(first.iter().enumerate().map(|(e, &s)| (new_id[e], s)));
+        pairs.extend(first.iter().enumerate().map(|(e, &(segment, forward))| {
+            let segment = segment as usize;
+            (new_id[e], Source { segment, forward })
+        }));
         pairs.extend(further.iter().map(|&(e, s)| (new_id[e as usize], s)));
         drop((first, further, new_id, order));
         Some(Pieces { edges, pairs }.finish(vertices))
