@@ -232,7 +232,7 @@ impl BitSet {
 /// start at distinct cuts), as the list of old edge numbers. A counting sort by segment
 /// (`segments` bounds the indices), then a sort of each segment's few edges by position:
 /// O(n + m) plus the small sorts, instead of a comparison sort of all edges.
-fn edge_order(key: &[(u32, u64)], segments: usize) -> Vec<u32> {
+fn edge_order(key: &[(u32, u32)], segments: usize) -> Vec<u32> {
     let mut start = vec![0u32; segments + 1];
     for &(s, _) in key {
         start[s as usize + 1] += 1;
@@ -714,7 +714,9 @@ impl Flat {
         // Per cut gap of the line: its edge or NONE.
         let mut first_edge: Vec<u32> = Vec::new();
         // Per edge: its lowest source segment and its position along that segment.
-        let mut place: Vec<(u32, u64)> = Vec::with_capacity(pieces_bound);
+        // The position is the piece's gap number in the line (a segment's pieces are all
+        // in its line), complemented where the segment runs down the line.
+        let mut place: Vec<(u32, u32)> = Vec::with_capacity(pieces_bound);
         for line in 0..line_count {
             let c0 = cut_start[line];
             let along = &cuts[c0..cut_start[line + 1]];
@@ -728,7 +730,7 @@ impl Flat {
                     forward: s.increasing,
                 };
                 for g in i0..i1 {
-                    let pos = if s.increasing { along[g] } else { !along[g] };
+                    let pos = if s.increasing { g as u32 } else { !(g as u32) };
                     if first_edge[g] == u32::MAX {
                         first_edge[g] = edges.len() as u32;
                         edges.push([cut_vertex[c0 + g], cut_vertex[c0 + g + 1]]);
