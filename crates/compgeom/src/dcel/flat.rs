@@ -29,9 +29,11 @@
 //! per edge; they differ only in numbering (tested against each other and against a
 //! brute-force oracle).
 use super::build::Source;
+use super::holes::{compare_xy_filtered, Rounded};
 use crate::intersect::find_intersections;
 use crate::kernel::{ExactPoint, Point2, Segment2};
 use crate::{Error, Result};
+use std::cmp::Ordering;
 use std::collections::HashMap;
 
 /// The arrangement of `segments`: edge `i` runs `edges[i][0] → edges[i][1]` and is carried
@@ -76,6 +78,7 @@ impl From<Vec<Point2>> for Vertices {
 
 impl Vertices {
     /// The number of vertices.
+    #[inline]
     pub(crate) fn len(&self) -> usize {
         match self {
             Vertices::Exact(v) => v.len(),
@@ -83,15 +86,8 @@ impl Vertices {
         }
     }
 
-    /// Vertex `i` as an exact point.
-    pub(crate) fn get(&self, i: usize) -> ExactPoint {
-        match self {
-            Vertices::Exact(v) => v[i],
-            Vertices::Input(v) => ExactPoint::Input(v[i]),
-        }
-    }
-
     /// Vertex `i` when it is an input point.
+    #[inline]
     pub(crate) fn input(&self, i: usize) -> Option<Point2> {
         match self {
             Vertices::Exact(v) => match v[i] {
@@ -103,6 +99,7 @@ impl Vertices {
     }
 
     /// The nearest `f64` point of vertex `i`.
+    #[inline]
     pub(crate) fn approx(&self, i: usize) -> Point2 {
         match self {
             Vertices::Exact(v) => v[i].approx(),
@@ -110,7 +107,29 @@ impl Vertices {
         }
     }
 
+    /// The rounded point of vertex `i` with its exactness flags.
+    #[inline]
+    pub(crate) fn rounded(&self, i: usize) -> Rounded {
+        match self {
+            Vertices::Exact(v) => Rounded::of(&v[i], v[i].approx()),
+            Vertices::Input(v) => Rounded::of(&ExactPoint::Input(v[i]), v[i]),
+        }
+    }
+
+    /// [`compare_xy_filtered`] of vertices `a` and `b` with their rounded points (the
+    /// exact points are read, by reference, only where the rounded ones do not decide).
+    #[inline]
+    pub(crate) fn compare_xy(&self, a: usize, ra: &Rounded, b: usize, rb: &Rounded) -> Ordering {
+        match self {
+            Vertices::Exact(v) => compare_xy_filtered(&v[a], ra, &v[b], rb),
+            Vertices::Input(v) => {
+                compare_xy_filtered(&ExactPoint::Input(v[a]), ra, &ExactPoint::Input(v[b]), rb)
+            }
+        }
+    }
+
     /// True when every vertex is an input point stored as such.
+    #[inline]
     pub(crate) fn all_input(&self) -> bool {
         matches!(self, Vertices::Input(_))
     }
@@ -376,6 +395,7 @@ impl Flat {
     }
 
     /// The sources of edge `i`.
+    #[inline]
     pub(crate) fn sources_of(&self, i: usize) -> &[Source] {
         if self.src_start.is_empty() {
             return std::slice::from_ref(&self.sources[i]);
@@ -793,9 +813,10 @@ impl Flat {
 #[cfg(test)]
 pub(crate) fn canonical(f: &Flat) -> Vec<CanonicalEdge> {
     let mut out = Vec::new();
+    let vertices = f.vertices.exact();
     for i in 0..f.edge_count() {
         let [u, v] = f.edges[i];
-        let (pu, pv) = (&f.vertices.get(u as usize), &f.vertices.get(v as usize));
+        let (pu, pv) = (&vertices[u as usize], &vertices[v as usize]);
         let flip = pu.compare_xy(pv) == std::cmp::Ordering::Greater;
         let (a, b) = if flip { (pv, pu) } else { (pu, pv) };
         let mut src: Vec<(usize, bool)> = f

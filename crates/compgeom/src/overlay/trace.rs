@@ -37,9 +37,7 @@
 //! against it on degenerate input). Cost: that of the noding plus O(V + E) and the angular
 //! sorts at vertices of degree > 2, plus, with several components, the strips (O(V + E)
 //! and a few tests per component on map-like data) or the hole sweep.
-use crate::dcel::{
-    compare_xy_filtered, compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounded,
-};
+use crate::dcel::{compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounded};
 use crate::kernel::{orient2d, ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2};
 use crate::Result;
 use std::cell::Cell;
@@ -443,14 +441,14 @@ fn traced(
     let all_input = flat.vertices.all_input();
     let mut rounded: Vec<Option<Rounded>> = vec![None; if all_input { 0 } else { nv }];
     let point_of = |v: usize, rounded: &mut Vec<Option<Rounded>>| -> Rounded {
-        if all_input {
-            let p = flat.vertices.approx(v);
-            return Rounded::of(&ExactPoint::Input(p), p);
+        if let Some(Some(r)) = rounded.get(v) {
+            return *r;
         }
-        *rounded[v].get_or_insert_with(|| {
-            let p = &flat.vertices.get(v);
-            Rounded::of(p, p.approx())
-        })
+        let r = flat.vertices.rounded(v);
+        if let Some(slot) = rounded.get_mut(v) {
+            *slot = Some(r);
+        }
+        r
     };
     let on_boundary =
         |h: u32| chosen[cyc[h as usize] as usize] && !chosen[cyc[(h ^ 1) as usize] as usize];
@@ -525,12 +523,7 @@ fn traced(
             for (j, &h) in ring.iter().enumerate().skip(1) {
                 let v = origin(h) as usize;
                 let rv = point_of(v, &mut rounded);
-                let o = compare_xy_filtered(
-                    &flat.vertices.get(v),
-                    &rv,
-                    &flat.vertices.get(best_v),
-                    &best_r,
-                );
+                let o = flat.vertices.compare_xy(v, &rv, best_v, &best_r);
                 if o == Ordering::Less {
                     lowest = j;
                     best_v = v;
@@ -656,8 +649,9 @@ fn faces_left_by_strips(
     seg_of: impl Fn(usize) -> Segment2,
     queries: &[u32],
 ) -> Option<Vec<u32>> {
-    let points = &flat.vertices;
-    let input_y = |v: u32| points.approx(v as usize).y;
+    let points = flat.vertices.exact();
+    let points: &[ExactPoint] = &points;
+    let input_y = |v: u32| points[v as usize].approx().y;
     let ne = flat.edge_count();
     let (mut ranges, mut xr) = (Vec::with_capacity(ne), Vec::with_capacity(ne));
     for i in 0..ne {
@@ -673,7 +667,7 @@ fn faces_left_by_strips(
     let rounded = |v: u32| {
         let c = &cache[v as usize];
         c.get().unwrap_or_else(|| {
-            let p = &points.get(v as usize);
+            let p = &points[v as usize];
             let r = Rounded::of(p, p.approx());
             c.set(Some(r));
             r
@@ -681,9 +675,9 @@ fn faces_left_by_strips(
     };
     let cmp_y = |a: u32, b: u32| {
         compare_y_filtered(
-            &points.get(a as usize),
+            &points[a as usize],
             &rounded(a),
-            &points.get(b as usize),
+            &points[b as usize],
             &rounded(b),
         )
     };
@@ -699,7 +693,7 @@ fn faces_left_by_strips(
         } else {
             (s.b, s.a)
         };
-        side(&points.get(v as usize), rounded(v).point(), up, low)
+        side(&points[v as usize], rounded(v).point(), up, low)
     };
     // (edge, lower end, upper end); true when c lies east of b along the line.
     let east_of = |(ci, cl, cu): (usize, u32, u32), (bi, bl, bu): (usize, u32, u32)| {
@@ -719,7 +713,7 @@ fn faces_left_by_strips(
         queries
             .iter()
             .map(|&q| {
-                let (x, y) = (points.approx(q as usize).x, input_y(q));
+                let (x, y) = (points[q as usize].approx().x, input_y(q));
                 let (from, to) = strips.range(y);
                 let items = &strips.list[from..to];
                 // Entries by decreasing x_min: those wholly east of q come first.
