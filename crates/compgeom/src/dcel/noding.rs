@@ -214,55 +214,41 @@ const STRIP_BOXES: f64 = 3.0;
 /// From this many segments on, the pair tests run on the rayon pool.
 const PARALLEL_SWEEP_FROM: usize = 16_384;
 
-/// Where the sweep's entries go: `rows` horizontal strips of equal height over the
-/// y-extent, each cut into `cols` x-buckets of equal width; cell `(r, c)` is number
-/// `r · cols + c`. Strip and bucket are monotone (non-decreasing) functions of the
-/// coordinates.
+/// Equal steps along one axis from `lo`: `steps` of them, a monotone (non-decreasing)
+/// function of the coordinate.
 #[derive(Clone, Copy)]
-struct Cells {
-    lo: [f64; 2],
-    inv: [f64; 2],
-    rows: u32,
-    cols: u32,
+struct Steps {
+    lo: f64,
+    inv: f64,
+    last: u32,
 }
 
-impl Cells {
-    /// `rows` strips (1, or more for a y-extent that is positive and finite) of `cols`
-    /// buckets over the extent `e` = `[min x, max x, min y, max y]` (positive, finite
-    /// x-extent).
-    fn new(e: &[f64; 4], rows: u32, cols: u32) -> Cells {
-        let inv_y = if rows > 1 {
-            rows as f64 / (e[3] - e[2])
-        } else {
-            0.0
-        };
-        Cells {
-            lo: [e[0], e[2]],
-            inv: [cols as f64 / (e[1] - e[0]), inv_y],
-            rows,
-            cols,
+impl Steps {
+    /// `steps` over `lo..=hi` (`hi - lo` positive; when it overflows, all in step 0).
+    fn new(lo: f64, hi: f64, steps: u32) -> Steps {
+        Steps {
+            lo,
+            inv: steps as f64 / (hi - lo),
+            last: steps - 1,
         }
     }
 
-    /// `[first strip, last strip, bucket of min x, bucket of max x]` of box `b`.
-    /// (`as u32` saturates and is cheaper than a conversion to u64; the min keeps the
-    /// upper ends in range.)
+    /// The step of `v`. (`as u32` saturates and is cheaper than a conversion to u64; the
+    /// min keeps the upper end in range.)
     #[inline(always)]
-    fn span(&self, b: &[f64; 4]) -> [u32; 4] {
-        let col = |x: f64| (((x - self.lo[0]) * self.inv[0]) as u32).min(self.cols - 1);
-        let row = |y: f64| (((y - self.lo[1]) * self.inv[1]) as u32).min(self.rows - 1);
-        [row(b[2]), row(b[3]), col(b[0]), col(b[1])]
-    }
-
-    fn count(&self) -> usize {
-        self.rows as usize * self.cols as usize
+    fn of(&self, v: f64) -> u32 {
+        (((v - self.lo) * self.inv) as u32).min(self.last)
     }
 }
 
-/// The counts of one layout, before its entries are placed.
+/// The counts of one layout, before its entries are placed: `rows` strips, each cut into
+/// `cols` x-buckets; cell `(r, c)` is number `r · cols + c`.
 struct Plan {
-    cells: Cells,
-    /// `start[c]`: the entries in the cells before `c` (`cells.count() + 1` values).
+    rows: u32,
+    cols: u32,
+    /// Per segment `[first strip, last strip, bucket of min x, bucket of max x]`.
+    spans: Vec<[u32; 4]>,
+    /// `start[c]`: the entries in the cells before `c` (`rows · cols + 1` values).
     start: Vec<u32>,
     entries: usize,
     /// The pairs the scan will look at (box tests).
@@ -270,43 +256,63 @@ struct Plan {
 }
 
 impl Plan {
-    /// Count the entries of `sub` in `cells` (a segment is an entry in every strip its box
-    /// spans) and the pairs the scan would look at, without placing them; `None` beyond
-    /// `max_entries`. O(n + cells).
-    fn new(sub: &[Segment2], cells: Cells, max_entries: usize) -> Option<Plan> {
-        let cols = cells.cols as usize;
-        let mut start = vec![0u32; cells.count() + 1];
+    /// Count the entries (a segment is an entry in every strip its box spans) and the
+    /// pairs the scan would look at, without placing them; `None` beyond `max_entries`.
+    /// O(n + cells).
+    fn new(spans: Vec<[u32; 4]>, rows: u32, cols: u32, max_entries: usize) -> Option<Plan> {
+        let cells = rows as usize * cols as usize;
+        let cols_ = cols as usize;
+        let mut start = vec![0u32; cells + 1];
         let mut entries = 0usize;
-        for s in sub {
-            let [r0, r1, c0, _] = cells.span(&box_of(s));
-            entries += (r1 - r0) as usize + 1;
-            if entries > max_entries {
-                return None;
+        let mut looked = 0u64;
+        if rows == 1 {
+            // One strip (the usual case): one entry per segment, no loop over strips.
+            entries = spans.len();
+            for sp in &spans {
+                start[sp[2] as usize + 1] += 1;
             }
-            for r in r0 as usize..=r1 as usize {
-                start[r * cols + c0 as usize + 1] += 1;
+            prefix_sums(&mut start);
+            for sp in &spans {
+                looked += u64::from(start[sp[3] as usize + 1]);
             }
-        }
-        for c in 0..cells.count() {
-            start[c + 1] += start[c];
+        } else {
+            for &[r0, r1, c0, _] in &spans {
+                entries += (r1 - r0) as usize + 1;
+                if entries > max_entries {
+                    return None;
+                }
+                for r in r0 as usize..r1 as usize + 1 {
+                    start[r * cols_ + c0 as usize + 1] += 1;
+                }
+            }
+            prefix_sums(&mut start);
+            for &[r0, r1, _, c1] in &spans {
+                for r in r0 as usize..r1 as usize + 1 {
+                    looked += u64::from(start[r * cols_ + c1 as usize + 1]);
+                }
+            }
         }
         // Entry p in strip r with right bucket c1 is scanned against p + 1..end of cell
         // (r, c1): summed over the entries, Σ end − Σ (p + 1).
-        let mut looked = 0u64;
-        for s in sub {
-            let [r0, r1, _, c1] = cells.span(&box_of(s));
-            for r in r0 as usize..=r1 as usize {
-                looked += u64::from(start[r * cols + c1 as usize + 1]);
-            }
-        }
         let n = entries as u64;
         looked -= n * (n + 1) / 2;
         Some(Plan {
-            cells,
+            rows,
+            cols,
+            spans,
             start,
             entries,
             looked,
         })
+    }
+}
+
+/// Running sums in place: `v[k]` becomes `v[0] + … + v[k]`.
+fn prefix_sums(v: &mut [u32]) {
+    let mut sum = 0;
+    for x in v {
+        sum += *x;
+        *x = sum;
     }
 }
 
@@ -409,8 +415,13 @@ impl XSweep {
         if !(e[1] - e[0]).is_finite() || e[1] - e[0] <= 0.0 {
             return None;
         }
-        // About one bucket per segment in one strip; two per segment over all strips.
-        let mut plan = Plan::new(sub, Cells::new(e, 1, n as u32), usize::MAX)?;
+        // About one bucket per segment in one strip.
+        let xs = Steps::new(e[0], e[1], n as u32);
+        let spans = sub
+            .iter()
+            .map(|s| [0, 0, xs.of(min2(s.a.x, s.b.x)), xs.of(max2(s.a.x, s.b.x))])
+            .collect();
+        let mut plan = Plan::new(spans, 1, n as u32, usize::MAX)?;
         let many = plan.looked > STRIPS_FROM_PAIRS_PER_SEGMENT * n as u64;
         let rows = match layout {
             Layout::One => 1,
@@ -419,14 +430,26 @@ impl XSweep {
             Layout::Strips => strips_for(e, heights, n).max(5),
         };
         if rows > 1 && (e[3] - e[2]).is_finite() && e[3] > e[2] {
-            let cells = Cells::new(e, rows, (2 * n as u32 / rows).max(1));
+            // Buckets 2^shift times wider than in one strip (the same order, coarser),
+            // about two per segment over all strips.
+            let shift = (rows / 2).max(1).ilog2();
+            let cols = ((n as u32 - 1) >> shift) + 1;
+            let ys = Steps::new(e[2], e[3], rows);
+            let spans = sub
+                .iter()
+                .zip(&plan.spans)
+                .map(|(s, sp)| {
+                    let (lo, hi) = (min2(s.a.y, s.b.y), max2(s.a.y, s.b.y));
+                    [ys.of(lo), ys.of(hi), sp[2] >> shift, sp[3] >> shift]
+                })
+                .collect();
             // Auto takes the strips only when they copy few boxes and look at fewer pairs.
             let cap = if layout == Layout::Auto {
                 2 * n
             } else {
                 usize::MAX
             };
-            if let Some(strips) = Plan::new(sub, cells, cap) {
+            if let Some(strips) = Plan::new(spans, rows, cols, cap) {
                 if layout == Layout::Strips || strips.looked < plan.looked {
                     plan = strips;
                 }
@@ -438,30 +461,38 @@ impl XSweep {
     /// The entries of `plan`, placed by a counting sort (index order within a cell).
     fn placed(sub: &[Segment2], plan: Plan) -> XSweep {
         let Plan {
-            cells,
+            rows,
+            cols,
+            spans,
             mut start,
             entries,
             ..
         } = plan;
-        let cols = cells.cols as usize;
-        let strips = cells.rows > 1;
+        let cols = cols as usize;
+        let strips = rows > 1;
         let mut ids = vec![0u32; entries];
         let mut stop = vec![0u32; entries];
         let mut lead = vec![false; if strips { entries } else { 0 }];
-        for (i, s) in sub.iter().enumerate() {
-            let [r0, r1, c0, c1] = cells.span(&box_of(s));
-            for r in r0 as usize..=r1 as usize {
+        for (i, &[r0, r1, c0, c1]) in spans.iter().enumerate() {
+            if !strips {
+                // One strip: one entry, no loop.
+                let slot = &mut start[c0 as usize];
+                ids[*slot as usize] = i as u32;
+                stop[*slot as usize] = c1;
+                *slot += 1;
+                continue;
+            }
+            for r in r0 as usize..r1 as usize + 1 {
                 let slot = &mut start[r * cols + c0 as usize];
                 let at = *slot as usize;
                 *slot += 1;
                 ids[at] = i as u32;
                 // For now the cell of the right end, in this strip.
                 stop[at] = (r * cols + c1 as usize) as u32;
-                if strips {
-                    lead[at] = r == r0 as usize;
-                }
+                lead[at] = r == r0 as usize;
             }
         }
+        drop(spans);
         // Each `start[c]` has moved to the end of cell c.
         for s in &mut stop {
             *s = start[*s as usize];
