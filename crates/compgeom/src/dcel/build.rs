@@ -95,7 +95,32 @@ fn cross_dirs(s1: Segment2, f1: bool, s2: Segment2, f2: bool) -> Ordering {
         let ((x1, y1), (x2, y2)) = (dir(s1, f1), dir(s2, f2));
         return (x1 * y2 - y1 * x2).cmp(&0);
     }
-    cross_dirs_slopes(s1, f1, s2, f2)
+    cross_dirs_filtered(s1, f1, s2, f2).unwrap_or_else(|| cross_dirs_slopes(s1, f1, s2, f2))
+}
+
+/// [`cross_dirs`] by a floating-point filter, `None` when it cannot tell. The
+/// determinant `dx·ey − dy·ex` of four rounded differences is the form of Shewchuk's
+/// orient2d stage A (whose bound does not use that its differences share a point), so
+/// its error is at most `(3 + 16ε)ε (|dx·ey| + |dy·ex|)`; the absolute term covers the
+/// products' underflow (each at most 2^-1075 off), and overflow gives an infinite or
+/// NaN sum that fails the test. Reversing one direction reverses the sign.
+#[inline]
+fn cross_dirs_filtered(s1: Segment2, f1: bool, s2: Segment2, f2: bool) -> Option<Ordering> {
+    const EPS: f64 = f64::EPSILON / 2.0;
+    const BOUND: f64 = (3.0 + 16.0 * EPS) * EPS;
+    const TINY: f64 = 1e-300;
+    let left = (s1.b.x - s1.a.x) * (s2.b.y - s2.a.y);
+    let right = (s1.b.y - s1.a.y) * (s2.b.x - s2.a.x);
+    let det = left - right;
+    let err = BOUND * (left.abs() + right.abs()) + TINY;
+    let sign = if det > err {
+        Ordering::Greater
+    } else if det < -err {
+        Ordering::Less
+    } else {
+        return None;
+    };
+    Some(if f1 == f2 { sign } else { sign.reverse() })
 }
 
 /// [`cross_dirs`] by the kernel's exact slope comparison (any directions).
@@ -667,6 +692,48 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(500))]
+
+        /// Where the filter answers, it is the exact slope comparison: on a small integer
+        /// grid (parallel and anti-parallel directions, equal segments), on random input
+        /// and at tiny and huge magnitudes (underflowing and overflowing products).
+        #[test]
+        fn the_filtered_turn_is_the_exact_one(
+            c in proptest::collection::vec(-4..5i32, 8),
+            r in proptest::collection::vec(-1.0..1.0f64, 8),
+            grid in proptest::bool::ANY,
+            scale in proptest::sample::select(vec![1.0, 3.0e-10, 1e-160, 1e-300, 1e150, 1e300]),
+            f1 in proptest::bool::ANY,
+            f2 in proptest::bool::ANY,
+        ) {
+            let v: Vec<f64> = (0..8)
+                .map(|k| if grid { c[k] as f64 } else { r[k] } * scale)
+                .collect();
+            let s = Segment2::new(Point2::new(v[0], v[1]), Point2::new(v[2], v[3]));
+            let t = Segment2::new(Point2::new(v[4], v[5]), Point2::new(v[6], v[7]));
+            if let Some(fast) = cross_dirs_filtered(s, f1, t, f2) {
+                proptest::prop_assert_eq!(fast, cross_dirs_slopes(s, f1, t, f2));
+            }
+            // A nearly parallel copy: the filter must not answer wrongly either.
+            let u = Segment2::new(s.a, Point2::new(f64::from_bits(s.b.x.to_bits() ^ 1), s.b.y));
+            if let Some(fast) = cross_dirs_filtered(s, f1, u, f2) {
+                proptest::prop_assert_eq!(fast, cross_dirs_slopes(s, f1, u, f2));
+            }
+            // Directions parallel up to rounding (a scaled copy, and one through a far
+            // point): products that nearly cancel.
+            let (dx, dy) = (s.b.x - s.a.x, s.b.y - s.a.y);
+            for k in [3.0, 0.1, -7.3] {
+                let o = Point2::new(v[4] * 1e3, v[5]);
+                let w = Segment2::new(o, Point2::new(o.x + k * dx, o.y + k * dy));
+                if let Some(fast) = cross_dirs_filtered(s, f1, w, f2) {
+                    proptest::prop_assert_eq!(fast, cross_dirs_slopes(s, f1, w, f2));
+                }
+            }
+            proptest::prop_assert_eq!(cross_dirs(s, f1, t, f2), cross_dirs_slopes(s, f1, t, f2));
         }
     }
 }

@@ -948,7 +948,7 @@ mod tests {
     fn noded_all(segs: &[Segment2]) -> Result<Flat, TestCaseError> {
         use crate::dcel::noding::Candidates;
         let auto = Flat::noded(segs).unwrap();
-        for how in [Candidates::Sweep, Candidates::Grid] {
+        for how in [Candidates::Sweep, Candidates::Strips, Candidates::Grid] {
             prop_assert_eq!(&Flat::noded_by(segs, how).unwrap(), &auto, "{:?}", how);
         }
         Ok(auto)

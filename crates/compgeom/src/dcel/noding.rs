@@ -201,21 +201,152 @@ impl Found {
 /// constant); beyond that the grid, which also separates boxes in y, is cheaper.
 const SWEEP_PAIRS_PER_SEGMENT: usize = 24;
 
+/// When one strip would look at more than this many pairs per segment, strips are tried
+/// (stars look at about 5 per segment in one strip and keep it).
+const STRIPS_FROM_PAIRS_PER_SEGMENT: u64 = 8;
+
+/// The height of a strip in average box heights: lower strips pair fewer boxes that are
+/// apart in y, taller ones copy fewer boxes into two strips (3 looked at the fewest
+/// pairs on the GEOS-837 dissolve and the water map, about 5.7 and 4.2 per segment
+/// against 23 and 96 in one strip, with a third more entries).
+const STRIP_BOXES: f64 = 3.0;
+
+/// The box tests of the sweep run in chunks of this many candidates.
+const CHUNK: usize = 32;
+
 /// From this many segments on, the pair tests run on the rayon pool.
 const PARALLEL_SWEEP_FROM: usize = 16_384;
 
-/// The segments in x-sweep order: by the bucket of the left end of their boxes (ties by
-/// index), buckets of equal width over the x-extent. The bucket of `x` is a monotone
-/// (non-decreasing) function of `x`, so entry `p` is a candidate against the entries
-/// `p + 1..stop[p]`, the later ones whose left bucket is at most the bucket of its right
-/// end: every pair whose boxes overlap is one of these (the entries between the earlier
-/// one of a pair and the later have buckets between theirs), and each is listed once.
+/// Equal steps along one axis from `lo`: `steps` of them, a monotone (non-decreasing)
+/// function of the coordinate.
+#[derive(Clone, Copy)]
+struct Steps {
+    lo: f64,
+    inv: f64,
+    last: u32,
+}
+
+impl Steps {
+    /// `steps` over `lo..=hi` (`hi - lo` positive; when it overflows, all in step 0).
+    fn new(lo: f64, hi: f64, steps: u32) -> Steps {
+        Steps {
+            lo,
+            inv: steps as f64 / (hi - lo),
+            last: steps - 1,
+        }
+    }
+
+    /// The step of `v`. (`as u32` saturates and is cheaper than a conversion to u64; the
+    /// min keeps the upper end in range.)
+    #[inline(always)]
+    fn of(&self, v: f64) -> u32 {
+        (((v - self.lo) * self.inv) as u32).min(self.last)
+    }
+}
+
+/// The counts of one layout, before its entries are placed: `rows` strips, each cut into
+/// `cols` x-buckets; cell `(r, c)` is number `r · cols + c`.
+struct Plan {
+    rows: u32,
+    cols: u32,
+    /// Per segment `[first strip, last strip, bucket of min x, bucket of max x]`.
+    spans: Vec<[u32; 4]>,
+    /// `start[c]`: the entries in the cells before `c` (`rows · cols + 1` values).
+    start: Vec<u32>,
+    entries: usize,
+    /// The pairs the scan will look at (box tests).
+    looked: u64,
+}
+
+impl Plan {
+    /// Count the entries (a segment is an entry in every strip its box spans) and the
+    /// pairs the scan would look at, without placing them; `None` beyond `max_entries`.
+    /// O(n + cells).
+    fn new(spans: Vec<[u32; 4]>, rows: u32, cols: u32, max_entries: usize) -> Option<Plan> {
+        let cells = rows as usize * cols as usize;
+        let cols_ = cols as usize;
+        let mut start = vec![0u32; cells + 1];
+        let mut entries = 0usize;
+        let mut looked = 0u64;
+        if rows == 1 {
+            // One strip (the usual case): one entry per segment, no loop over strips.
+            entries = spans.len();
+            for sp in &spans {
+                start[sp[2] as usize + 1] += 1;
+            }
+            prefix_sums(&mut start);
+            for sp in &spans {
+                looked += u64::from(start[sp[3] as usize + 1]);
+            }
+        } else {
+            for &[r0, r1, c0, _] in &spans {
+                entries += (r1 - r0) as usize + 1;
+                if entries > max_entries {
+                    return None;
+                }
+                for r in r0 as usize..r1 as usize + 1 {
+                    start[r * cols_ + c0 as usize + 1] += 1;
+                }
+            }
+            prefix_sums(&mut start);
+            for &[r0, r1, _, c1] in &spans {
+                for r in r0 as usize..r1 as usize + 1 {
+                    looked += u64::from(start[r * cols_ + c1 as usize + 1]);
+                }
+            }
+        }
+        // Entry p in strip r with right bucket c1 is scanned against p + 1..end of cell
+        // (r, c1): summed over the entries, Σ end − Σ (p + 1).
+        let n = entries as u64;
+        looked -= n * (n + 1) / 2;
+        Some(Plan {
+            rows,
+            cols,
+            spans,
+            start,
+            entries,
+            looked,
+        })
+    }
+}
+
+/// Running sums in place: `v[k]` becomes `v[0] + … + v[k]`.
+fn prefix_sums(v: &mut [u32]) {
+    let mut sum = 0;
+    for x in v {
+        sum += *x;
+        *x = sum;
+    }
+}
+
+/// Which layouts [`XSweep::new`] may use.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Layout {
+    /// One strip, or strips when one would look at many pairs and strips at fewer.
+    Auto,
+    /// One strip.
+    One,
+    /// Strips (at least 5 where the y-extent allows: tests force many).
+    Strips,
+}
+
+/// The segments in sweep order: by strip, then by the bucket of the left end of their
+/// boxes, then by index; a segment whose box spans several strips is an entry in each.
+/// Within a strip the bucket is a monotone function of `x`, so entry `p` is a candidate
+/// against the entries `p + 1..stop[p]`, the later ones of its strip whose left bucket is
+/// at most the bucket of its right end: every pair whose boxes overlap meets in the strip
+/// of the lower edge of their intersection, the larger of their first strips, where both
+/// are entries and one is listed against the other; the pair is tested there only, so
+/// once. Usually one strip (an x-interval sweep); strips when boxes share x-ranges but
+/// are apart in y (columns of map tiles, long horizontal edges).
 struct XSweep {
     /// `[min x, max x, min y, max y]`, in sweep order.
     boxes: Vec<[f64; 4]>,
     segs: Vec<Segment2>,
     ids: Vec<u32>,
     stop: Vec<u32>,
+    /// Whether the entry is in the first strip of its segment (empty for one strip).
+    lead: Vec<bool>,
 }
 
 /// The smaller of two finite values (a plain compare: no NaN to care for).
@@ -249,6 +380,15 @@ fn box_of(s: &Segment2) -> [f64; 4] {
     ]
 }
 
+/// The number of strips for boxes of heights summing to `heights` over the extent `e`:
+/// about [`STRIP_BOXES`] average heights each, at most one per 16 segments (so that the
+/// buckets of a strip still separate boxes in x; the cap also for zero heights).
+fn strips_for(e: &[f64; 4], heights: f64, n: usize) -> u32 {
+    let rows = (e[3] - e[2]) / (STRIP_BOXES * heights / n as f64);
+    // (`as u32` saturates: NaN and infinity give 0 or the cap.)
+    (rows.min((n / 16) as f64) as u32).max(1)
+}
+
 /// `map` over `items` in order, on the rayon pool when `parallel`.
 fn map_vec<T: Sync, U: Send>(
     items: &[T],
@@ -263,91 +403,175 @@ fn map_vec<T: Sync, U: Send>(
 }
 
 impl XSweep {
-    /// The sweep order of the segments `sub` with x-extent `lo..=hi`, or `None` when it
-    /// would look at more than `budget` pairs (long segments, or many separated in y
-    /// only) or the x-extent is zero or overflows. O(n + pairs looked at).
-    fn new(sub: &[Segment2], lo: f64, hi: f64, budget: usize) -> Option<XSweep> {
+    /// The sweep order of the segments `sub` with extent `e` = `[min x, max x, min y,
+    /// max y]` and box heights summing to `heights`, or `None` when it would look at more
+    /// than `budget` pairs (long segments, or many separated in y only) or the x-extent
+    /// is zero or overflows. O(n + entries + pairs looked at).
+    fn new(
+        sub: &[Segment2],
+        e: &[f64; 4],
+        heights: f64,
+        layout: Layout,
+        budget: u64,
+    ) -> Option<XSweep> {
         let n = sub.len();
-        let size = hi - lo;
-        if !(size.is_finite() && size > 0.0) {
+        if !(e[1] - e[0]).is_finite() || e[1] - e[0] <= 0.0 {
             return None;
         }
-        let parallel = n >= PARALLEL_SWEEP_FROM;
-        // About one bucket per segment. `as usize` saturates; the min keeps `hi` in range.
-        let buckets = n.max(1);
-        let inv = buckets as f64 / size;
-        // (`as u32` saturates and is cheaper than a conversion to u64; n < 2^29.)
-        let last = buckets as u32 - 1;
-        let bucket = |x: f64| (((x - lo) * inv) as u32).min(last);
-        // Counting sort by left bucket, index order within a bucket.
-        let left_of: Vec<u32> = map_vec(sub, parallel, |s| bucket(min2(s.a.x, s.b.x)));
-        let mut start = vec![0u32; buckets + 1];
-        for &b in &left_of {
-            start[b as usize + 1] += 1;
+        // About one bucket per segment in one strip.
+        let xs = Steps::new(e[0], e[1], n as u32);
+        let spans = sub
+            .iter()
+            .map(|s| [0, 0, xs.of(min2(s.a.x, s.b.x)), xs.of(max2(s.a.x, s.b.x))])
+            .collect();
+        let mut plan = Plan::new(spans, 1, n as u32, usize::MAX)?;
+        let many = plan.looked > STRIPS_FROM_PAIRS_PER_SEGMENT * n as u64;
+        let rows = match layout {
+            Layout::One => 1,
+            Layout::Auto if !many => 1,
+            Layout::Auto => strips_for(e, heights, n),
+            Layout::Strips => strips_for(e, heights, n).max(5),
+        };
+        if rows > 1 && (e[3] - e[2]).is_finite() && e[3] > e[2] {
+            // Buckets 2^shift times wider than in one strip (the same order, coarser),
+            // about two per segment over all strips.
+            let shift = (rows / 2).max(1).ilog2();
+            let cols = ((n as u32 - 1) >> shift) + 1;
+            let ys = Steps::new(e[2], e[3], rows);
+            let spans = sub
+                .iter()
+                .zip(&plan.spans)
+                .map(|(s, sp)| {
+                    let (lo, hi) = (min2(s.a.y, s.b.y), max2(s.a.y, s.b.y));
+                    [ys.of(lo), ys.of(hi), sp[2] >> shift, sp[3] >> shift]
+                })
+                .collect();
+            // Auto takes the strips only when they copy few boxes and look at fewer pairs.
+            let cap = if layout == Layout::Auto {
+                2 * n
+            } else {
+                usize::MAX
+            };
+            if let Some(strips) = Plan::new(spans, rows, cols, cap) {
+                if layout == Layout::Strips || strips.looked < plan.looked {
+                    plan = strips;
+                }
+            }
         }
-        for k in 0..buckets {
-            start[k + 1] += start[k];
+        (plan.looked <= budget).then(|| XSweep::placed(sub, plan))
+    }
+
+    /// The entries of `plan`, placed by a counting sort (index order within a cell).
+    fn placed(sub: &[Segment2], plan: Plan) -> XSweep {
+        let Plan {
+            rows,
+            cols,
+            spans,
+            mut start,
+            entries,
+            ..
+        } = plan;
+        let cols = cols as usize;
+        let strips = rows > 1;
+        let mut ids = vec![0u32; entries];
+        let mut stop = vec![0u32; entries];
+        let mut lead = vec![false; if strips { entries } else { 0 }];
+        for (i, &[r0, r1, c0, c1]) in spans.iter().enumerate() {
+            if !strips {
+                // One strip: one entry, no loop.
+                let slot = &mut start[c0 as usize];
+                ids[*slot as usize] = i as u32;
+                stop[*slot as usize] = c1;
+                *slot += 1;
+                continue;
+            }
+            for r in r0 as usize..r1 as usize + 1 {
+                let slot = &mut start[r * cols + c0 as usize];
+                let at = *slot as usize;
+                *slot += 1;
+                ids[at] = i as u32;
+                // For now the cell of the right end, in this strip.
+                stop[at] = (r * cols + c1 as usize) as u32;
+                lead[at] = r == r0 as usize;
+            }
         }
-        let mut ids = vec![0u32; n];
-        for (i, &b) in left_of.iter().enumerate() {
-            ids[start[b as usize] as usize] = i as u32;
-            start[b as usize] += 1;
+        drop(spans);
+        // Each `start[c]` has moved to the end of cell c.
+        for s in &mut stop {
+            *s = start[*s as usize];
         }
         drop(start);
-        let left: Vec<u32> = map_vec(&ids, parallel, |&i| left_of[i as usize]);
-        drop(left_of);
+        let parallel = entries >= PARALLEL_SWEEP_FROM;
         let segs: Vec<Segment2> = map_vec(&ids, parallel, |&i| sub[i as usize]);
         // The boxes only in sweep order (built here, not permuted: less memory).
         let boxes: Vec<[f64; 4]> = map_vec(&ids, parallel, |&i| box_of(&sub[i as usize]));
-        let mut looked = 0usize;
-        let mut stop = Vec::with_capacity(n);
-        for (p, b) in boxes.iter().enumerate() {
-            let right = bucket(b[1]);
-            let q = p + 1 + left[p + 1..].iter().take_while(|&&l| l <= right).count();
-            looked += q - p - 1;
-            if looked > budget {
-                return None;
-            }
-            stop.push(q as u32);
-        }
-        Some(XSweep {
+        XSweep {
             boxes,
             segs,
             ids,
             stop,
-        })
+            lead,
+        }
+    }
+
+    /// The number of entries.
+    fn len(&self) -> usize {
+        self.ids.len()
     }
 
     /// Test the candidates of the entries `ps` whose boxes overlap their own.
     fn scan(&self, ps: std::ops::Range<usize>, found: &mut Found, bound: f64) {
+        // One buffer for all entries (zeroing one per entry showed in profiles).
+        let mut hits = [0u32; CHUNK];
         for p in ps {
-            self.scan_one(p, found, bound);
+            let (s, i) = (self.segs[p], self.ids[p]);
+            self.pairs_of(p, &mut hits, |q| self.test_pair(s, i, q, found, bound));
         }
     }
 
-    /// Test the candidates of entry `p` whose boxes overlap its own.
+    /// Call `f(q)` for the entries `q` that entry `p` is tested against: the candidates
+    /// whose boxes overlap its own, in order. An entry past the first strip of its
+    /// segment is tested only against entries whose segments start in this strip (the
+    /// pair's strip).
     #[inline(always)]
-    fn scan_one(&self, p: usize, found: &mut Found, bound: f64) {
-        let (a, s, i) = (self.boxes[p], self.segs[p], self.ids[p]);
+    fn pairs_of(&self, p: usize, hits: &mut [u32; CHUNK], f: impl FnMut(usize)) {
+        if self.lead.is_empty() || self.lead[p] {
+            self.pairs_of_by::<false>(p, hits, f);
+        } else {
+            self.pairs_of_by::<true>(p, hits, f);
+        }
+    }
+
+    /// [`XSweep::pairs_of`], with `LEADS`: only entries that are the first of their
+    /// segments.
+    #[inline(always)]
+    fn pairs_of_by<const LEADS: bool>(
+        &self,
+        p: usize,
+        hits: &mut [u32; CHUNK],
+        mut f: impl FnMut(usize),
+    ) {
+        let a = self.boxes[p];
         let end = self.stop[p] as usize;
         // The box tests first, without branches (their outcome is a coin toss for the
         // branch predictor: most of the scan's time was mispredictions), writing the
         // overlapping entries to `hits` in order; then the pair tests in that order.
-        const CHUNK: usize = 32;
-        let mut hits = [0u32; CHUNK];
         let mut from = p + 1;
         while from < end {
             let to = end.min(from + CHUNK);
             let mut k = 0;
             for (q, b) in self.boxes[from..to].iter().enumerate() {
-                let apart = (b[0] > a[1]) | (a[0] > b[1]) | (b[2] > a[3]) | (a[2] > b[3]);
+                let mut apart = (b[0] > a[1]) | (a[0] > b[1]) | (b[2] > a[3]) | (a[2] > b[3]);
+                if LEADS {
+                    apart |= !self.lead[from + q];
+                }
                 // (k < CHUNK always; the mask lets the compiler drop the bounds check.)
                 hits[k & (CHUNK - 1)] = (from + q) as u32;
                 k += usize::from(!apart);
             }
             from = to;
             for &q in &hits[..k] {
-                self.test_pair(s, i, q as usize, found, bound);
+                f(q as usize);
             }
         }
     }
@@ -370,10 +594,14 @@ impl XSweep {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(not(test), allow(dead_code))]
 pub(crate) enum Candidates {
-    /// The x-interval sweep unless it would look at too many pairs, else the grid.
+    /// The x-interval sweep (in strips when they look at fewer pairs) unless it would
+    /// look at too many pairs, else the grid.
     Auto,
-    /// The x-interval sweep whatever it costs (the grid for a zero x-extent).
+    /// The x-interval sweep in one strip whatever it costs (the grid for a zero
+    /// x-extent).
     Sweep,
+    /// The sweep in strips (at least 5 where the y-extent is positive), whatever it costs.
+    Strips,
     /// The grid (the intersection sweep when the grid would test too many pairs).
     Grid,
 }
@@ -416,8 +644,10 @@ impl Flat {
 /// item ids would not fit in `u32` (the intersection sweep then does it all).
 fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
     let inf = f64::INFINITY;
+    let mut heights = 0.0;
     let e = sub.iter().fold([inf, -inf, inf, -inf], |e, s| {
         let b = box_of(s);
+        heights += b[3] - b[2];
         [
             min2(e[0], b[0]),
             max2(e[1], b[1]),
@@ -428,15 +658,15 @@ fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
     // The largest coordinate magnitude (-inf for no segments: an infinite bound).
     let m = max2(max2(-e[0], e[1]), max2(-e[2], e[3]));
     let bound = static_orient_bound(m);
+    let budget = (SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024) as u64;
     let sweep = match how {
-        Candidates::Auto => {
-            XSweep::new(sub, e[0], e[1], SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024)
-        }
-        Candidates::Sweep => XSweep::new(sub, e[0], e[1], usize::MAX),
+        Candidates::Auto => XSweep::new(sub, &e, heights, Layout::Auto, budget),
+        Candidates::Sweep => XSweep::new(sub, &e, heights, Layout::One, u64::MAX),
+        Candidates::Strips => XSweep::new(sub, &e, heights, Layout::Strips, u64::MAX),
         Candidates::Grid => None,
     };
     let found = if let Some(sweep) = sweep {
-        let n = sub.len();
+        let n = sweep.len();
         if n < PARALLEL_SWEEP_FROM {
             let mut f = Found::default();
             sweep.scan(0..n, &mut f, bound);
@@ -738,16 +968,27 @@ mod tests {
             assert!(segs.len() >= PARALLEL_SWEEP_FROM);
             let sweep = Flat::noded_by(&segs, Candidates::Sweep).unwrap();
             assert_eq!(sweep, Flat::noded_by(&segs, Candidates::Grid).unwrap());
+            assert_eq!(sweep, Flat::noded_by(&segs, Candidates::Strips).unwrap());
             assert_eq!(sweep, Flat::noded(&segs).unwrap());
             assert_eq!(canonical(&sweep), canonical(&Flat::general(&segs).unwrap()));
         }
     }
 
-    fn sweep_of(segs: &[Segment2], budget: usize) -> Option<XSweep> {
-        let boxes: Vec<[f64; 4]> = segs.iter().map(Segment2::bounds).collect();
-        let lo = boxes.iter().map(|b| b[0]).fold(f64::INFINITY, f64::min);
-        let hi = boxes.iter().map(|b| b[1]).fold(f64::NEG_INFINITY, f64::max);
-        XSweep::new(segs, lo, hi, budget)
+    fn sweep_of(segs: &[Segment2], layout: Layout, budget: u64) -> Option<XSweep> {
+        let inf = f64::INFINITY;
+        let e = segs
+            .iter()
+            .map(box_of)
+            .fold([inf, -inf, inf, -inf], |e, b| {
+                [
+                    e[0].min(b[0]),
+                    e[1].max(b[1]),
+                    e[2].min(b[2]),
+                    e[3].max(b[3]),
+                ]
+            });
+        let heights = segs.iter().map(|s| box_of(s)[3] - box_of(s)[2]).sum();
+        XSweep::new(segs, &e, heights, layout, budget)
     }
 
     /// Long segments spanning the x-extent make the sweep look at Θ(n²) pairs: the budget
@@ -761,8 +1002,8 @@ mod tests {
             })
             .collect();
         let budget = SWEEP_PAIRS_PER_SEGMENT * segs.len() + 1024;
-        assert!(sweep_of(&segs, budget).is_none());
-        assert!(sweep_of(&segs, usize::MAX).is_some());
+        assert!(sweep_of(&segs, Layout::Auto, budget as u64).is_none());
+        assert!(sweep_of(&segs, Layout::One, u64::MAX).is_some());
         let auto = Flat::noded(&segs).unwrap();
         assert_eq!(auto, Flat::noded_by(&segs, Candidates::Sweep).unwrap());
         assert_eq!(canonical(&auto), canonical(&Flat::general(&segs).unwrap()));
@@ -770,10 +1011,65 @@ mod tests {
         let column: Vec<Segment2> = (0..50)
             .map(|i| Segment2::new(Point2::new(2.0, i as f64), Point2::new(2.0, i as f64 + 1.5)))
             .collect();
-        assert!(sweep_of(&column, usize::MAX).is_none());
+        assert!(sweep_of(&column, Layout::One, u64::MAX).is_none());
         assert_eq!(
             canonical(&Flat::noded(&column).unwrap()),
             canonical(&Flat::general(&column).unwrap())
         );
+    }
+
+    /// The pairs the sweep tests, by segment index (smaller first), in test order.
+    fn tested(sweep: &XSweep) -> Vec<(u32, u32)> {
+        let mut out = Vec::new();
+        let mut hits = [0u32; CHUNK];
+        for p in 0..sweep.len() {
+            sweep.pairs_of(p, &mut hits, |q| {
+                let (i, j) = (sweep.ids[p], sweep.ids[q]);
+                out.push((i.min(j), i.max(j)));
+            });
+        }
+        out
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+
+        /// In one strip and in strips, the sweep tests exactly the pairs of distinct
+        /// segments whose boxes overlap, each once: on a small integer grid (boxes
+        /// touching at strip and bucket edges, horizontal and vertical segments,
+        /// duplicates) and on long and short random segments.
+        #[test]
+        fn the_sweep_tests_each_overlapping_pair_once(
+            v in proptest::collection::vec((0..9i32, 0..9i32, 0..9i32, 0..9i32), 1..40),
+            scale in proptest::sample::select(vec![1.0, 0.37, 1e-300, 1e300]),
+            long in 0..3usize,
+        ) {
+            let p = |x: i32, y: i32| Point2::new(x as f64 * scale, y as f64 * scale);
+            let mut segs: Vec<Segment2> =
+                v.iter().map(|c| Segment2::new(p(c.0, c.1), p(c.2, c.3))).collect();
+            for k in 0..long {
+                segs.push(Segment2::new(p(0, k as i32), p(8, 8 - k as i32)));
+            }
+            segs.retain(|s| !s.is_degenerate());
+            let mut want = Vec::new();
+            for i in 0..segs.len() {
+                for j in i + 1..segs.len() {
+                    let (a, b) = (box_of(&segs[i]), box_of(&segs[j]));
+                    if !(b[0] > a[1] || a[0] > b[1] || b[2] > a[3] || a[2] > b[3]) {
+                        want.push((i as u32, j as u32));
+                    }
+                }
+            }
+            for layout in [Layout::One, Layout::Strips, Layout::Auto] {
+                let Some(sweep) = sweep_of(&segs, layout, u64::MAX) else {
+                    // A zero x-extent only.
+                    proptest::prop_assert!(segs.iter().all(|s| s.a.x == segs[0].a.x));
+                    continue;
+                };
+                let mut got = tested(&sweep);
+                got.sort_unstable();
+                proptest::prop_assert_eq!(&got, &want);
+            }
+        }
     }
 }
