@@ -11,8 +11,10 @@
 use rayon::prelude::*;
 use std::cmp::Ordering;
 
-/// At most this many coarse buckets.
-const COARSE: usize = 2048;
+/// At most this many coarse buckets (each part of a parallel sort writes one stream per
+/// coarse bucket: 512 scattered 1.8× faster than 2048 on long 1e3, and buckets of
+/// ~500 records still spread in L1).
+const COARSE: usize = 512;
 
 /// From this many items on, the coarse buckets are finished on the rayon pool.
 const PARALLEL_FROM: usize = 1 << 16;
@@ -33,13 +35,7 @@ pub(super) fn sort_by_key_then<T: Copy + Send + Sync>(
         items.sort_unstable_by(cmp);
         return;
     }
-    let (lo, hi) = items
-        .iter()
-        .map(&key)
-        .filter(|v| v.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v), b.max(v))
-        });
+    let (lo, hi) = key_range(items, &key);
     let scale = if hi > lo { n as f64 / (hi - lo) } else { 0.0 };
     // `as usize` saturates (and maps NaN, from an infinite scale, to 0): monotone.
     let fine = |t: &T| (((key(t) - lo) * scale) as usize).min(n - 1);
@@ -120,7 +116,22 @@ pub(super) fn sort_parts<T: Copy + Send + Sync>(
         sort_by_key_then(&mut all, key, cmp);
         return all;
     }
-    sort_parts_then(parts, key, cmp, |_| 0).items
+    let range = parts.par_iter().map(|p| key_range(p, &key)).reduce(
+        || (f64::INFINITY, f64::NEG_INFINITY),
+        |a, b| (a.0.min(b.0), a.1.max(b.1)),
+    );
+    sort_parts_then(parts, key, range, cmp, |_| 0).items
+}
+
+/// The least and greatest finite key of `items` (`+inf`, `-inf` when there is none).
+fn key_range<T>(items: &[T], key: impl Fn(&T) -> f64) -> (f64, f64) {
+    items
+        .iter()
+        .map(key)
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        })
 }
 
 /// What [`sort_parts_then`] returns.
@@ -135,7 +146,10 @@ pub(super) struct Buckets<T> {
 
 /// [`sort_parts`], then `then` on every coarse bucket while it is still in cache (a
 /// bucket holds a contiguous range of the sorted items, and items with equal keys are in
-/// the same bucket): a pass over the sorted items fused into the sort.
+/// the same bucket): a pass over the sorted items fused into the sort. `(lo, hi)` is the
+/// least and greatest finite key, known to the caller (the scan kept it: no pass to find
+/// it). Any other range gives the same order, only slower: keys outside it go to the
+/// end buckets, which keeps the map monotone.
 ///
 /// Every pass runs on the rayon pool: each part counts its records per coarse bucket,
 /// then scatters them straight into its own sub-range of each coarse bucket of the
@@ -146,6 +160,7 @@ pub(super) struct Buckets<T> {
 pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
     parts: Vec<Vec<T>>,
     key: impl Fn(&T) -> f64 + Sync,
+    (lo, hi): (f64, f64),
     cmp: impl Fn(&T, &T) -> Ordering + Copy + Sync,
     then: impl Fn(&mut [T]) -> usize + Sync,
 ) -> Buckets<T> {
@@ -168,18 +183,6 @@ pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
             tallies: vec![tally],
         };
     }
-    let range = |p: &Vec<T>| {
-        p.iter()
-            .map(&key)
-            .filter(|v| v.is_finite())
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-                (a.min(v), b.max(v))
-            })
-    };
-    let (lo, hi) = parts.par_iter().map(range).reduce(
-        || (f64::INFINITY, f64::NEG_INFINITY),
-        |a, b| (a.0.min(b.0), a.1.max(b.1)),
-    );
     let scale = if hi > lo { n as f64 / (hi - lo) } else { 0.0 };
     // Monotone in the key (`as usize` saturates, NaN from an infinite scale goes to 0).
     let fine = |t: &T| (((key(t) - lo) * scale) as usize).min(n - 1);
