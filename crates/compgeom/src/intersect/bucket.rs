@@ -372,6 +372,20 @@ mod tests {
                 for (k, t) in got.iter().rev().enumerate() {
                     parts[(k * k) % 4].push(*t);
                 }
+                // A key range that is not the true one (too narrow, empty, turned
+                // round) changes the buckets, never the order.
+                for range in [(0.25, 0.5), (f64::INFINITY, f64::NEG_INFINITY), (1.0, 0.0)] {
+                    let sorted = sort_parts_then(parts.clone(), |t| t.0, range, cmp, |_| 0);
+                    assert!(
+                        sorted.items.len() == want.len()
+                            && sorted
+                                .items
+                                .iter()
+                                .zip(&want)
+                                .all(|(a, b)| cmp(a, b) == Ordering::Equal),
+                        "range {range:?}: n {n} kind {kind}"
+                    );
+                }
                 let from_parts = sort_parts(parts, |t| t.0, cmp);
                 assert!(
                     from_parts
