@@ -137,46 +137,12 @@ pub(crate) fn check_count(segments: &[Segment2]) -> Result<()> {
 #[derive(Default)]
 pub(crate) struct PairResults {
     records: Vec<Record>,
-    /// The least and greatest y of the records' points (kept as they are pushed, so that
-    /// the sort needs no pass of its own to find its key range).
-    y_range: YRange,
     overlapping: Vec<(usize, usize)>,
     /// Proper crossings found and not yet rounded (the first `pending_len`): rounded
     /// [`LANES`] at a time, whose independent lanes overlap; the rest by
     /// [`PairResults::flush`].
     pending: [(usize, usize); LANES],
     pending_len: usize,
-}
-
-/// The least and greatest of some `f64` values (empty: `+inf`, `-inf`).
-#[derive(Clone, Copy)]
-struct YRange {
-    lo: f64,
-    hi: f64,
-}
-
-impl Default for YRange {
-    fn default() -> YRange {
-        YRange {
-            lo: f64::INFINITY,
-            hi: f64::NEG_INFINITY,
-        }
-    }
-}
-
-impl YRange {
-    #[inline(always)]
-    fn add(&mut self, y: f64) {
-        self.lo = self.lo.min(y);
-        self.hi = self.hi.max(y);
-    }
-
-    fn union(self, other: YRange) -> YRange {
-        YRange {
-            lo: self.lo.min(other.lo),
-            hi: self.hi.max(other.hi),
-        }
-    }
 }
 
 /// How many crossings are rounded together.
@@ -208,26 +174,19 @@ impl PairResults {
         }
         match segment_intersection(s, t) {
             SegmentIntersection::None => {}
-            SegmentIntersection::Endpoint(q) => self.push(q, i, j, false),
+            SegmentIntersection::Endpoint(q) => self.records.push(Record::new(q, i, j, false)),
             // (The crossing point does not depend on the order of the two segments.)
             SegmentIntersection::Crossing(_) => self.push_crossing(segments, table, i, j),
             SegmentIntersection::Overlap(a, b) => {
-                self.push(a, i, j, false);
-                self.push(b, i, j, false);
+                self.records.push(Record::new(a, i, j, false));
+                self.records.push(Record::new(b, i, j, false));
                 self.overlapping.push((i, j));
             }
         }
     }
 
-    /// Record that `i < j` meet at `p` (a crossing's rounded point, or an input point).
-    #[inline(always)]
-    fn push(&mut self, p: Point2, i: usize, j: usize, crossing: bool) {
-        self.y_range.add(p.y);
-        self.records.push(Record::new(p, i, j, crossing));
-    }
-
     /// Record the proper crossing of `i < j`, rounded now or with the next ones.
-    #[inline(always)]
+    #[inline]
     fn push_crossing(&mut self, segments: &[Segment2], table: &[Prepared], i: usize, j: usize) {
         self.pending[self.pending_len] = (i, j);
         self.pending_len += 1;
@@ -236,9 +195,6 @@ impl PairResults {
             for (&p, &(i, j)) in points.iter().zip(&self.pending) {
                 self.records.push(Record::new(p, i, j, true));
             }
-            for p in &points {
-                self.y_range.add(p.y);
-            }
             self.pending_len = 0;
         }
     }
@@ -246,10 +202,9 @@ impl PairResults {
     /// Round and record the crossings still pending: due after the last
     /// [`PairResults::test`], before the records are read.
     pub(crate) fn flush(&mut self, segments: &[Segment2], table: &[Prepared]) {
-        for k in 0..self.pending_len {
-            let (i, j) = self.pending[k];
+        for &(i, j) in &self.pending[..self.pending_len] {
             let p = round_crossing_of(segments, table, i, j);
-            self.push(p, i, j, true);
+            self.records.push(Record::new(p, i, j, true));
         }
         self.pending_len = 0;
     }
@@ -274,9 +229,6 @@ impl PairResults {
             .iter()
             .flat_map(|p| p.overlapping.iter().copied())
             .collect();
-        let y_range = parts
-            .iter()
-            .fold(YRange::default(), |r, p| r.union(p.y_range));
         let records: Vec<Vec<Record>> = parts.into_iter().map(|p| p.records).collect();
         let n: usize = records.iter().map(Vec::len).sum();
         if n < PARALLEL_ASSEMBLY_FROM {
@@ -287,7 +239,7 @@ impl PairResults {
             }
             .assemble_sorted(segments);
         }
-        assemble_marked(records, y_range, overlapping, segments)
+        assemble_marked(records, overlapping, segments)
     }
 
     /// Group equal points (exactly), split their segments into U/L/C, and build the
@@ -415,13 +367,10 @@ fn each_group_start(
 /// the pool, each into its place in the result (no list of group starts).
 fn assemble_marked(
     parts: Vec<Vec<Record>>,
-    y_range: YRange,
     overlapping: Vec<(usize, usize)>,
     segments: &[Segment2],
 ) -> Intersections {
-    // The keys are the negated y: their range is the y range turned round.
-    let key_range = (-y_range.hi, -y_range.lo);
-    let sorted = bucket::sort_parts_then(parts, record_key, key_range, Record::cmp, |bucket| {
+    let sorted = bucket::sort_parts_then(parts, record_key, Record::cmp, |bucket| {
         mark_groups(segments, bucket)
     });
     let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
@@ -771,10 +720,8 @@ mod tests {
             };
             let split = dealt(&segs, parts);
             let overlapping = split.iter().flat_map(|p| p.overlapping.clone()).collect();
-            let y_range = split.iter().fold(YRange::default(), |r, p| r.union(p.y_range));
             let marked = assemble_marked(
                 split.into_iter().map(|p| p.records).collect(),
-                y_range,
                 overlapping,
                 &segs,
             );
