@@ -3,7 +3,10 @@
 //! `cargo run --release -p compgeom --example intersect_profile -- find|count [n] [reps] [input]`.
 //! `input` is `long` (the default), `short` (length below 0.008) or `grid` (ends on
 //! the 100×100 integer grid within 4 of each other), as the bench's three rows are
-//! made (not the same random numbers).
+//! made (not the same random numbers). With `COMPGEOM_PROFILE_CHURN=1` every call is
+//! preceded by what the bench runs between two finds (a count, and a 27 MB vector grown
+//! by pushes and dropped, as geo's `collect()`), and the minor page faults of the calls
+//! are printed (the bench's memory state: fresh pages or reused ones).
 use compgeom::intersect::{count_intersections, find_intersections};
 use compgeom::{Point2, Segment2};
 use std::time::Instant;
@@ -40,15 +43,45 @@ fn main() {
             _ => Segment2::new(Point2::new(0.0, rng.unit()), Point2::new(1.0, rng.unit())),
         })
         .collect();
+    let churn = std::env::var("COMPGEOM_PROFILE_CHURN").is_ok_and(|v| v == "1");
     let mut best = f64::MAX;
     let mut size = 0;
+    let mut faults = 0;
     for _ in 0..reps {
+        if churn {
+            std::hint::black_box(count_intersections(&segs).unwrap());
+            let mut v: Vec<[u64; 13]> = Vec::new();
+            for k in 0..size.max(1) as u64 {
+                v.push([k; 13]);
+            }
+            std::hint::black_box(v);
+        }
+        let before = minor_faults();
         let t = Instant::now();
-        size = match what {
-            "count" => count_intersections(&segs).unwrap().points,
-            _ => find_intersections(&segs).unwrap().points.len(),
-        };
+        let out = std::hint::black_box(match what {
+            "count" => (count_intersections(&segs).unwrap().points, None),
+            _ => {
+                let found = find_intersections(&segs).unwrap();
+                (found.points.len(), Some(found))
+            }
+        });
         best = best.min(t.elapsed().as_secs_f64());
+        faults += minor_faults() - before;
+        size = out.0;
     }
-    println!("{what} {input} n {n}: {size} points, best {best:.4} s");
+    println!(
+        "{what} {input} n {n}: {size} points, best {best:.4} s, {} minor faults per call",
+        faults / reps.max(1) as u64
+    );
+}
+
+/// The process's minor page faults so far (`/proc/self/stat`; 0 where it cannot be read).
+fn minor_faults() -> u64 {
+    let stat = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
+    // Field 10, counted after the command name (which ends with the last ')').
+    let rest = stat.rsplit_once(')').map_or("", |(_, r)| r);
+    rest.split_whitespace()
+        .nth(7)
+        .and_then(|f| f.parse().ok())
+        .unwrap_or(0)
 }

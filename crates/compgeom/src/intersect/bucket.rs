@@ -11,8 +11,10 @@
 use rayon::prelude::*;
 use std::cmp::Ordering;
 
-/// At most this many coarse buckets.
-const COARSE: usize = 2048;
+/// At most this many coarse buckets (each part of a parallel sort writes one stream per
+/// coarse bucket: 512 scattered about 1.8× faster than 2048 on long 1e3, one thread,
+/// and buckets of ~500 records still spread within L1).
+const COARSE: usize = 512;
 
 /// From this many items on, the coarse buckets are finished on the rayon pool.
 const PARALLEL_FROM: usize = 1 << 16;
