@@ -659,8 +659,17 @@ fn faces_left_by_strips(
     }
     // The queries scan only a few entries each (below), so the scan budget is not the
     // limit: pass no queries to it.
-    let mut strips = Strips::new(&ranges, &[])?;
-    let reach = strips.sort_by_x(&xr);
+    let strips = Strips::counted(&ranges, &[])?;
+    // Each strip's entries by decreasing x_min: listed in that order overall (one sort
+    // of integer keys, the edge in the low bits, instead of a comparison sort per strip).
+    let mut by_x: Vec<u128> = (0..ne)
+        .filter(|&i| listed(ranges[i]))
+        .map(|i| (u128::from(!okey(xr[i].0)) << 32) | i as u128)
+        .collect();
+    by_x.sort_unstable();
+    let strips = strips.fill(&ranges, by_x.iter().map(|&k| k as u32));
+    drop(by_x);
+    let reach = strips.reach(&xr);
     let cache: Vec<Cell<Option<Rounded>>> = vec![Cell::new(None); points.len()];
     let rounded = |v: u32| {
         let c = &cache[v as usize];
@@ -756,6 +765,21 @@ fn faces_left_by_strips(
     )
 }
 
+/// Whether an item with y range `r` is listed in [`Strips`] (horizontal ones are not).
+fn listed(r: (f64, f64)) -> bool {
+    r.0 < r.1
+}
+
+/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
+fn okey(v: f64) -> u64 {
+    let b = (v + 0.0).to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | (1 << 63)
+    }
+}
+
 /// Items listed by horizontal strips: item `i` with `ranges[i] = (y_min, y_max)` (only
 /// those with `y_min < y_max`) is in every strip its closed y range meets. The strip of a
 /// y value is a monotone function of it (rounding is monotone), so every item whose
@@ -776,11 +800,17 @@ impl Strips {
     /// search of [`faces_left_by_strips`], a few tests per query, is cheaper: on a real
     /// map with 1.7 k components and ~150 edges per strip it is.)
     fn new(ranges: &[(f64, f64)], ys: &[f64]) -> Option<Strips> {
+        let listed = (0..ranges.len() as u32).filter(|&i| listed(ranges[i as usize]));
+        Some(Strips::counted(ranges, ys)?.fill(ranges, listed))
+    }
+
+    /// [`Strips::new`] with the strip sizes counted and the lists not yet filled.
+    fn counted(ranges: &[(f64, f64)], ys: &[f64]) -> Option<Strips> {
         let n = ranges.len();
-        let listed = |&(a, b): &(f64, f64)| a < b;
+        let listed = |&r: &&(f64, f64)| listed(*r);
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         let mut heights = 0.0;
-        for r in ranges.iter().filter(|r| listed(r)) {
+        for r in ranges.iter().filter(listed) {
             lo = lo.min(r.0);
             hi = hi.max(r.1);
             heights += r.1 - r.0;
@@ -810,7 +840,7 @@ impl Strips {
             list: Vec::new(),
         };
         let mut total = 0usize;
-        for r in ranges.iter().filter(|r| listed(r)) {
+        for r in ranges.iter().filter(listed) {
             let (a, b) = (strips.strip(r.0), strips.strip(r.1));
             total += b - a + 1;
             if total > 8 * n + 4096 {
@@ -831,26 +861,34 @@ impl Strips {
         for k in 0..count {
             strips.start[k + 1] += strips.start[k];
         }
-        let mut fill = strips.start.clone();
-        strips.list = vec![0u32; total];
-        for (i, r) in ranges.iter().enumerate().filter(|(_, r)| listed(r)) {
-            let (a, b) = (strips.strip(r.0), strips.strip(r.1));
-            for f in &mut fill[a..=b] {
-                strips.list[*f as usize] = i as u32;
-                *f += 1;
-            }
-        }
+        strips.list = Vec::with_capacity(total);
         Some(strips)
     }
 
-    /// Sorts each strip's items by decreasing `xr[i].0` (x_min) and returns, for each
-    /// list entry, the largest `xr[i].1` (x_max) from it to the end of its strip.
-    fn sort_by_x(&mut self, xr: &[(f64, f64)]) -> Vec<f64> {
+    /// The strips of [`Strips::counted`] with their items listed in the order of `order`
+    /// (a permutation of the listed items, i.e. of those with `y_min < y_max`): each
+    /// strip's list is then in that order too.
+    fn fill(mut self, ranges: &[(f64, f64)], order: impl Iterator<Item = u32>) -> Strips {
+        let total = self.list.capacity();
+        let mut fill = self.start.clone();
+        self.list.resize(total, 0);
+        for i in order {
+            let r = ranges[i as usize];
+            let (a, b) = (self.strip(r.0), self.strip(r.1));
+            for f in &mut fill[a..=b] {
+                self.list[*f as usize] = i;
+                *f += 1;
+            }
+        }
+        debug_assert!(fill[..self.count] == self.start[1..]);
+        self
+    }
+
+    /// For each list entry, the largest `xr[i].1` (x_max) from it to the end of its strip.
+    fn reach(&self, xr: &[(f64, f64)]) -> Vec<f64> {
         let mut reach = vec![f64::NEG_INFINITY; self.list.len()];
         for k in 0..self.count {
             let (a, b) = (self.start[k] as usize, self.start[k + 1] as usize);
-            self.list[a..b]
-                .sort_unstable_by(|&i, &j| xr[j as usize].0.total_cmp(&xr[i as usize].0));
             let mut m = f64::NEG_INFINITY;
             for e in (a..b).rev() {
                 m = m.max(xr[self.list[e] as usize].1);
