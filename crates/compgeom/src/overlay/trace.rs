@@ -660,11 +660,20 @@ fn faces_left_by_strips(
     // The queries scan only a few entries each (below), so the scan budget is not the
     // limit: pass no queries to it.
     let strips = Strips::counted(&ranges, &[])?;
-    // Each strip's entries by decreasing x_min: listed in that order overall (one sort
-    // of integer keys, the edge in the low bits, instead of a comparison sort per strip).
-    let mut by_x: Vec<u128> = (0..ne)
+    // Each strip's entries by decreasing x_min, up to a 32-bit monotone key of it (the
+    // offset from the smallest x_min, scaled to the key range; rounding and the
+    // saturating cast keep the order, ties may join near values). Listed in that order
+    // overall: one sort of integer keys, the edge in the low bits, instead of a
+    // comparison sort per strip. The queries below cut their strip with the same key,
+    // so the order needs no more than that (see there).
+    let x_lo = xr.iter().fold(f64::INFINITY, |m, r| m.min(r.0));
+    let x_hi = xr.iter().fold(f64::NEG_INFINITY, |m, r| m.max(r.0));
+    let x_scale = f64::from(u32::MAX) / (x_hi - x_lo);
+    let x_scale = if x_scale.is_finite() { x_scale } else { 0.0 };
+    let x_key = |x: f64| ((x - x_lo) * x_scale) as u32;
+    let mut by_x: Vec<u64> = (0..ne)
         .filter(|&i| listed(ranges[i]))
-        .map(|i| (u128::from(!okey(xr[i].0)) << 32) | i as u128)
+        .map(|i| (u64::from(!x_key(xr[i].0)) << 32) | i as u64)
         .collect();
     by_x.sort_unstable();
     let strips = strips.fill(&ranges, by_x.iter().map(|&k| k as u32));
@@ -723,8 +732,11 @@ fn faces_left_by_strips(
                 let (x, y) = (points[q as usize].approx().x, input_y(q));
                 let (from, to) = strips.range(y);
                 let items = &strips.list[from..to];
-                // Entries by decreasing x_min: those wholly east of q come first.
-                let first = from + items.partition_point(|&i| xr[i as usize].0 > x);
+                // Entries by decreasing key of x_min: those with a larger key than q.x's
+                // lie wholly east of q and come first (the key is monotone); the rest
+                // is tested edge by edge, and `reach` bounds it whatever its order.
+                let qk = x_key(x);
+                let first = from + items.partition_point(|&i| x_key(xr[i as usize].0) > qk);
                 let mut best: Option<(usize, u32, u32)> = None;
                 let mut bound = f64::NEG_INFINITY;
                 for (&i, &far) in strips.list[first..to].iter().zip(&reach[first..to]) {
@@ -768,16 +780,6 @@ fn faces_left_by_strips(
 /// Whether an item with y range `r` is listed in [`Strips`] (horizontal ones are not).
 fn listed(r: (f64, f64)) -> bool {
     r.0 < r.1
-}
-
-/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
-fn okey(v: f64) -> u64 {
-    let b = (v + 0.0).to_bits();
-    if b >> 63 == 1 {
-        !b
-    } else {
-        b | (1 << 63)
-    }
 }
 
 /// Items listed by horizontal strips: item `i` with `ranges[i] = (y_min, y_max)` (only
