@@ -364,13 +364,16 @@ fn traced(
     // their smallest vertex, so the face found for one (which lies left of it) is in a
     // component already resolved.
     let resolve = |around: &[u32], offset: &mut [(i32, i32)]| {
-        let input = |v: u32| flat.vertices[v as usize].approx();
-        let mut order: Vec<u32> = (0..ncomp).collect();
-        order.sort_unstable_by(|&x, &y| {
-            let (p, q) = (input(low[x as usize]), input(low[y as usize]));
-            p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
-        });
-        for k in order {
+        // (The smallest vertices are distinct input points: their integer keys order
+        // them as the coordinates do.)
+        let mut order: Vec<(u64, u64, u32)> = (0..ncomp)
+            .map(|k| {
+                let p = flat.vertices[low[k as usize] as usize].approx();
+                (okey(p.x), okey(p.y), k)
+            })
+            .collect();
+        order.sort_unstable();
+        for (_, _, k) in order {
             let c = around[k as usize];
             if c != NONE {
                 let o = offset[comp_of[c as usize] as usize];
@@ -409,6 +412,12 @@ fn traced(
     // Regions: chosen cycles joined across non-boundary edges and around holes.
     let mut class: Vec<u32> = (0..ncycles as u32).collect();
     let mut degree = vec![0u32; nv];
+    // Per half-edge: 0 off the boundary, BOUNDARY when the result is on its left and
+    // not on its right, TRACED once its ring is traced (one byte instead of the two
+    // look-ups through `cyc` and `chosen`, and of a separate `seen` array).
+    const BOUNDARY: u8 = 1;
+    const TRACED: u8 = 2;
+    let mut state = vec![0u8; m];
     let mut any = false;
     let mut has_boundary = vec![false; ncomp as usize];
     for i in 0..ne {
@@ -418,6 +427,7 @@ fn traced(
             let [u, v] = flat.edges[i];
             degree[u as usize] += 1;
             degree[v as usize] += 1;
+            state[2 * i + usize::from(cg)] = BOUNDARY;
             any = true;
             has_boundary[comp_of[f as usize] as usize] = true;
         } else if cf && f != g {
@@ -440,17 +450,7 @@ fn traced(
             class[a as usize] = b;
         }
     }
-    // Rounded points and exactness flags of the boundary's vertices.
-    let mut rounded: Vec<Option<Rounded>> = vec![None; nv];
-    let point_of = |v: usize, rounded: &mut Vec<Option<Rounded>>| -> Rounded {
-        *rounded[v].get_or_insert_with(|| {
-            let p = &flat.vertices[v];
-            Rounded::of(p, p.approx())
-        })
-    };
-    let on_boundary =
-        |h: u32| chosen[cyc[h as usize] as usize] && !chosen[cyc[(h ^ 1) as usize] as usize];
-    let mut seen = vec![false; m];
+    let on_boundary = |state: &[u8], h: u32| state[h as usize] != 0;
     let mut region_of = vec![NONE; ncycles];
     let mut regions: Vec<Region> = Vec::new();
     let mut pos = vec![NONE; nv];
@@ -458,19 +458,22 @@ fn traced(
     let mut stack: Vec<u32> = Vec::new();
     let mut rings: Vec<(usize, usize)> = Vec::new();
     let mut flat_rings: Vec<u32> = Vec::new();
+    // The rounded points (and exactness flags) of one ring's vertices, computed once per
+    // ring: a vertex is on few rings, so no cache over all vertices is needed.
+    let mut ring_r: Vec<Rounded> = Vec::new();
     for start in 0..m as u32 {
-        if seen[start as usize] || !on_boundary(start) {
+        if state[start as usize] != BOUNDARY {
             continue;
         }
         cycle.clear();
         let mut h = start;
         loop {
-            seen[h as usize] = true;
+            state[h as usize] = TRACED;
             cycle.push(h);
             // Clockwise around the end of h, over edges inside the region, to the first
             // boundary edge.
             let mut e = next[h as usize];
-            while !on_boundary(e) {
+            while !on_boundary(&state, e) {
                 e = next[(e ^ 1) as usize];
             }
             h = e;
@@ -514,19 +517,25 @@ fn traced(
         for &(a, b) in &rings {
             let ring = &flat_rings[a..b];
             let n = ring.len();
+            ring_r.clear();
+            ring_r.extend(ring.iter().map(|&h| {
+                let p = &flat.vertices[origin(h) as usize];
+                Rounded::of(p, p.approx())
+            }));
             // Counter-clockwise iff it turns left at its lowest vertex.
             let mut lowest = 0;
             let mut best_v = origin(ring[0]) as usize;
-            let mut best_r = point_of(best_v, &mut rounded);
             for (j, &h) in ring.iter().enumerate().skip(1) {
                 let v = origin(h) as usize;
-                let rv = point_of(v, &mut rounded);
-                let o =
-                    compare_xy_filtered(&flat.vertices[v], &rv, &flat.vertices[best_v], &best_r);
+                let o = compare_xy_filtered(
+                    &flat.vertices[v],
+                    &ring_r[j],
+                    &flat.vertices[best_v],
+                    &ring_r[lowest],
+                );
                 if o == Ordering::Less {
                     lowest = j;
                     best_v = v;
-                    best_r = rv;
                 }
             }
             let ccw = carrier(ring[(lowest + n - 1) % n]).turn(&carrier(ring[lowest]))
@@ -548,7 +557,7 @@ fn traced(
                         continue;
                     }
                 }
-                let q = point_of(v, &mut rounded).point();
+                let q = ring_r[j].point();
                 if pts.last() != Some(&q) {
                     pts.push(q);
                 }
@@ -780,6 +789,16 @@ fn faces_left_by_strips(
 /// Whether an item with y range `r` is listed in [`Strips`] (horizontal ones are not).
 fn listed(r: (f64, f64)) -> bool {
     r.0 < r.1
+}
+
+/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
+fn okey(v: f64) -> u64 {
+    let b = (v + 0.0).to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | (1 << 63)
+    }
 }
 
 /// Items listed by horizontal strips: item `i` with `ranges[i] = (y_min, y_max)` (only
