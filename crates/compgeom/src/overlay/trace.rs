@@ -599,6 +599,48 @@ fn traced(
 /// is a monotone function of it (rounding is monotone), so the edges whose closed y
 /// range holds q.y are all in q's strip.
 fn windings_left_of(segs: &[Segment2], na: usize, queries: &[Point2]) -> Option<Vec<(i32, i32)>> {
+    windings_left_of_by(segs, na, queries, false)
+}
+
+/// [`windings_left_of`]; with `force_strips` the strips are used however few the
+/// queries (tests compare both ways).
+fn windings_left_of_by(
+    segs: &[Segment2],
+    na: usize,
+    queries: &[Point2],
+    force_strips: bool,
+) -> Option<Vec<(i32, i32)>> {
+    // The winding numbers at q from the segments `items` (all that can cross q's line).
+    fn winding(
+        segs: &[Segment2],
+        na: usize,
+        q: Point2,
+        items: impl Iterator<Item = usize>,
+    ) -> (i32, i32) {
+        let (mut wa, mut wb) = (0, 0);
+        for i in items {
+            let s = segs[i];
+            let w = if s.a.y <= q.y && s.b.y > q.y {
+                i32::from(orient2d(s.a, s.b, q) != Orientation::Clockwise)
+            } else if s.b.y <= q.y && s.a.y > q.y {
+                -i32::from(orient2d(s.a, s.b, q) != Orientation::CounterClockwise)
+            } else {
+                0
+            };
+            if i < na {
+                wa += w;
+            } else {
+                wb += w;
+            }
+        }
+        (wa, wb)
+    }
+    let n = segs.len();
+    // Few queries: every segment for each of them costs less than the strips (same
+    // answers: the strips only leave out segments that cannot count).
+    if queries.len().saturating_mul(n) <= 4 * n + 4096 && !force_strips {
+        return Some(queries.iter().map(|&q| winding(segs, na, q, 0..n)).collect());
+    }
     let ranges: Vec<(f64, f64)> = segs
         .iter()
         .map(|s| (s.a.y.min(s.b.y), s.a.y.max(s.b.y)))
@@ -608,25 +650,7 @@ fn windings_left_of(segs: &[Segment2], na: usize, queries: &[Point2]) -> Option<
     Some(
         queries
             .iter()
-            .map(|q| {
-                let (mut wa, mut wb) = (0, 0);
-                for &i in strips.items(q.y) {
-                    let s = segs[i as usize];
-                    let w = if s.a.y <= q.y && s.b.y > q.y {
-                        i32::from(orient2d(s.a, s.b, *q) != Orientation::Clockwise)
-                    } else if s.b.y <= q.y && s.a.y > q.y {
-                        -i32::from(orient2d(s.a, s.b, *q) != Orientation::CounterClockwise)
-                    } else {
-                        0
-                    };
-                    if (i as usize) < na {
-                        wa += w;
-                    } else {
-                        wb += w;
-                    }
-                }
-                (wa, wb)
-            })
+            .map(|&q| winding(segs, na, q, strips.items(q.y).iter().map(|&i| i as usize)))
             .collect(),
     )
 }
@@ -940,7 +964,7 @@ impl Strips {
 mod tests {
     use super::super::boolean::{boolean_via_dcel, boolean_with, oriented_segments};
     use super::super::{BooleanOp, BooleanOptions, FillRule};
-    use crate::kernel::{MultiPolygon, Point2, Polygon};
+    use crate::kernel::{MultiPolygon, Point2, Polygon, Segment2};
     use proptest::prelude::*;
 
     const OPS: [BooleanOp; 4] = [
@@ -1159,6 +1183,28 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(300))]
+
+        #[test]
+        fn winding_counts_by_strips_are_the_direct_counts(
+            segs in prop::collection::vec((0..6i32, 0..6i32, 0..6i32, 0..6i32), 1..40),
+            queries in prop::collection::vec((0..6i32, 0..6i32), 1..12),
+            na in 0..40usize,
+            scale in prop::sample::select(vec![1.0, 1e-300, 1e300, -0.5]),
+        ) {
+            // Grid segments (horizontal, vertical, collinear, repeated, zero-length) and
+            // queries on their ends and lines; huge and tiny scales.
+            let f = |x: i32| f64::from(x) * scale;
+            let segs: Vec<Segment2> = segs
+                .iter()
+                .map(|&(a, b, c, d)| Segment2::new(Point2::new(f(a), f(b)), Point2::new(f(c), f(d))))
+                .collect();
+            let queries: Vec<Point2> = queries.iter().map(|&(x, y)| Point2::new(f(x), f(y))).collect();
+            let direct = super::windings_left_of_by(&segs, na, &queries, false);
+            prop_assert!(direct.is_some());
+            if let Some(strips) = super::windings_left_of_by(&segs, na, &queries, true) {
+                prop_assert_eq!(direct.unwrap(), strips);
+            }
+        }
 
         #[test]
         fn traced_path_agrees_on_nested_islands(
