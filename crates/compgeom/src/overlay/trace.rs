@@ -181,29 +181,30 @@ fn traced(
     };
     let origin = |h: u32| flat.edges[(h >> 1) as usize][(h & 1) as usize];
     // Outgoing half-edges per vertex (one array cut into slices).
-    let mut out_start = vec![0u32; nv + 1];
+    // Counted one place up, so that out_start[v + 1] is v's fill cursor and, once
+    // filled, v's end, i.e. the start of v + 1 (no copy of the starts to fill with).
+    let mut out_start = vec![0u32; nv + 2];
     for [u, v] in &flat.edges {
-        out_start[*u as usize + 1] += 1;
-        out_start[*v as usize + 1] += 1;
+        out_start[*u as usize + 2] += 1;
+        out_start[*v as usize + 2] += 1;
     }
     for v in 0..nv {
-        out_start[v + 1] += out_start[v];
+        out_start[v + 2] += out_start[v + 1];
     }
     let mut out = vec![0u32; m];
     // The axis direction of each entry of `out`, beside it (the sorts below then read
     // no per-edge record).
     let mut out_quad = vec![AXIS_NONE; m];
-    {
-        let mut fill = out_start.clone();
-        for (i, [u, v]) in flat.edges.iter().enumerate() {
-            for h in [2 * i as u32, 2 * i as u32 + 1] {
-                let o = if h & 1 == 0 { *u } else { *v } as usize;
-                out[fill[o] as usize] = h;
-                out_quad[fill[o] as usize] = quad(h);
-                fill[o] += 1;
-            }
+    for (i, [u, v]) in flat.edges.iter().enumerate() {
+        for h in [2 * i as u32, 2 * i as u32 + 1] {
+            let o = if h & 1 == 0 { *u } else { *v } as usize;
+            let at = &mut out_start[o + 1];
+            out[*at as usize] = h;
+            out_quad[*at as usize] = quad(h);
+            *at += 1;
         }
     }
+    out_start.pop();
     let slice = |v: usize| (out_start[v] as usize, out_start[v + 1] as usize);
     let mut next = vec![0u32; m];
     for v in 0..nv {
@@ -228,8 +229,13 @@ fn traced(
                 list.sort_unstable_by(|&x, &y| carrier(x).angle_cmp(&carrier(y)));
             }
         }
-        for j in 0..k {
-            next[(list[j] ^ 1) as usize] = list[(j + k - 1) % k];
+        // (The one before the first is the last; no division per half-edge.)
+        if let Some(&last) = list.last() {
+            let mut before = last;
+            for &h in list.iter() {
+                next[(h ^ 1) as usize] = before;
+                before = h;
+            }
         }
     }
     // Cycles labelled relative to their component (depth-first across twins).
@@ -538,14 +544,15 @@ fn traced(
                     best_v = v;
                 }
             }
-            let ccw = carrier(ring[(lowest + n - 1) % n]).turn(&carrier(ring[lowest]))
+            let before = if lowest == 0 { n - 1 } else { lowest - 1 };
+            let ccw = carrier(ring[before]).turn(&carrier(ring[lowest]))
                 == Orientation::CounterClockwise;
             let mut pts: Vec<Point2> = Vec::with_capacity(n);
             for j in 0..n {
                 let h = ring[j];
                 let v = origin(h) as usize;
                 if !keep_collinear && degree[v] <= 2 {
-                    let prev = ring[(j + n - 1) % n];
+                    let prev = ring[if j == 0 { n - 1 } else { j - 1 }];
                     let (qp, qc) = (quad(prev), quad(h));
                     let straight = if qp != AXIS_NONE && qc != AXIS_NONE {
                         qp == qc
