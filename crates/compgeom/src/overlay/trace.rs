@@ -703,20 +703,21 @@ fn faces_left_by_strips(
     // Each strip's entries by decreasing x_min, up to a 32-bit monotone key of it (the
     // offset from the smallest x_min, scaled to the key range; rounding and the
     // saturating cast keep the order, ties may join near values). Listed in that order
-    // overall: one sort of integer keys, the edge in the low bits, instead of a
-    // comparison sort per strip. The queries below cut their strip with the same key,
-    // so the order needs no more than that (see there).
+    // overall: one radix sort of the keys instead of a comparison sort per strip. The
+    // queries below cut their strip with the same key, so the order needs no more than
+    // that (see there).
     let x_lo = xr.iter().fold(f64::INFINITY, |m, r| m.min(r.0));
     let x_hi = xr.iter().fold(f64::NEG_INFINITY, |m, r| m.max(r.0));
     let x_scale = f64::from(u32::MAX) / (x_hi - x_lo);
     let x_scale = if x_scale.is_finite() { x_scale } else { 0.0 };
     let x_key = |x: f64| ((x - x_lo) * x_scale) as u32;
-    let mut by_x: Vec<u64> = (0..ne)
-        .filter(|&i| listed(ranges[i]))
-        .map(|i| (u64::from(!x_key(xr[i].0)) << 32) | i as u64)
-        .collect();
-    by_x.sort_unstable();
-    let strips = strips.fill(&ranges, by_x.iter().map(|&k| k as u32));
+    let by_x = radix_sort(
+        (0..ne as u32)
+            .filter(|&i| listed(ranges[i as usize]))
+            .map(|i| (!x_key(xr[i as usize].0), i))
+            .collect(),
+    );
+    let strips = strips.fill(&ranges, by_x.iter().map(|&(_, i)| i));
     drop(by_x);
     let reach = strips.reach(&xr);
     let cache: Vec<Cell<Option<Rounded>>> = vec![Cell::new(None); points.len()];
@@ -820,6 +821,35 @@ fn faces_left_by_strips(
 /// Whether an item with y range `r` is listed in [`Strips`] (horizontal ones are not).
 fn listed(r: (f64, f64)) -> bool {
     r.0 < r.1
+}
+
+/// `(key, item)` pairs sorted by key, equal keys in their given order: a stable
+/// least-significant-digit radix sort by bytes, skipping a byte that all keys share.
+/// O(n) (four passes at most), where a comparison sort costs O(n log n).
+fn radix_sort(mut v: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
+    let mut counts = [[0u32; 256]; 4];
+    for &(k, _) in &v {
+        for (d, c) in counts.iter_mut().enumerate() {
+            c[(k >> (8 * d)) as usize & 255] += 1;
+        }
+    }
+    let mut buf = vec![(0, 0); v.len()];
+    for (d, c) in counts.iter_mut().enumerate() {
+        if c.iter().any(|&x| x as usize == v.len()) {
+            continue; // one value of this byte: the pass would keep the order
+        }
+        let mut sum = 0;
+        for x in c.iter_mut() {
+            sum += std::mem::replace(x, sum);
+        }
+        for &(k, i) in &v {
+            let slot = &mut c[(k >> (8 * d)) as usize & 255];
+            buf[*slot as usize] = (k, i);
+            *slot += 1;
+        }
+        std::mem::swap(&mut v, &mut buf);
+    }
+    v
 }
 
 /// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
@@ -1190,6 +1220,18 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(300))]
+
+        #[test]
+        fn radix_sort_is_the_stable_sort(
+            keys in prop::collection::vec(any::<u32>(), 0..600),
+            mask in prop::sample::select(vec![u32::MAX, 0, 0xff, 0xff00_00ff, 0x0f0f_0000, 3]),
+        ) {
+            // Full-range keys, all equal, few distinct, bytes shared by all.
+            let v: Vec<(u32, u32)> = keys.iter().enumerate().map(|(i, &k)| (k & mask, i as u32)).collect();
+            let mut want = v.clone();
+            want.sort_by_key(|&(k, _)| k);
+            prop_assert_eq!(super::radix_sort(v), want);
+        }
 
         #[test]
         fn winding_counts_by_strips_are_the_direct_counts(
