@@ -545,8 +545,8 @@ fn traced(
                 }
             }
             let before = if lowest == 0 { n - 1 } else { lowest - 1 };
-            let ccw = carrier(ring[before]).turn(&carrier(ring[lowest]))
-                == Orientation::CounterClockwise;
+            let ccw =
+                carrier(ring[before]).turn(&carrier(ring[lowest])) == Orientation::CounterClockwise;
             let mut pts: Vec<Point2> = Vec::with_capacity(n);
             for j in 0..n {
                 let h = ring[j];
@@ -646,7 +646,12 @@ fn windings_left_of_by(
     // Few queries: every segment for each of them costs less than the strips (same
     // answers: the strips only leave out segments that cannot count).
     if queries.len().saturating_mul(n) <= 4 * n + 4096 && !force_strips {
-        return Some(queries.iter().map(|&q| winding(segs, na, q, 0..n)).collect());
+        return Some(
+            queries
+                .iter()
+                .map(|&q| winding(segs, na, q, 0..n))
+                .collect(),
+        );
     }
     let ranges: Vec<(f64, f64)> = segs
         .iter()
