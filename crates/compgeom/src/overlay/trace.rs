@@ -16,10 +16,11 @@
 //!    point: a crossing lies inside a segment, whose smaller end is in the component).
 //!    When there is more than one component, the face around each one is the face just
 //!    left of that vertex (the book's graph G): the face east of the nearest edge met
-//!    going west from it, found among the edges of its horizontal strip, sorted by x so
-//!    that only a few are tested ([`faces_left_by_strips`]); where the strips would be
-//!    too large, winding counts over strips of input segments or one sweep
-//!    (`dcel/holes.rs`) are used instead. Components are resolved in lexicographic order
+//!    going west from it, found among the edges of its horizontal strip, sorted by x (one
+//!    radix sort of 32-bit monotone keys for all strips) so that only a few are tested
+//!    ([`faces_left_by_strips`]); where the strips would be too large, winding counts
+//!    over strips of input segments (over all segments when there are few components)
+//!    or one sweep (`dcel/holes.rs`) are used instead. Components are resolved in lexicographic order
 //!    of their smallest vertex, so the face found is already labelled. All decisions are
 //!    exact; crossings are rounded only where a test looks at them.
 //! 4. *Rings*: an edge is on the result's boundary when the fill rule puts exactly one of
