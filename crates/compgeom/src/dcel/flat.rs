@@ -128,12 +128,6 @@ impl Vertices {
         }
     }
 
-    /// True when every vertex is an input point stored as such.
-    #[inline]
-    pub(crate) fn all_input(&self) -> bool {
-        matches!(self, Vertices::Input(_))
-    }
-
     /// All vertices as exact points, borrowed when they are stored so.
     pub(crate) fn exact(&self) -> std::borrow::Cow<'_, [ExactPoint]> {
         match self {

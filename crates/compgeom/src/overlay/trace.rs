@@ -16,10 +16,11 @@
 //!    point: a crossing lies inside a segment, whose smaller end is in the component).
 //!    When there is more than one component, the face around each one is the face just
 //!    left of that vertex (the book's graph G): the face east of the nearest edge met
-//!    going west from it, found among the edges of its horizontal strip, sorted by x so
-//!    that only a few are tested ([`faces_left_by_strips`]); where the strips would be
-//!    too large, winding counts over strips of input segments or one sweep
-//!    (`dcel/holes.rs`) are used instead. Components are resolved in lexicographic order
+//!    going west from it, found among the edges of its horizontal strip, sorted by x (one
+//!    radix sort of 32-bit monotone keys for all strips) so that only a few are tested
+//!    ([`faces_left_by_strips`]); where the strips would be too large, winding counts
+//!    over strips of input segments (over all segments when there are few components)
+//!    or one sweep (`dcel/holes.rs`) are used instead. Components are resolved in lexicographic order
 //!    of their smallest vertex, so the face found is already labelled. All decisions are
 //!    exact; crossings are rounded only where a test looks at them.
 //! 4. *Rings*: an edge is on the result's boundary when the fill rule puts exactly one of
@@ -179,29 +180,30 @@ fn traced(
     };
     let origin = |h: u32| flat.edges[(h >> 1) as usize][(h & 1) as usize];
     // Outgoing half-edges per vertex (one array cut into slices).
-    let mut out_start = vec![0u32; nv + 1];
+    // Counted one place up, so that out_start[v + 1] is v's fill cursor and, once
+    // filled, v's end, i.e. the start of v + 1 (no copy of the starts to fill with).
+    let mut out_start = vec![0u32; nv + 2];
     for [u, v] in &flat.edges {
-        out_start[*u as usize + 1] += 1;
-        out_start[*v as usize + 1] += 1;
+        out_start[*u as usize + 2] += 1;
+        out_start[*v as usize + 2] += 1;
     }
     for v in 0..nv {
-        out_start[v + 1] += out_start[v];
+        out_start[v + 2] += out_start[v + 1];
     }
     let mut out = vec![0u32; m];
     // The axis direction of each entry of `out`, beside it (the sorts below then read
     // no per-edge record).
     let mut out_quad = vec![AXIS_NONE; m];
-    {
-        let mut fill = out_start.clone();
-        for (i, [u, v]) in flat.edges.iter().enumerate() {
-            for h in [2 * i as u32, 2 * i as u32 + 1] {
-                let o = if h & 1 == 0 { *u } else { *v } as usize;
-                out[fill[o] as usize] = h;
-                out_quad[fill[o] as usize] = quad(h);
-                fill[o] += 1;
-            }
+    for (i, [u, v]) in flat.edges.iter().enumerate() {
+        for h in [2 * i as u32, 2 * i as u32 + 1] {
+            let o = if h & 1 == 0 { *u } else { *v } as usize;
+            let at = &mut out_start[o + 1];
+            out[*at as usize] = h;
+            out_quad[*at as usize] = quad(h);
+            *at += 1;
         }
     }
+    out_start.pop();
     let slice = |v: usize| (out_start[v] as usize, out_start[v + 1] as usize);
     let mut next = vec![0u32; m];
     for v in 0..nv {
@@ -226,8 +228,13 @@ fn traced(
                 list.sort_unstable_by(|&x, &y| carrier(x).angle_cmp(&carrier(y)));
             }
         }
-        for j in 0..k {
-            next[(list[j] ^ 1) as usize] = list[(j + k - 1) % k];
+        // (The one before the first is the last; no division per half-edge.)
+        if let Some(&last) = list.last() {
+            let mut before = last;
+            for &h in list.iter() {
+                next[(h ^ 1) as usize] = before;
+                before = h;
+            }
         }
     }
     // Cycles labelled relative to their component (depth-first across twins).
@@ -362,13 +369,16 @@ fn traced(
     // their smallest vertex, so the face found for one (which lies left of it) is in a
     // component already resolved.
     let resolve = |around: &[u32], offset: &mut [(i32, i32)]| {
-        let input = |v: u32| flat.vertices.approx(v as usize);
-        let mut order: Vec<u32> = (0..ncomp).collect();
-        order.sort_unstable_by(|&x, &y| {
-            let (p, q) = (input(low[x as usize]), input(low[y as usize]));
-            p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
-        });
-        for k in order {
+        // (The smallest vertices are distinct input points: their integer keys order
+        // them as the coordinates do.)
+        let mut order: Vec<(u64, u64, u32)> = (0..ncomp)
+            .map(|k| {
+                let p = flat.vertices.approx(low[k as usize] as usize);
+                (okey(p.x), okey(p.y), k)
+            })
+            .collect();
+        order.sort_unstable();
+        for (_, _, k) in order {
             let c = around[k as usize];
             if c != NONE {
                 let o = offset[comp_of[c as usize] as usize];
@@ -405,6 +415,12 @@ fn traced(
     // Regions: chosen cycles joined across non-boundary edges and around holes.
     let mut class: Vec<u32> = (0..ncycles as u32).collect();
     let mut degree = vec![0u32; nv];
+    // Per half-edge: 0 off the boundary, BOUNDARY when the result is on its left and
+    // not on its right, TRACED once its ring is traced (one byte instead of the two
+    // look-ups through `cyc` and `chosen`, and of a separate `seen` array).
+    const BOUNDARY: u8 = 1;
+    const TRACED: u8 = 2;
+    let mut state = vec![0u8; m];
     let mut any = false;
     let mut has_boundary = vec![false; ncomp as usize];
     for i in 0..ne {
@@ -414,6 +430,7 @@ fn traced(
             let [u, v] = flat.edges[i];
             degree[u as usize] += 1;
             degree[v as usize] += 1;
+            state[2 * i + usize::from(cg)] = BOUNDARY;
             any = true;
             has_boundary[comp_of[f as usize] as usize] = true;
         } else if cf && f != g {
@@ -436,23 +453,7 @@ fn traced(
             class[a as usize] = b;
         }
     }
-    // Rounded points and exactness flags of the boundary's vertices (input points, as
-    // on the axis-parallel path, are their own rounding: no cache).
-    let all_input = flat.vertices.all_input();
-    let mut rounded: Vec<Option<Rounded>> = vec![None; if all_input { 0 } else { nv }];
-    let point_of = |v: usize, rounded: &mut Vec<Option<Rounded>>| -> Rounded {
-        if let Some(Some(r)) = rounded.get(v) {
-            return *r;
-        }
-        let r = flat.vertices.rounded(v);
-        if let Some(slot) = rounded.get_mut(v) {
-            *slot = Some(r);
-        }
-        r
-    };
-    let on_boundary =
-        |h: u32| chosen[cyc[h as usize] as usize] && !chosen[cyc[(h ^ 1) as usize] as usize];
-    let mut seen = vec![false; m];
+    let on_boundary = |state: &[u8], h: u32| state[h as usize] != 0;
     let mut region_of = vec![NONE; ncycles];
     let mut regions: Vec<Region> = Vec::new();
     let mut pos = vec![NONE; nv];
@@ -460,19 +461,22 @@ fn traced(
     let mut stack: Vec<u32> = Vec::new();
     let mut rings: Vec<(usize, usize)> = Vec::new();
     let mut flat_rings: Vec<u32> = Vec::new();
+    // The rounded points (and exactness flags) of one ring's vertices, computed once per
+    // ring: a vertex is on few rings, so no cache over all vertices is needed.
+    let mut ring_r: Vec<Rounded> = Vec::new();
     for start in 0..m as u32 {
-        if seen[start as usize] || !on_boundary(start) {
+        if state[start as usize] != BOUNDARY {
             continue;
         }
         cycle.clear();
         let mut h = start;
         loop {
-            seen[h as usize] = true;
+            state[h as usize] = TRACED;
             cycle.push(h);
             // Clockwise around the end of h, over edges inside the region, to the first
             // boundary edge.
             let mut e = next[h as usize];
-            while !on_boundary(e) {
+            while !on_boundary(&state, e) {
                 e = next[(e ^ 1) as usize];
             }
             h = e;
@@ -516,28 +520,33 @@ fn traced(
         for &(a, b) in &rings {
             let ring = &flat_rings[a..b];
             let n = ring.len();
+            ring_r.clear();
+            ring_r.extend(
+                ring.iter()
+                    .map(|&h| flat.vertices.rounded(origin(h) as usize)),
+            );
             // Counter-clockwise iff it turns left at its lowest vertex.
             let mut lowest = 0;
             let mut best_v = origin(ring[0]) as usize;
-            let mut best_r = point_of(best_v, &mut rounded);
             for (j, &h) in ring.iter().enumerate().skip(1) {
                 let v = origin(h) as usize;
-                let rv = point_of(v, &mut rounded);
-                let o = flat.vertices.compare_xy(v, &rv, best_v, &best_r);
+                let o = flat
+                    .vertices
+                    .compare_xy(v, &ring_r[j], best_v, &ring_r[lowest]);
                 if o == Ordering::Less {
                     lowest = j;
                     best_v = v;
-                    best_r = rv;
                 }
             }
-            let ccw = carrier(ring[(lowest + n - 1) % n]).turn(&carrier(ring[lowest]))
-                == Orientation::CounterClockwise;
+            let before = if lowest == 0 { n - 1 } else { lowest - 1 };
+            let ccw =
+                carrier(ring[before]).turn(&carrier(ring[lowest])) == Orientation::CounterClockwise;
             let mut pts: Vec<Point2> = Vec::with_capacity(n);
             for j in 0..n {
                 let h = ring[j];
                 let v = origin(h) as usize;
                 if !keep_collinear && degree[v] <= 2 {
-                    let prev = ring[(j + n - 1) % n];
+                    let prev = ring[if j == 0 { n - 1 } else { j - 1 }];
                     let (qp, qc) = (quad(prev), quad(h));
                     let straight = if qp != AXIS_NONE && qc != AXIS_NONE {
                         qp == qc
@@ -549,7 +558,7 @@ fn traced(
                         continue;
                     }
                 }
-                let q = point_of(v, &mut rounded).point();
+                let q = ring_r[j].point();
                 if pts.last() != Some(&q) {
                     pts.push(q);
                 }
@@ -591,6 +600,53 @@ fn traced(
 /// is a monotone function of it (rounding is monotone), so the edges whose closed y
 /// range holds q.y are all in q's strip.
 fn windings_left_of(segs: &[Segment2], na: usize, queries: &[Point2]) -> Option<Vec<(i32, i32)>> {
+    windings_left_of_by(segs, na, queries, false)
+}
+
+/// [`windings_left_of`]; with `force_strips` the strips are used however few the
+/// queries (tests compare both ways).
+fn windings_left_of_by(
+    segs: &[Segment2],
+    na: usize,
+    queries: &[Point2],
+    force_strips: bool,
+) -> Option<Vec<(i32, i32)>> {
+    // The winding numbers at q from the segments `items` (all that can cross q's line).
+    fn winding(
+        segs: &[Segment2],
+        na: usize,
+        q: Point2,
+        items: impl Iterator<Item = usize>,
+    ) -> (i32, i32) {
+        let (mut wa, mut wb) = (0, 0);
+        for i in items {
+            let s = segs[i];
+            let w = if s.a.y <= q.y && s.b.y > q.y {
+                i32::from(orient2d(s.a, s.b, q) != Orientation::Clockwise)
+            } else if s.b.y <= q.y && s.a.y > q.y {
+                -i32::from(orient2d(s.a, s.b, q) != Orientation::CounterClockwise)
+            } else {
+                0
+            };
+            if i < na {
+                wa += w;
+            } else {
+                wb += w;
+            }
+        }
+        (wa, wb)
+    }
+    let n = segs.len();
+    // Few queries: every segment for each of them costs less than the strips (same
+    // answers: the strips only leave out segments that cannot count).
+    if queries.len().saturating_mul(n) <= 4 * n + 4096 && !force_strips {
+        return Some(
+            queries
+                .iter()
+                .map(|&q| winding(segs, na, q, 0..n))
+                .collect(),
+        );
+    }
     let ranges: Vec<(f64, f64)> = segs
         .iter()
         .map(|s| (s.a.y.min(s.b.y), s.a.y.max(s.b.y)))
@@ -600,25 +656,7 @@ fn windings_left_of(segs: &[Segment2], na: usize, queries: &[Point2]) -> Option<
     Some(
         queries
             .iter()
-            .map(|q| {
-                let (mut wa, mut wb) = (0, 0);
-                for &i in strips.items(q.y) {
-                    let s = segs[i as usize];
-                    let w = if s.a.y <= q.y && s.b.y > q.y {
-                        i32::from(orient2d(s.a, s.b, *q) != Orientation::Clockwise)
-                    } else if s.b.y <= q.y && s.a.y > q.y {
-                        -i32::from(orient2d(s.a, s.b, *q) != Orientation::CounterClockwise)
-                    } else {
-                        0
-                    };
-                    if (i as usize) < na {
-                        wa += w;
-                    } else {
-                        wb += w;
-                    }
-                }
-                (wa, wb)
-            })
+            .map(|&q| winding(segs, na, q, strips.items(q.y).iter().map(|&i| i as usize)))
             .collect(),
     )
 }
@@ -661,8 +699,27 @@ fn faces_left_by_strips(
     }
     // The queries scan only a few entries each (below), so the scan budget is not the
     // limit: pass no queries to it.
-    let mut strips = Strips::new(&ranges, &[])?;
-    let reach = strips.sort_by_x(&xr);
+    let strips = Strips::counted(&ranges, &[])?;
+    // Each strip's entries by decreasing x_min, up to a 32-bit monotone key of it (the
+    // offset from the smallest x_min, scaled to the key range; rounding and the
+    // saturating cast keep the order, ties may join near values). Listed in that order
+    // overall: one radix sort of the keys instead of a comparison sort per strip. The
+    // queries below cut their strip with the same key, so the order needs no more than
+    // that (see there).
+    let x_lo = xr.iter().fold(f64::INFINITY, |m, r| m.min(r.0));
+    let x_hi = xr.iter().fold(f64::NEG_INFINITY, |m, r| m.max(r.0));
+    let x_scale = f64::from(u32::MAX) / (x_hi - x_lo);
+    let x_scale = if x_scale.is_finite() { x_scale } else { 0.0 };
+    let x_key = |x: f64| ((x - x_lo) * x_scale) as u32;
+    let by_x = radix_sort(
+        (0..ne as u32)
+            .filter(|&i| listed(ranges[i as usize]))
+            .map(|i| (!x_key(xr[i as usize].0), i))
+            .collect(),
+    );
+    let strips = strips.fill(&ranges, by_x.iter().map(|&(_, i)| i));
+    drop(by_x);
+    let reach = strips.reach(&xr);
     let cache: Vec<Cell<Option<Rounded>>> = vec![Cell::new(None); points.len()];
     let rounded = |v: u32| {
         let c = &cache[v as usize];
@@ -716,8 +773,11 @@ fn faces_left_by_strips(
                 let (x, y) = (points[q as usize].approx().x, input_y(q));
                 let (from, to) = strips.range(y);
                 let items = &strips.list[from..to];
-                // Entries by decreasing x_min: those wholly east of q come first.
-                let first = from + items.partition_point(|&i| xr[i as usize].0 > x);
+                // Entries by decreasing key of x_min: those with a larger key than q.x's
+                // lie wholly east of q and come first (the key is monotone); the rest
+                // is tested edge by edge, and `reach` bounds it whatever its order.
+                let qk = x_key(x);
+                let first = from + items.partition_point(|&i| x_key(xr[i as usize].0) > qk);
                 let mut best: Option<(usize, u32, u32)> = None;
                 let mut bound = f64::NEG_INFINITY;
                 for (&i, &far) in strips.list[first..to].iter().zip(&reach[first..to]) {
@@ -758,6 +818,50 @@ fn faces_left_by_strips(
     )
 }
 
+/// Whether an item with y range `r` is listed in [`Strips`] (horizontal ones are not).
+fn listed(r: (f64, f64)) -> bool {
+    r.0 < r.1
+}
+
+/// `(key, item)` pairs sorted by key, equal keys in their given order: a stable
+/// least-significant-digit radix sort by bytes, skipping a byte that all keys share.
+/// O(n) (four passes at most), where a comparison sort costs O(n log n).
+fn radix_sort(mut v: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
+    let mut counts = [[0u32; 256]; 4];
+    for &(k, _) in &v {
+        for (d, c) in counts.iter_mut().enumerate() {
+            c[(k >> (8 * d)) as usize & 255] += 1;
+        }
+    }
+    let mut buf = vec![(0, 0); v.len()];
+    for (d, c) in counts.iter_mut().enumerate() {
+        if c.iter().any(|&x| x as usize == v.len()) {
+            continue; // one value of this byte: the pass would keep the order
+        }
+        let mut sum = 0;
+        for x in c.iter_mut() {
+            sum += std::mem::replace(x, sum);
+        }
+        for &(k, i) in &v {
+            let slot = &mut c[(k >> (8 * d)) as usize & 255];
+            buf[*slot as usize] = (k, i);
+            *slot += 1;
+        }
+        std::mem::swap(&mut v, &mut buf);
+    }
+    v
+}
+
+/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
+fn okey(v: f64) -> u64 {
+    let b = (v + 0.0).to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | (1 << 63)
+    }
+}
+
 /// Items listed by horizontal strips: item `i` with `ranges[i] = (y_min, y_max)` (only
 /// those with `y_min < y_max`) is in every strip its closed y range meets. The strip of a
 /// y value is a monotone function of it (rounding is monotone), so every item whose
@@ -778,11 +882,17 @@ impl Strips {
     /// search of [`faces_left_by_strips`], a few tests per query, is cheaper: on a real
     /// map with 1.7 k components and ~150 edges per strip it is.)
     fn new(ranges: &[(f64, f64)], ys: &[f64]) -> Option<Strips> {
+        let listed = (0..ranges.len() as u32).filter(|&i| listed(ranges[i as usize]));
+        Some(Strips::counted(ranges, ys)?.fill(ranges, listed))
+    }
+
+    /// [`Strips::new`] with the strip sizes counted and the lists not yet filled.
+    fn counted(ranges: &[(f64, f64)], ys: &[f64]) -> Option<Strips> {
         let n = ranges.len();
-        let listed = |&(a, b): &(f64, f64)| a < b;
+        let listed = |&r: &&(f64, f64)| listed(*r);
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         let mut heights = 0.0;
-        for r in ranges.iter().filter(|r| listed(r)) {
+        for r in ranges.iter().filter(listed) {
             lo = lo.min(r.0);
             hi = hi.max(r.1);
             heights += r.1 - r.0;
@@ -812,7 +922,7 @@ impl Strips {
             list: Vec::new(),
         };
         let mut total = 0usize;
-        for r in ranges.iter().filter(|r| listed(r)) {
+        for r in ranges.iter().filter(listed) {
             let (a, b) = (strips.strip(r.0), strips.strip(r.1));
             total += b - a + 1;
             if total > 8 * n + 4096 {
@@ -833,26 +943,34 @@ impl Strips {
         for k in 0..count {
             strips.start[k + 1] += strips.start[k];
         }
-        let mut fill = strips.start.clone();
-        strips.list = vec![0u32; total];
-        for (i, r) in ranges.iter().enumerate().filter(|(_, r)| listed(r)) {
-            let (a, b) = (strips.strip(r.0), strips.strip(r.1));
-            for f in &mut fill[a..=b] {
-                strips.list[*f as usize] = i as u32;
-                *f += 1;
-            }
-        }
+        strips.list = Vec::with_capacity(total);
         Some(strips)
     }
 
-    /// Sorts each strip's items by decreasing `xr[i].0` (x_min) and returns, for each
-    /// list entry, the largest `xr[i].1` (x_max) from it to the end of its strip.
-    fn sort_by_x(&mut self, xr: &[(f64, f64)]) -> Vec<f64> {
+    /// The strips of [`Strips::counted`] with their items listed in the order of `order`
+    /// (a permutation of the listed items, i.e. of those with `y_min < y_max`): each
+    /// strip's list is then in that order too.
+    fn fill(mut self, ranges: &[(f64, f64)], order: impl Iterator<Item = u32>) -> Strips {
+        let total = self.list.capacity();
+        let mut fill = self.start.clone();
+        self.list.resize(total, 0);
+        for i in order {
+            let r = ranges[i as usize];
+            let (a, b) = (self.strip(r.0), self.strip(r.1));
+            for f in &mut fill[a..=b] {
+                self.list[*f as usize] = i;
+                *f += 1;
+            }
+        }
+        debug_assert!(fill[..self.count] == self.start[1..]);
+        self
+    }
+
+    /// For each list entry, the largest `xr[i].1` (x_max) from it to the end of its strip.
+    fn reach(&self, xr: &[(f64, f64)]) -> Vec<f64> {
         let mut reach = vec![f64::NEG_INFINITY; self.list.len()];
         for k in 0..self.count {
             let (a, b) = (self.start[k] as usize, self.start[k + 1] as usize);
-            self.list[a..b]
-                .sort_unstable_by(|&i, &j| xr[j as usize].0.total_cmp(&xr[i as usize].0));
             let mut m = f64::NEG_INFINITY;
             for e in (a..b).rev() {
                 m = m.max(xr[self.list[e] as usize].1);
@@ -883,7 +1001,7 @@ impl Strips {
 mod tests {
     use super::super::boolean::{boolean_via_dcel, boolean_with, oriented_segments};
     use super::super::{BooleanOp, BooleanOptions, FillRule};
-    use crate::kernel::{MultiPolygon, Point2, Polygon};
+    use crate::kernel::{MultiPolygon, Point2, Polygon, Segment2};
     use proptest::prelude::*;
 
     const OPS: [BooleanOp; 4] = [
@@ -1104,6 +1222,40 @@ mod tests {
         #![proptest_config(ProptestConfig::with_cases(300))]
 
         #[test]
+        fn radix_sort_is_the_stable_sort(
+            keys in prop::collection::vec(any::<u32>(), 0..600),
+            mask in prop::sample::select(vec![u32::MAX, 0, 0xff, 0xff00_00ff, 0x0f0f_0000, 3]),
+        ) {
+            // Full-range keys, all equal, few distinct, bytes shared by all.
+            let v: Vec<(u32, u32)> = keys.iter().enumerate().map(|(i, &k)| (k & mask, i as u32)).collect();
+            let mut want = v.clone();
+            want.sort_by_key(|&(k, _)| k);
+            prop_assert_eq!(super::radix_sort(v), want);
+        }
+
+        #[test]
+        fn winding_counts_by_strips_are_the_direct_counts(
+            segs in prop::collection::vec((0..6i32, 0..6i32, 0..6i32, 0..6i32), 1..40),
+            queries in prop::collection::vec((0..6i32, 0..6i32), 1..12),
+            na in 0..40usize,
+            scale in prop::sample::select(vec![1.0, 1e-300, 1e300, -0.5]),
+        ) {
+            // Grid segments (horizontal, vertical, collinear, repeated, zero-length) and
+            // queries on their ends and lines; huge and tiny scales.
+            let f = |x: i32| f64::from(x) * scale;
+            let segs: Vec<Segment2> = segs
+                .iter()
+                .map(|&(a, b, c, d)| Segment2::new(Point2::new(f(a), f(b)), Point2::new(f(c), f(d))))
+                .collect();
+            let queries: Vec<Point2> = queries.iter().map(|&(x, y)| Point2::new(f(x), f(y))).collect();
+            let direct = super::windings_left_of_by(&segs, na, &queries, false);
+            prop_assert!(direct.is_some());
+            if let Some(strips) = super::windings_left_of_by(&segs, na, &queries, true) {
+                prop_assert_eq!(direct.unwrap(), strips);
+            }
+        }
+
+        #[test]
         fn traced_path_agrees_on_nested_islands(
             cells in prop::collection::vec((0..3i32, 0..3i32, 1..6i32, any::<bool>()), 1..5),
             other in prop::collection::vec((0..3i32, 0..3i32, 1..6i32, any::<bool>()), 0..4),
@@ -1116,6 +1268,27 @@ mod tests {
             b.0.extend(nested_set(&other, (steps[sy], 0.0)).0);
             agree(&a, &b)?;
             agree(&b, &a)?;
+        }
+
+        #[test]
+        fn traced_path_agrees_on_tiny_islands_beside_a_far_square(
+            cells in prop::collection::vec((0..3i32, 0..3i32, 1..6i32, any::<bool>()), 1..4),
+            sx in 0..4usize,
+        ) {
+            // The islands span ~1e-8 beside a square 1e3 away: the strips' 32-bit x keys
+            // of nearby edges coincide, so ties of the key hold edges on both sides of a
+            // query.
+            let steps = [0.0, 1.0, 0.5, 1.0 / 3.0];
+            let tiny = |m: MultiPolygon| {
+                let f = |r: &Vec<Point2>| r.iter().map(|q| Point2::new(q.x * 1e-9, q.y * 1e-9)).collect();
+                let far = Polygon::new(vec![p(1000, 1000), p(1001, 1000), p(1001, 1001)], vec![]);
+                let mut v: Vec<Polygon> = m.0.iter().map(|g| Polygon::new(f(&g.exterior), g.holes.iter().map(f).collect())).collect();
+                v.push(far);
+                MultiPolygon(v)
+            };
+            let a = tiny(nested_set(&cells, (0.0, 0.0)));
+            let b = tiny(nested_set(&cells, (steps[sx], 0.5)));
+            agree(&a, &b)?;
         }
 
         #[test]
