@@ -288,3 +288,23 @@ proptest! {
         }
     }
 }
+
+/// A segment given twice, crossing another at a point that rounds: inserted once, it
+/// refines like the single segment (inserted twice, the second straight copy crossed the
+/// first one's bent pieces, and the sliver pieces between the two rounded crossings
+/// encroached on each other without end).
+#[test]
+fn a_repeated_segment_through_a_rounded_crossing_refines() {
+    let p = |x: f64, y: f64| Point2::new(x, y);
+    let pts = [p(1.0, 4.0), p(4.0, 2.0), p(5.0, 5.0), p(1.0, 5.0)];
+    let twice = Segment2::new(p(1.0, 4.0), p(5.0, 5.0));
+    let segs = [Segment2::new(p(1.0, 5.0), p(4.0, 2.0)), twice, twice];
+    let cdt = constrained_delaunay(&pts, &segs).unwrap();
+    let once = constrained_delaunay(&pts, &segs[..2]).unwrap();
+    assert_eq!(cdt.triangulation.vertices(), once.triangulation.vertices());
+    assert_eq!(cdt.constraints, once.constraints);
+    let r = refine(&cdt, &RefineOptions::new(20.0).with_max_steiner(20_000)).unwrap();
+    assert!(r.complete, "stopped after {} Steiner points", r.steiner);
+    verify_cdt(&r.cdt).unwrap();
+    min_angle_ok(&r.cdt, 20.0, &r.exempt);
+}

@@ -148,9 +148,14 @@ fn build(all: &[Point2], pairs: &[(usize, usize)], interior_only: bool) -> Resul
     // k constraints cross at most k(k-1)/2 times; the rest is slack for rounded crossings
     // that cross a third constraint.
     c.crossing_budget = pairs.len().saturating_mul(pairs.len()) + 64 * pairs.len() + 1000;
+    // A segment given twice is inserted once: its first insertion may have bent it through
+    // a rounded crossing, and a second straight walk would then cross those pieces and
+    // leave near-coincident vertices joined by sliver pieces (which refinement cannot
+    // resolve: the pieces encroach on each other without end).
+    let mut inserted = std::collections::HashSet::with_capacity(pairs.len());
     for (ci, &(i, j)) in pairs.iter().enumerate() {
         let (a, b) = (rep[i], rep[j]);
-        if a != b {
+        if a != b && inserted.insert((a.min(b), a.max(b))) {
             c.insert_segment(a, b, ci as u32)?;
         }
     }
