@@ -40,6 +40,22 @@
 //! instructions per call; i_overlay 4.05M). Still above 1 against geo: squares, water,
 //! JTS, dissolve.
 //!
+//! Session 9 (branches s9-dissolve, s9-trace, s9-squares merged; quiet machine, load
+//! about 1, two full runs, ratio compgeom / peer of best times, medians in brackets):
+//! star 1e3 0.84–0.91 (0.84–0.92) against i_overlay and 0.83–0.89 against geo; star 1e4
+//! 0.52–0.67 / 0.52–0.68; star 1e5 0.50–0.63 / 0.53–0.63; squares 1.04–1.09 (1.02–1.07)
+//! / 0.89–0.99 (29–32 ms); water 0.66–0.85 / 0.66–0.80; JTS ×52 1.06–1.14 / 1.01–1.11;
+//! GEOS-837 dissolve 1.87–1.88 / 1.68–1.70 (0.80–0.83 ms against 0.43–0.44). The same
+//! machine, quiet, on the session-8 main at the start of the session: squares 1.26 /
+//! 1.14, water 0.94–1.27 / 0.82–1.23, JTS 1.20–1.28 / 1.02–1.22, dissolve 1.94 / 1.83.
+//! Noding in horizontal strips when one x-sweep strip would look at many pairs apart
+//! in y (dissolve 58.7k → ~14.6k pairs looked at; water stays in the sweep instead of
+//! the grid); a float filter before the exact slope comparison in the angle order at
+//! vertices; the nearest-edge strips of the tracer filled from one radix-sorted x order
+//! (water ~15M → ~1M instructions per call); the axis-parallel path keeps its vertices
+//! as plain input points (squares 315M → 296M instructions per call, i_overlay ~297M;
+//! peak memory 38 → 28 MB). Still above 1 against geo: JTS, dissolve.
+//!
 //! Measured, session 7 (load average 1.8 falling from 4, two runs, ms best of 5):
 //!
 //! | input | compgeom | i_overlay | geo | /i_overlay (median) | /geo (median) | before /i_overlay |

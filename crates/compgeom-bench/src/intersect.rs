@@ -158,6 +158,13 @@
 //! 1.04×), geo 10.4–22.6 ms; example binaries best 19.4 → 18.3 ms (1.06×). Still
 //! below geo on this row: the remaining ~400 instructions per crossing are the two
 //! cross products, the division and the coordinates, which depend on the pair.
+//!
+//! Session 9 (quiet machine, load about 1, long row only, three runs): find 11.8 / 14.0
+//! / 9.0 ms against geo's collect() 10.8–11.0 ms (0.92×, 0.78×, 1.21×); count 1.69–2.51×.
+//! One thread: find ~14 ms (scan 7.5, bucket sort ~4.5, points 1.7) against geo's
+//! ~10.4 ms. 512 coarse buckets instead of 2048 halve the scatter phase (1.4–1.9 →
+//! 0.8–0.9 ms on one thread); in a steady state the allocator reuses the buffers
+//! (1,250 minor faults per call), so fresh memory is not the main cost.
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
