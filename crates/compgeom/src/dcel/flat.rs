@@ -31,6 +31,7 @@
 use super::build::Source;
 use super::holes::{compare_xy_filtered, Rounded};
 use crate::intersect::find_intersections;
+use crate::kernel::arith::ordered_key as okey;
 use crate::kernel::{ExactPoint, Point2, Segment2};
 use crate::{Error, Result};
 use std::cmp::Ordering;
@@ -148,16 +149,6 @@ impl Vertices {
 /// True when `a` comes first in sweep order (higher y, then smaller x).
 fn sweep_first(a: Point2, b: Point2) -> bool {
     a.y > b.y || (a.y == b.y && a.x < b.x)
-}
-
-/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
-pub(super) fn okey(v: f64) -> u64 {
-    let b = (v + 0.0).to_bits();
-    if b >> 63 == 1 {
-        !b
-    } else {
-        b | (1 << 63)
-    }
 }
 
 /// The first index `i >= from` with `sorted[i] >= key` (`sorted.len()` if none), by

@@ -44,7 +44,7 @@ pub(crate) fn faces_left_of(
     // First by the rounded points as integer keys (rounding is monotone, so where they
     // differ in y that is the exact order); then each run of equal rounded y holding a
     // point with an inexact coordinate is re-sorted exactly.
-    let okey = super::flat::okey;
+    let okey = crate::kernel::arith::ordered_key;
     let mut keyed: Vec<(u64, u64, u32)> = (0..n)
         .map(|v| (!okey(approx[v].p.y), okey(approx[v].p.x), v as u32))
         .collect();

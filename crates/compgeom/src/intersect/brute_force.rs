@@ -12,6 +12,7 @@ use super::round::{round_crossing_of, round_crossings_of, Prepared};
 use super::small_int::{self, Hom};
 use super::sweep::check_finite;
 use super::{sort_overlaps, IntersectionPoint, Intersections, Overlap};
+use crate::kernel::arith::ordered_key as key;
 use crate::kernel::{
     quick_crossing_static, segment_intersection, Crossing, ExactPoint, Point2, Segment2,
     SegmentIntersection,
@@ -54,16 +55,6 @@ const CROSSING_BIT: u64 = 1 << 31;
 
 /// Marks the first record of a group ([`mark_groups`]); not set while sorting.
 const GROUP_START: u64 = 1 << 63;
-
-/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
-fn key(v: f64) -> u64 {
-    let b = (v + 0.0).to_bits();
-    if b >> 63 == 1 {
-        !b
-    } else {
-        b | (1 << 63)
-    }
-}
 
 /// The inverse of [`key`].
 fn unkey(k: u64) -> f64 {

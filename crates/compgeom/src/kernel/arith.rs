@@ -34,3 +34,16 @@ pub(crate) fn mul_sign(a: Ordering, b: Ordering) -> Ordering {
         _ => Ordering::Less,
     }
 }
+
+/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one): the
+/// sign bit flipped for positive values, all bits for negative ones, so integer order
+/// (and radix or counting sorts) gives the numeric order.
+#[inline]
+pub(crate) fn ordered_key(v: f64) -> u64 {
+    let b = (v + 0.0).to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | (1 << 63)
+    }
+}

@@ -39,6 +39,7 @@
 //! sorts at vertices of degree > 2, plus, with several components, the strips (O(V + E)
 //! and a few tests per component on map-like data) or the hole sweep.
 use crate::dcel::{compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounded};
+use crate::kernel::arith::ordered_key as okey;
 use crate::kernel::{orient2d, ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2};
 use crate::Result;
 use std::cell::Cell;
@@ -850,16 +851,6 @@ fn radix_sort(mut v: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
         std::mem::swap(&mut v, &mut buf);
     }
     v
-}
-
-/// An order-preserving integer key of a finite `f64` (`-0.0` and `0.0` share one).
-fn okey(v: f64) -> u64 {
-    let b = (v + 0.0).to_bits();
-    if b >> 63 == 1 {
-        !b
-    } else {
-        b | (1 << 63)
-    }
 }
 
 /// Items listed by horizontal strips: item `i` with `ranges[i] = (y_min, y_max)` (only

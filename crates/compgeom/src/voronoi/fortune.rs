@@ -39,6 +39,7 @@ use super::predicates::{
     circle_event, circumcentre, cmp_event_site, cmp_event_site_int, cmp_events, cmp_events_int,
     left_of_breakpoint, Circle, Exact, IntCircle, IntFrame,
 };
+use crate::kernel::arith::ordered_key as key;
 use crate::kernel::{ensure_finite, Point2};
 use crate::Result;
 use std::cmp::Ordering;
@@ -52,14 +53,6 @@ use std::cmp::Ordering;
 /// of each group of equal points is its smallest. Renumbering groups by first index is a
 /// linear pass over a marker array.
 pub(crate) fn dedupe(points: &[Point2]) -> (Vec<Point2>, Vec<usize>, Vec<usize>, Vec<usize>) {
-    fn key(v: f64) -> u64 {
-        let b = (v + 0.0).to_bits();
-        if b >> 63 == 1 {
-            !b
-        } else {
-            b | (1 << 63)
-        }
-    }
     let n = points.len();
     let mut keys: Vec<(u64, u64, u32)> = points
         .iter()
