@@ -12,7 +12,12 @@
 //! `a–b` by `a–x`, `x–b`, each inserted like any constraint. Rounding moves `x` off the
 //! exact crossing by at most half a unit in the last place per coordinate, so the pieces
 //! bend by that much; if a bent piece then crosses a third constraint, that crossing is
-//! split the same way (the number of such splits is bounded, else `Err`). The result is the
+//! split the same way (the number of such splits is bounded, else `Err`).
+//! Crossings are taken between the *input* segments the pieces come from when those
+//! properly cross (so all constraints through one input crossing meet at one rounded
+//! point), and a bent piece passing within rounding of a vertex that its input segment goes
+//! through is routed through that vertex (see `Constrained::meeting_vertex`): otherwise
+//! pieces meet at angles of ~10⁻¹⁶ that Delaunay refinement splits without end. The result is the
 //! exact constrained Delaunay triangulation of the vertices (inputs and Steiner points) and
 //! the pieces: every piece is an edge and every other edge is locally Delaunay by the exact
 //! in-circle test.
@@ -21,7 +26,7 @@
 //! it (found exactly by the walk), so the overlap becomes shared pieces.
 
 use super::mesh::{next, prev, Found, Mesh, GHOST};
-use super::pred::{in_circle, orient};
+use super::pred::{dot_sign, in_circle, orient};
 use crate::kernel::Crossing;
 use crate::{Error, Point2, Result, Segment2};
 use std::collections::{HashMap, VecDeque};
@@ -71,6 +76,9 @@ pub(crate) struct Constrained<'a> {
     ghost_fixed: bool,
     /// Crossing splits still allowed (a guard against an endless cascade).
     pub(crate) crossing_budget: usize,
+    /// The input segment of each constraint id (its ends when first inserted): a piece
+    /// bent through a rounded crossing is still split at the vertices on this segment.
+    origin: HashMap<u32, (Point2, Point2), BuildHasherDefault<EdgeHasher>>,
 }
 
 /// What the walk from `a` towards `b` found.
@@ -100,6 +108,7 @@ impl<'a> Constrained<'a> {
             vmap,
             ghost_fixed,
             crossing_budget: 0,
+            origin: HashMap::default(),
         }
     }
 
@@ -217,6 +226,8 @@ impl<'a> Constrained<'a> {
     /// Inserts the constraint `a–b` (vertex ids) with id `ci`, splitting it at vertices on
     /// it and at crossings with constrained edges (see the module docs).
     pub(crate) fn insert_segment(&mut self, a: u32, b: u32, ci: u32) -> Result<()> {
+        let (pa, pb) = (self.mesh.pt(a), self.mesh.pt(b));
+        let (oa, ob) = *self.origin.entry(ci).or_insert((pa, pb));
         let mut work = vec![(a, b)];
         while let Some((a, b)) = work.pop() {
             if a == b {
@@ -224,6 +235,16 @@ impl<'a> Constrained<'a> {
             }
             match self.walk(a, b, ci)? {
                 Walk::Edge => {
+                    let m = &self.mesh;
+                    let apexes = self.find(a, b).map(|h| {
+                        let t = m.twin[h as usize];
+                        (m.v[prev(h) as usize], m.v[prev(t) as usize])
+                    });
+                    let near = apexes.into_iter().flat_map(|(p, q)| [p, q]);
+                    if let Some(z) = self.on_input_segment(a, b, (oa, ob), near) {
+                        work.extend_from_slice(&[(z, b), (a, z)]);
+                        continue;
+                    }
                     self.fixed.insert(key(a, b), ci);
                 }
                 Walk::Split(c) => work.extend_from_slice(&[(c, b), (a, c)]),
@@ -234,18 +255,8 @@ impl<'a> Constrained<'a> {
                         )));
                     }
                     self.crossing_budget -= 1;
-                    let m = &self.mesh;
-                    let s = Segment2::new(m.pt(a), m.pt(b));
-                    let t = Segment2::new(m.pt(u), m.pt(w));
-                    let Some(c) = Crossing::new(s, t) else {
-                        return Err(internal(ci, "crossing of parallel segments"));
-                    };
-                    let x = c.approx();
-                    if !x.is_finite() {
-                        return Err(internal(ci, "crossing beyond the f64 range"));
-                    }
                     let cu = *self.fixed.get(&key(u, w)).unwrap_or(&ci);
-                    let (xv, _) = self.add_point(x);
+                    let xv = self.meeting_vertex((a, b, (oa, ob)), (u, w, cu), ci)?;
                     if xv != u && xv != w && self.fixed.remove(&key(u, w)).is_some() {
                         self.insert_segment(u, xv, cu)?;
                         self.insert_segment(xv, w, cu)?;
@@ -253,12 +264,90 @@ impl<'a> Constrained<'a> {
                     work.extend_from_slice(&[(xv, b), (a, xv)]);
                 }
                 Walk::Crossed(list) => {
+                    let near = list.iter().flat_map(|&(u, w)| [u, w]);
+                    if let Some(z) = self.on_input_segment(a, b, (oa, ob), near) {
+                        work.extend_from_slice(&[(z, b), (a, z)]);
+                        continue;
+                    }
                     self.flip_out(a, b, list.into(), ci)?;
                     self.fixed.insert(key(a, b), ci);
                 }
             }
         }
         Ok(())
+    }
+
+    /// The vertex where the piece `a–b` (of the input segment `o`, constraint `ci`) and the
+    /// constrained piece `u–w` it properly crosses (of constraint `cu`) are made to meet:
+    /// * an end of one piece that lies exactly on the other's input segment, inside the
+    ///   circle with diameter the other piece (a bent piece passes within rounding of a
+    ///   vertex its input segment goes through: the pieces meet there, as the inputs do);
+    /// * else the crossing of the two input segments, when they properly cross (so that
+    ///   every constraint through the same input crossing meets at the same rounded point,
+    ///   not at several points an ulp apart), rounded to `f64`;
+    /// * else the crossing of the two pieces, rounded.
+    ///
+    /// The rounded point is inserted (or is the vertex equal to it).
+    fn meeting_vertex(
+        &mut self,
+        (a, b, (oa, ob)): (u32, u32, (Point2, Point2)),
+        (u, w, cu): (u32, u32, u32),
+        ci: u32,
+    ) -> Result<u32> {
+        let m = &self.mesh;
+        let (pa, pb, pu, pw) = (m.pt(a), m.pt(b), m.pt(u), m.pt(w));
+        let (ta, tb) = self.origin.get(&cu).copied().unwrap_or((pu, pw));
+        let inside = |z: Point2, s0: Point2, s1: Point2, p: Point2, q: Point2| {
+            orient(s0, s1, z) == 0 && dot_sign(z, p, q) == std::cmp::Ordering::Less
+        };
+        for (z, pz) in [(u, pu), (w, pw)] {
+            if inside(pz, oa, ob, pa, pb) {
+                return Ok(z);
+            }
+        }
+        for (z, pz) in [(a, pa), (b, pb)] {
+            if inside(pz, ta, tb, pu, pw) {
+                return Ok(z);
+            }
+        }
+        let (s, t) = if crosses(oa, ob, ta, tb) {
+            (Segment2::new(oa, ob), Segment2::new(ta, tb))
+        } else {
+            (Segment2::new(pa, pb), Segment2::new(pu, pw))
+        };
+        let Some(c) = Crossing::new(s, t) else {
+            return Err(internal(ci, "crossing of parallel segments"));
+        };
+        let x = c.approx();
+        if !x.is_finite() {
+            return Err(internal(ci, "crossing beyond the f64 range"));
+        }
+        Ok(self.add_point(x).0)
+    }
+
+    /// For a piece `a–b` of the input segment `o` that was bent through a rounded crossing
+    /// (an end off `o`): a vertex among `near` (the corners of the triangles the piece
+    /// crosses or borders) lying exactly on `o` and strictly inside the circle with
+    /// diameter `a–b`. Such a vertex is within rounding of the piece but not on it; the
+    /// piece goes through it instead, as the input segment does (else the piece and a
+    /// constraint from that vertex along the segment would meet at an angle of ~10⁻¹⁶,
+    /// which refinement cannot resolve). An unbent piece finds such vertices by its walk.
+    fn on_input_segment(
+        &self,
+        a: u32,
+        b: u32,
+        (oa, ob): (Point2, Point2),
+        near: impl Iterator<Item = u32>,
+    ) -> Option<u32> {
+        let m = &self.mesh;
+        let (pa, pb) = (m.pt(a), m.pt(b));
+        if orient(oa, ob, pa) == 0 && orient(oa, ob, pb) == 0 {
+            return None;
+        }
+        near.filter(|&z| z != GHOST && z != a && z != b).find(|&z| {
+            let pz = m.pt(z);
+            orient(oa, ob, pz) == 0 && dot_sign(pz, pa, pb) == std::cmp::Ordering::Less
+        })
     }
 
     /// Walks from `a` to `b` through the triangles the segment crosses (exact orientations).
