@@ -297,16 +297,13 @@ impl<'a> Constrained<'a> {
         let m = &self.mesh;
         let (pa, pb, pu, pw) = (m.pt(a), m.pt(b), m.pt(u), m.pt(w));
         let (ta, tb) = self.origin.get(&cu).copied().unwrap_or((pu, pw));
-        let inside = |z: Point2, s0: Point2, s1: Point2, p: Point2, q: Point2| {
-            orient(s0, s1, z) == 0 && dot_sign(z, p, q) == std::cmp::Ordering::Less
-        };
         for (z, pz) in [(u, pu), (w, pw)] {
-            if inside(pz, oa, ob, pa, pb) {
+            if on_segment_near_piece(pz, (oa, ob), (pa, pb)) {
                 return Ok(z);
             }
         }
         for (z, pz) in [(a, pa), (b, pb)] {
-            if inside(pz, ta, tb, pu, pw) {
+            if on_segment_near_piece(pz, (ta, tb), (pu, pw)) {
                 return Ok(z);
             }
         }
@@ -344,10 +341,8 @@ impl<'a> Constrained<'a> {
         if orient(oa, ob, pa) == 0 && orient(oa, ob, pb) == 0 {
             return None;
         }
-        near.filter(|&z| z != GHOST && z != a && z != b).find(|&z| {
-            let pz = m.pt(z);
-            orient(oa, ob, pz) == 0 && dot_sign(pz, pa, pb) == std::cmp::Ordering::Less
-        })
+        near.filter(|&z| z != GHOST && z != a && z != b)
+            .find(|&z| on_segment_near_piece(m.pt(z), (oa, ob), (pa, pb)))
     }
 
     /// Walks from `a` to `b` through the triangles the segment crosses (exact orientations).
@@ -554,6 +549,13 @@ fn same_direction(a: Point2, x: Point2, b: Point2) -> bool {
 }
 
 /// Does segment p–d properly cross segment a–b (interiors meet in one point)?
+/// Whether `z` lies exactly on the line of the input segment `o` and strictly inside the
+/// circle with diameter `p–q` (a piece of `o`, possibly bent): the vertex a bent piece
+/// must pass through (exact orientation and dot-product signs).
+fn on_segment_near_piece(z: Point2, (o0, o1): (Point2, Point2), (p, q): (Point2, Point2)) -> bool {
+    orient(o0, o1, z) == 0 && dot_sign(z, p, q) == std::cmp::Ordering::Less
+}
+
 fn crosses(a: Point2, b: Point2, p: Point2, d: Point2) -> bool {
     orient(a, b, p) * orient(a, b, d) < 0 && orient(p, d, a) * orient(p, d, b) < 0
 }
