@@ -178,7 +178,13 @@ impl PairResults {
 
     /// Record the proper crossing of `i < j`, rounded now or with the next ones.
     #[inline]
-    fn push_crossing(&mut self, segments: &[Segment2], table: &[Prepared], i: usize, j: usize) {
+    pub(crate) fn push_crossing(
+        &mut self,
+        segments: &[Segment2],
+        table: &[Prepared],
+        i: usize,
+        j: usize,
+    ) {
         self.pending[self.pending_len] = (i, j);
         self.pending_len += 1;
         if self.pending_len == LANES {

@@ -315,6 +315,129 @@ impl AxisSweep {
     }
 }
 
+/// Candidates tested together by [`SweepLanes::scan_from`].
+const BLOCK: usize = 8;
+
+/// The segments of an [`AxisSweep`] in its sorted order as a structure of arrays (each
+/// padded with [`BLOCK`] zeros), for [`SweepLanes::scan_from`]: a unit's candidates are
+/// the items right after it, so a block of them is a run of each array, which the
+/// compiler turns into vector loads and vector arithmetic (SSE2: two lanes).
+pub(crate) struct SweepLanes<'a> {
+    sweep: &'a AxisSweep,
+    /// First endpoint, and direction `b - a` (rounded: the same `f64` operations as
+    /// [`crate::kernel::orient_static`]'s first differences).
+    ax: Vec<f64>,
+    ay: Vec<f64>,
+    dx: Vec<f64>,
+    dy: Vec<f64>,
+    /// Second endpoint.
+    bx: Vec<f64>,
+    by: Vec<f64>,
+    /// The box along the other axis.
+    olo: Vec<f64>,
+    ohi: Vec<f64>,
+}
+
+impl<'a> SweepLanes<'a> {
+    fn new(sweep: &'a AxisSweep, segments: &[Segment2]) -> SweepLanes<'a> {
+        let col = |f: &dyn Fn(&SweepItem) -> f64| -> Vec<f64> {
+            let mut v: Vec<f64> = sweep.items.iter().map(f).collect();
+            v.resize(v.len() + BLOCK, 0.0);
+            v
+        };
+        let seg = |it: &SweepItem| segments[it.id as usize];
+        SweepLanes {
+            sweep,
+            ax: col(&|it| seg(it).a.x),
+            ay: col(&|it| seg(it).a.y),
+            dx: col(&|it| seg(it).b.x - seg(it).a.x),
+            dy: col(&|it| seg(it).b.y - seg(it).a.y),
+            bx: col(&|it| seg(it).b.x),
+            by: col(&|it| seg(it).b.y),
+            olo: col(&|it| it.other[0]),
+            ohi: col(&|it| it.other[1]),
+        }
+    }
+
+    /// Test the pairs of unit `k` ([`AxisSweep::scan_from`]'s pairs) into `found`:
+    /// [`BLOCK`] candidates at a time, four orientations each against the static bound
+    /// in one branch-free loop (most pairs of long segments cross: the early exit of
+    /// [`crate::kernel::quick_crossing_static`] after two orientations mostly does not
+    /// happen and its branches mispredict), then the proper crossings recorded and the
+    /// few undecided pairs given to [`PairResults::test`].
+    ///
+    /// Exact: an orientation counts as decided only when its absolute value is above
+    /// `bound`, a [`crate::kernel::static_orient_bound`] for every coordinate of the
+    /// input, which certifies its sign (the same evaluation as
+    /// [`crate::kernel::orient_static`]). A pair is apart when both ends of one segment
+    /// are certified strictly on one side of the other's line, a proper crossing when
+    /// each segment's ends are certified strictly on both sides of the other's line
+    /// (then the lines are not parallel and meet in a point interior to both); anything
+    /// else goes to the exact test.
+    #[inline]
+    pub(crate) fn scan_from(
+        &self,
+        k: usize,
+        segments: &[Segment2],
+        table: &[Prepared],
+        bound: f64,
+        found: &mut PairResults,
+    ) {
+        let sweep = self.sweep;
+        let end = k + 1 + sweep.visits_from[k] as usize;
+        let (aax, aay, adx, ady) = (self.ax[k], self.ay[k], self.dx[k], self.dy[k]);
+        let (abx, aby) = (self.bx[k], self.by[k]);
+        let (aolo, aohi) = (self.olo[k], self.ohi[k]);
+        let a_id = sweep.items[k].id as usize;
+        let mut p = k + 1;
+        while p < end {
+            let m = (end - p).min(BLOCK);
+            let run = |v: &[f64]| -> [f64; BLOCK] { v[p..p + BLOCK].try_into().unwrap() };
+            let (bax, bay, bdx, bdy) = (run(&self.ax), run(&self.ay), run(&self.dx), run(&self.dy));
+            let (bbx, bby, bolo, bohi) =
+                (run(&self.bx), run(&self.by), run(&self.olo), run(&self.ohi));
+            // Bit l: lane l is a certified proper crossing / is undecided.
+            let (mut cross, mut open) = (0u32, 0u32);
+            for l in 0..BLOCK {
+                // orient(a.a, a.b, b.a), orient(a.a, a.b, b.b), orient(b.a, b.b, a.a),
+                // orient(b.a, b.b, a.b), each (q - p) × (r - p) as orient_static has it.
+                let o1 = adx * (bay[l] - aay) - ady * (bax[l] - aax);
+                let o2 = adx * (bby[l] - aay) - ady * (bbx[l] - aax);
+                let o3 = bdx[l] * (aay - bay[l]) - bdy[l] * (aax - bax[l]);
+                let o4 = bdx[l] * (aby - bay[l]) - bdy[l] * (abx - bax[l]);
+                // Both certified on one side: the smaller above the bound, or the larger
+                // below its negative; certified on both sides: the smaller below the
+                // negative bound and the larger above it. (Plain selects: min/max
+                // instructions.)
+                let (lo12, hi12) = if o1 < o2 { (o1, o2) } else { (o2, o1) };
+                let (lo34, hi34) = if o3 < o4 { (o3, o4) } else { (o4, o3) };
+                let apart = (lo12 > bound) | (hi12 < -bound) | (lo34 > bound) | (hi34 < -bound);
+                let crossing = (lo12 < -bound) & (hi12 > bound) & (lo34 < -bound) & (hi34 > bound);
+                // The boxes also overlap along the other axis.
+                let live = (bolo[l] <= aohi) & (aolo <= bohi[l]);
+                cross |= u32::from(live & crossing) << l;
+                open |= u32::from(live & !crossing & !apart) << l;
+            }
+            // Only the lanes in range.
+            let valid = (1u32 << m) - 1;
+            let (mut cross, mut open) = (cross & valid, open & valid);
+            while cross != 0 {
+                let l = cross.trailing_zeros() as usize;
+                cross &= cross - 1;
+                let b_id = sweep.items[p + l].id as usize;
+                found.push_crossing(segments, table, a_id.min(b_id), a_id.max(b_id));
+            }
+            while open != 0 {
+                let l = open.trailing_zeros() as usize;
+                open &= open - 1;
+                let b_id = sweep.items[p + l].id as usize;
+                found.test(segments, table, a_id.min(b_id), a_id.max(b_id), bound);
+            }
+            p += m;
+        }
+    }
+}
+
 /// The candidate pairs of the pairwise method: from the grid, or from a sort and sweep
 /// along one axis when that looks at fewer pairs (long segments).
 pub(crate) struct Pairs {
@@ -387,6 +510,12 @@ impl Pairs {
             Some(s) => s.visits,
             None => self.grid.candidates(),
         }
+    }
+
+    /// With the axis sweep, its segments laid out for the batched scan
+    /// ([`SweepLanes::scan_from`]).
+    pub(crate) fn sweep_lanes(&self, segments: &[Segment2]) -> Option<SweepLanes<'_>> {
+        self.sweep.as_ref().map(|s| SweepLanes::new(s, segments))
     }
 
     /// The pairs unit `k` looks at.
@@ -553,8 +682,12 @@ pub(crate) fn intersections_on(segments: &[Segment2], pairs: &Pairs) -> Intersec
     // The per-segment part of rounding crossings, once per segment (n) rather than once
     // per crossing (up to n²/2).
     let table = Prepared::table(segments);
+    let lanes = pairs.sweep_lanes(segments);
     let scan = |k: usize, found: &mut PairResults| {
-        pairs.scan_from(k, |i, j| found.test(segments, &table, i, j, bound));
+        match &lanes {
+            Some(lanes) => lanes.scan_from(k, segments, &table, bound, found),
+            None => pairs.scan_from(k, |i, j| found.test(segments, &table, i, j, bound)),
+        }
         found.flush(segments, &table);
     };
     let candidates = pairs.candidates();
@@ -668,6 +801,82 @@ mod tests {
                 proptest::prop_assert_eq!(swept(&segs, axis), want.clone());
             }
         }
+    }
+
+    /// The pairwise answer with the axis sweep along `axis` forced (its batched scan).
+    fn swept_answer(segs: &[Segment2], axis: usize) -> Intersections {
+        let grid = Grid::new(segs);
+        let sweep = AxisSweep::new(&grid.boxes, axis);
+        intersections_on(
+            segs,
+            &Pairs {
+                grid,
+                sweep: Some(sweep),
+            },
+        )
+    }
+
+    proptest::proptest! {
+        /// The batched scan of the axis sweep gives the brute-force answer on degenerate
+        /// input: integer grids (shared endpoints, many segments through a point,
+        /// collinear overlaps, duplicates, zero-length segments, -0.0), the same divided
+        /// by 3, huge (the static bound is infinite: nothing is decided by it), tiny, and
+        /// offset by 2^22 (orientations near the bound).
+        #[test]
+        fn the_batched_axis_sweep_scan_is_the_brute_force_answer(
+            v in proptest::collection::vec((-3i32..4, -3i32..4, -3i32..4, -3i32..4), 0..40),
+            how in 0u8..5,
+        ) {
+            let f = |k: i32| match how {
+                0 if k == 0 => -0.0,
+                0 => k as f64,
+                1 => k as f64 / 3.0,
+                2 => k as f64 * 1e300,
+                3 => k as f64 * 1e-300,
+                _ => k as f64 + 4_194_304.0,
+            };
+            let segs: Vec<Segment2> =
+                v.iter().map(|&(a, b, c, d)| seg((f(a), f(b)), (f(c), f(d)))).collect();
+            let want = super::super::brute_force_intersections(&segs).unwrap();
+            for axis in 0..2 {
+                proptest::prop_assert_eq!(swept_answer(&segs, axis), want.clone());
+            }
+        }
+    }
+
+    #[test]
+    fn the_batched_scan_on_long_segments_is_the_brute_force_answer() {
+        let mut state = 11u64;
+        let mut unit = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        // Long random segments (most pairs cross), some through shared points, some
+        // vertical and horizontal, some with boxes apart along the other axis.
+        let mut segs: Vec<Segment2> = (0..300)
+            .map(|_| seg((unit(), unit()), (unit(), unit())))
+            .collect();
+        segs.extend((0..20).map(|k| seg((0.5, 0.5), (k as f64 / 20.0, 1.0))));
+        segs.extend((0..10).map(|k| seg((k as f64 / 10.0, 0.0), (k as f64 / 10.0, 1.0))));
+        segs.extend((0..10).map(|k| seg((0.0, k as f64 / 10.0), (1.0, k as f64 / 10.0))));
+        segs.push(seg((0.1, 0.2), (0.3, 0.4)));
+        segs.push(seg((0.1, 0.2), (0.3, 0.4)));
+        let want = super::super::brute_force_intersections(&segs).unwrap();
+        for axis in 0..2 {
+            assert_eq!(swept_answer(&segs, axis), want, "axis {axis}");
+        }
+        // More than the parallel threshold, so the scan runs in parallel parts too.
+        let long: Vec<Segment2> = (0..1000)
+            .map(|_| seg((0.0, unit()), (1.0, unit())))
+            .collect();
+        let pairs = Pairs::new(Grid::new(&long));
+        assert!(pairs.is_sweep() && pairs.candidates() >= PARALLEL_SCAN_FROM);
+        assert_eq!(
+            intersections_on(&long, &pairs),
+            super::super::brute_force_intersections(&long).unwrap()
+        );
     }
 
     #[test]
