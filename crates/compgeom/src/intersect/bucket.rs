@@ -318,17 +318,34 @@ fn spread_and_sort<T: Copy>(
         to[at[f] as usize] = *t;
         at[f] += 1;
     }
+    // The fine buckets are in order; within them, only large ones are sorted on their
+    // own, then one insertion sort over the whole range finishes the small ones: the
+    // lengths of the fine buckets (mostly 0, 1 or 2, at random) are no longer branched
+    // on, which mispredicted about once per record. At most `SMALL` records per
+    // unsorted fine bucket bound the insertion sort's work by `SMALL` per record.
     for w in local.windows(2) {
-        let fine_bucket = &mut to[w[0] as usize..w[1] as usize];
-        match fine_bucket.len() {
-            0 | 1 => {}
-            // Most multi-item buckets hold two: one comparison.
-            2 => {
-                if cmp(&fine_bucket[1], &fine_bucket[0]) == Ordering::Less {
-                    fine_bucket.swap(0, 1);
-                }
+        if w[1] - w[0] > SMALL as u32 {
+            to[w[0] as usize..w[1] as usize].sort_unstable_by(&cmp);
+        }
+    }
+    insertion_sort(to, &cmp);
+}
+
+/// Fine buckets up to this many records are left to [`insertion_sort`].
+const SMALL: usize = 16;
+
+/// Sort `v` by `cmp` by insertion: O(len + inversions), for nearly sorted `v`.
+fn insertion_sort<T: Copy>(v: &mut [T], cmp: impl Fn(&T, &T) -> Ordering) {
+    for i in 1..v.len() {
+        let x = v[i];
+        if cmp(&x, &v[i - 1]) == Ordering::Less {
+            let mut j = i - 1;
+            v[i] = v[j];
+            while j > 0 && cmp(&x, &v[j - 1]) == Ordering::Less {
+                v[j] = v[j - 1];
+                j -= 1;
             }
-            _ => fine_bucket.sort_unstable_by(&cmp),
+            v[j] = x;
         }
     }
 }
