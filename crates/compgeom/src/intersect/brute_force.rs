@@ -367,7 +367,15 @@ fn assemble_marked(
     overlapping: Vec<(usize, usize)>,
     segments: &[Segment2],
 ) -> Intersections {
-    let sorted = bucket::sort_parts_then(parts, record_key, Record::cmp, |bucket| {
+    // Every point lies on an input segment, so within the segments' range of y (the
+    // nearest f64 to a crossing too): no pass over the records to find the keys' range.
+    let (lo, hi) = segments
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
+            (lo.min(s.a.y).min(s.b.y), hi.max(s.a.y).max(s.b.y))
+        });
+    let range = (lo <= hi).then_some((-hi, -lo));
+    let sorted = bucket::sort_parts_then(parts, record_key, Record::cmp, range, |bucket| {
         mark_groups(segments, bucket)
     });
     let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();

@@ -122,7 +122,7 @@ pub(super) fn sort_parts<T: Copy + Send + Sync>(
         sort_by_key_then(&mut all, key, cmp);
         return all;
     }
-    sort_parts_then(parts, key, cmp, |_| 0).items
+    sort_parts_then(parts, key, cmp, None, |_| 0).items
 }
 
 /// What [`sort_parts_then`] returns.
@@ -139,6 +139,10 @@ pub(super) struct Buckets<T> {
 /// bucket holds a contiguous range of the sorted items, and items with equal keys are in
 /// the same bucket): a pass over the sorted items fused into the sort.
 ///
+/// `range`: the range of the keys when the caller knows it (else a pass over the items
+/// finds it). Only the spread over the buckets depends on it, not the order: keys
+/// outside it go to the first or last bucket.
+///
 /// Every pass runs on the rayon pool: each part counts its records per coarse bucket,
 /// then scatters them straight into its own sub-range of each coarse bucket of the
 /// output (the output is cut into one slice per (bucket, part), so the parts write
@@ -149,6 +153,7 @@ pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
     parts: Vec<Vec<T>>,
     key: impl Fn(&T) -> f64 + Sync,
     cmp: impl Fn(&T, &T) -> Ordering + Copy + Sync,
+    range: Option<(f64, f64)>,
     then: impl Fn(&mut [T]) -> usize + Sync,
 ) -> Buckets<T> {
     let n: usize = parts.iter().map(Vec::len).sum();
@@ -170,7 +175,7 @@ pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
             tallies: vec![tally],
         };
     }
-    let range = |p: &Vec<T>| {
+    let part_range = |p: &Vec<T>| {
         p.iter()
             .map(&key)
             .filter(|v| v.is_finite())
@@ -178,10 +183,12 @@ pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
                 (a.min(v), b.max(v))
             })
     };
-    let (lo, hi) = parts.par_iter().map(range).reduce(
-        || (f64::INFINITY, f64::NEG_INFINITY),
-        |a, b| (a.0.min(b.0), a.1.max(b.1)),
-    );
+    let (lo, hi) = range.unwrap_or_else(|| {
+        parts.par_iter().map(part_range).reduce(
+            || (f64::INFINITY, f64::NEG_INFINITY),
+            |a, b| (a.0.min(b.0), a.1.max(b.1)),
+        )
+    });
     let scale = if hi > lo { n as f64 / (hi - lo) } else { 0.0 };
     // Monotone in the key (`as usize` saturates, NaN from an infinite scale goes to 0).
     let fine = |t: &T| (((key(t) - lo) * scale) as usize).min(n - 1);
