@@ -196,6 +196,13 @@ impl PairResults {
         }
     }
 
+    /// Record the proper crossing of `i < j` already rounded to `p`
+    /// ([`super::round::round_crossings_sharing`]).
+    #[inline]
+    pub(crate) fn push_rounded(&mut self, p: Point2, i: usize, j: usize) {
+        self.records.push(Record::new(p, i, j, true));
+    }
+
     /// Round and record the crossings still pending: due after the last
     /// [`PairResults::test`], before the records are read.
     pub(crate) fn flush(&mut self, segments: &[Segment2], table: &[Prepared]) {

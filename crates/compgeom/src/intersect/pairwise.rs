@@ -23,7 +23,7 @@
 //! and an estimate of K ([`prefer_pairwise`]).
 
 use super::brute_force::{check_count, PairResults};
-use super::round::Prepared;
+use super::round::{round_crossings_sharing, Prepared};
 use super::sweep::check_finite;
 use super::Intersections;
 use crate::kernel::{segment_intersection, static_orient_bound, Segment2, SegmentIntersection};
@@ -389,6 +389,8 @@ impl<'a> SweepLanes<'a> {
         let (abx, aby) = (self.bx[k], self.by[k]);
         let (aolo, aohi) = (self.olo[k], self.ohi[k]);
         let a_id = sweep.items[k].id as usize;
+        // Crossings of `a` not yet rounded: rounded eight at a time, `a` shared.
+        let (mut mine, mut len) = ([0usize; BLOCK], 0);
         let mut p = k + 1;
         while p < end {
             let m = (end - p).min(BLOCK);
@@ -424,8 +426,15 @@ impl<'a> SweepLanes<'a> {
             while cross != 0 {
                 let l = cross.trailing_zeros() as usize;
                 cross &= cross - 1;
-                let b_id = sweep.items[p + l].id as usize;
-                found.push_crossing(segments, table, a_id.min(b_id), a_id.max(b_id));
+                mine[len] = sweep.items[p + l].id as usize;
+                len += 1;
+                if len == BLOCK {
+                    let points = round_crossings_sharing(segments, table, a_id, &mine);
+                    for (&q, &b_id) in points.iter().zip(&mine) {
+                        found.push_rounded(q, a_id.min(b_id), a_id.max(b_id));
+                    }
+                    len = 0;
+                }
             }
             while open != 0 {
                 let l = open.trailing_zeros() as usize;
@@ -434,6 +443,9 @@ impl<'a> SweepLanes<'a> {
                 found.test(segments, table, a_id.min(b_id), a_id.max(b_id), bound);
             }
             p += m;
+        }
+        for &b_id in &mine[..len] {
+            found.push_crossing(segments, table, a_id.min(b_id), a_id.max(b_id));
         }
     }
 }

@@ -577,6 +577,50 @@ fn round_crossings_of_with<P: Products, const L: usize>(
     })
 }
 
+/// [`round_crossings_of`] of the crossings of one segment `a` with `L` others, `bs[k]`
+/// in lane `k` (the pair scan of one segment against its candidates): `a`'s entry is
+/// read once for every lane. The nearest `f64` to a crossing does not depend on the
+/// order of its two segments, nor does the certificate's analysis (module docs), so
+/// the result is that of [`round_crossings_of`] for either order.
+#[inline]
+pub(crate) fn round_crossings_sharing<const L: usize>(
+    segments: &[Segment2],
+    table: &[Prepared],
+    a: usize,
+    bs: &[usize; L],
+) -> [Point2; L] {
+    #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+    if let Some(p) = fma::round_crossings_sharing(segments, table, a, bs) {
+        return p;
+    }
+    round_crossings_sharing_with::<Native, L>(segments, table, a, bs)
+}
+
+/// [`round_crossings_sharing`] with the products of `P`.
+#[inline(always)]
+fn round_crossings_sharing_with<P: Products, const L: usize>(
+    segments: &[Segment2],
+    table: &[Prepared],
+    a: usize,
+    bs: &[usize; L],
+) -> [Point2; L] {
+    let e = &table[a];
+    let s = Prepared::sides([e; L]);
+    let t = Prepared::sides(std::array::from_fn(|k| &table[bs[k]]));
+    let (x, y, ok) = certified_sides::<P, L>(&s, &t);
+    std::array::from_fn(|k| {
+        if ok[k] {
+            Point2::new(x[k], y[k])
+        } else {
+            Crossing {
+                s: segments[a],
+                t: segments[bs[k]],
+            }
+            .approx()
+        }
+    })
+}
+
 /// The fast path compiled a second time, for x86-64 processors with FMA (nearly all
 /// since 2013) in a build for the baseline target, which has none: the same generic
 /// code with [`Fused`] products, in functions compiled with the target features and
@@ -641,6 +685,27 @@ mod fma {
         }
         // SAFETY: the processor has the features `fused` is compiled for.
         available().then(|| unsafe { fused(segments, table, pairs) })
+    }
+
+    /// [`super::round_crossings_sharing`] with fused products, where [`available`].
+    #[inline]
+    pub(super) fn round_crossings_sharing<const L: usize>(
+        segments: &[Segment2],
+        table: &[Prepared],
+        a: usize,
+        bs: &[usize; L],
+    ) -> Option<[Point2; L]> {
+        #[target_feature(enable = "fma,avx")]
+        unsafe fn fused<const L: usize>(
+            segments: &[Segment2],
+            table: &[Prepared],
+            a: usize,
+            bs: &[usize; L],
+        ) -> [Point2; L] {
+            round_crossings_sharing_with::<Fused, L>(segments, table, a, bs)
+        }
+        // SAFETY: the processor has the features `fused` is compiled for.
+        available().then(|| unsafe { fused(segments, table, a, bs) })
     }
 
     /// [`super::certified`] with fused products, where [`available`] (for the tests'
@@ -1000,6 +1065,25 @@ mod tests {
             let mut r = lcg(seed ^ 0x5eed);
             for k in (1..pairs.len()).rev() {
                 pairs.swap(k, (r() % (k as u64 + 1)) as usize);
+            }
+            // Eight crossings of one segment at a time, that segment first (as the
+            // batched axis-sweep scan rounds them), so in either order of the pair.
+            for a in 0..segs.len() {
+                let mine: Vec<(usize, (u64, u64))> = pairs
+                    .iter()
+                    .filter_map(|&((i, j), want)| {
+                        (i == a).then_some((j, want)).or((j == a).then_some((i, want)))
+                    })
+                    .collect();
+                for chunk in mine.chunks_exact(8) {
+                    let bs: [usize; 8] = std::array::from_fn(|k| chunk[k].0);
+                    let got = round_crossings_sharing(&segs, &table, a, &bs);
+                    let dekker = round_crossings_sharing_with::<Dekker, 8>(&segs, &table, a, &bs);
+                    for k in 0..8 {
+                        proptest::prop_assert_eq!(bits(got[k]), chunk[k].1, "{} {}", a, bs[k]);
+                        proptest::prop_assert_eq!(bits(dekker[k]), chunk[k].1, "{} {}", a, bs[k]);
+                    }
+                }
             }
             for chunk in pairs.chunks_exact(8) {
                 let lanes: [(usize, usize); 8] = std::array::from_fn(|k| chunk[k].0);
