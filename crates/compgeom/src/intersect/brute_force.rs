@@ -196,11 +196,18 @@ impl PairResults {
         }
     }
 
-    /// Record the proper crossing of `i < j` already rounded to `p`
-    /// ([`super::round::round_crossings_sharing`]).
+    /// Record the proper crossings of `a` with `bs[k]`, already rounded to `points[k]`
+    /// ([`super::round::round_crossings_sharing`]), in one append.
     #[inline]
-    pub(crate) fn push_rounded(&mut self, p: Point2, i: usize, j: usize) {
-        self.records.push(Record::new(p, i, j, true));
+    pub(crate) fn push_rounded<const L: usize>(
+        &mut self,
+        points: &[Point2; L],
+        a: usize,
+        bs: &[usize; L],
+    ) {
+        let records: [Record; L] =
+            std::array::from_fn(|k| Record::new(points[k], a.min(bs[k]), a.max(bs[k]), true));
+        self.records.extend_from_slice(&records);
     }
 
     /// Round and record the crossings still pending: due after the last

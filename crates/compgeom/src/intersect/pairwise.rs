@@ -430,9 +430,7 @@ impl<'a> SweepLanes<'a> {
                 len += 1;
                 if len == BLOCK {
                     let points = round_crossings_sharing(segments, table, a_id, &mine);
-                    for (&q, &b_id) in points.iter().zip(&mine) {
-                        found.push_rounded(q, a_id.min(b_id), a_id.max(b_id));
-                    }
+                    found.push_rounded(&points, a_id, &mine);
                     len = 0;
                 }
             }
@@ -694,13 +692,28 @@ pub(crate) fn intersections_on(segments: &[Segment2], pairs: &Pairs) -> Intersec
     // The per-segment part of rounding crossings, once per segment (n) rather than once
     // per crossing (up to n²/2).
     let table = Prepared::table(segments);
-    let lanes = pairs.sweep_lanes(segments);
+    // (Two instantiations of the scan: the grid's keeps its own code.)
+    match pairs.sweep_lanes(segments) {
+        Some(lanes) => scan_with(segments, pairs, &table, |k, found| {
+            lanes.scan_from(k, segments, &table, bound, found)
+        }),
+        None => scan_with(segments, pairs, &table, |k, found| {
+            pairs.scan_from(k, |i, j| found.test(segments, &table, i, j, bound))
+        }),
+    }
+}
+
+/// [`intersections_on`] with `test(k, found)` testing the pairs of unit `k`.
+#[inline]
+fn scan_with(
+    segments: &[Segment2],
+    pairs: &Pairs,
+    table: &[Prepared],
+    test: impl Fn(usize, &mut PairResults) + Sync,
+) -> Intersections {
     let scan = |k: usize, found: &mut PairResults| {
-        match &lanes {
-            Some(lanes) => lanes.scan_from(k, segments, &table, bound, found),
-            None => pairs.scan_from(k, |i, j| found.test(segments, &table, i, j, bound)),
-        }
-        found.flush(segments, &table);
+        test(k, found);
+        found.flush(segments, table);
     };
     let candidates = pairs.candidates();
     let found = if candidates < PARALLEL_SCAN_FROM {
