@@ -165,6 +165,23 @@
 //! ~10.4 ms. 512 coarse buckets instead of 2048 halve the scatter phase (1.4–1.9 →
 //! 0.8–0.9 ms on one thread); in a steady state the allocator reuses the buffers
 //! (1,250 minor faults per call), so fresh memory is not the main cost.
+//!
+//! Session 11 (branch s11-longfind), long random 1e3, one thread, callgrind
+//! (`examples/intersect_profile find 1000`, 241 717 crossings): 187M → 152M instructions
+//! per call. The axis sweep's pair scan runs on its segments laid out as arrays in sweep
+//! order, eight candidates at a time, four orientations against the static bound in one
+//! vectorized loop with the verdicts as bit masks (187M → 164M; simulated mispredicts of
+//! the scan ~123k → ~74k per call); one insertion sort per coarse bucket instead of a
+//! branch on every fine bucket's length (sort mispredicts ~193k → ~100k, +1.3M
+//! instructions); the sort's key range from the input's y range instead of a pass over
+//! the records (−7M); the crossings of one segment rounded eight at a time with that
+//! segment's entry shared by the lanes (−4.4M); the grid's and the sweep's scans as
+//! separate instantiations. Wall, load 5.8 (three other helpers building), example
+//! binaries alternating, best of 20 per run: one thread 15.9–30.8 → 12.5–18.6 ms
+//! (paired ratios 0.56–0.82), two threads 21.3–24.2 → 15.8–18.5 ms. This bench at the
+//! same load, three runs: find vs geo collect() 0.94×, 1.20×, 0.95× (not a quiet
+//! figure). Short 1e5 (grid path, unchanged code): +4M instructions per call (~2%,
+//! inlining differences in `Grid::new` and `Prepared::of`).
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
