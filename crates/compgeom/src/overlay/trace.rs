@@ -42,7 +42,6 @@ use crate::dcel::{compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounde
 use crate::kernel::arith::ordered_key as okey;
 use crate::kernel::{orient2d, ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2};
 use crate::Result;
-use std::cell::Cell;
 use std::cmp::Ordering;
 
 const NONE: u32 = u32::MAX;
@@ -329,7 +328,7 @@ fn traced(
     // sweep: its exterior is joined to it in the regions below.
     let sweep_around = || -> Vec<u32> {
         let points = &flat.vertices.exact();
-        let approx: Vec<Rounded> = points.iter().map(|p| Rounded::of(p, p.approx())).collect();
+        let approx: Vec<Rounded> = (0..nv).map(|v| flat.vertices.rounded(v)).collect();
         let origins: Vec<u32> = (0..m as u32).map(origin).collect();
         let carriers: Vec<Carrier> = (0..m as u32).map(carrier).collect();
         let starts: Vec<usize> = out_start.iter().map(|&s| s as usize).collect();
@@ -690,7 +689,8 @@ fn faces_left_by_strips(
 ) -> Option<Vec<u32>> {
     let points = flat.vertices.exact();
     let points: &[ExactPoint] = &points;
-    let input_y = |v: u32| points[v as usize].approx().y;
+    // (Rounded points are kept in the arrangement: no cache over all vertices.)
+    let rounded = |v: u32| flat.vertices.rounded(v as usize);
     let ne = flat.edge_count();
     let (mut ranges, mut xr) = (Vec::with_capacity(ne), Vec::with_capacity(ne));
     for i in 0..ne {
@@ -721,16 +721,6 @@ fn faces_left_by_strips(
     let strips = strips.fill(&ranges, by_x.iter().map(|&(_, i)| i));
     drop(by_x);
     let reach = strips.reach(&xr);
-    let cache: Vec<Cell<Option<Rounded>>> = vec![Cell::new(None); points.len()];
-    let rounded = |v: u32| {
-        let c = &cache[v as usize];
-        c.get().unwrap_or_else(|| {
-            let p = &points[v as usize];
-            let r = Rounded::of(p, p.approx());
-            c.set(Some(r));
-            r
-        })
-    };
     let cmp_y = |a: u32, b: u32| {
         compare_y_filtered(
             &points[a as usize],
@@ -771,7 +761,7 @@ fn faces_left_by_strips(
         queries
             .iter()
             .map(|&q| {
-                let (x, y) = (points[q as usize].approx().x, input_y(q));
+                let Point2 { x, y } = flat.vertices.approx(q as usize);
                 let (from, to) = strips.range(y);
                 let items = &strips.list[from..to];
                 // Entries by decreasing key of x_min: those with a larger key than q.x's
