@@ -595,22 +595,53 @@ fn traced(
 /// `y = q.y + δ` upwards (`a.y ≤ q.y < b.y`) with that point on its left, −1 when it
 /// crosses downwards (`b.y ≤ q.y < a.y`) with the point on its right; the side is
 /// `orient2d(a, b, q)`, and when q is on the edge's line the ε term decides (left for an
-/// upward edge, right for a downward one). Only the edges of q's horizontal strip are
+/// upward edge, right for a downward one). With few queries (at most
+/// [`SORTED_QUERIES`]) each edge finds the queries with `y_min ≤ q.y < y_max` among
+/// the queries sorted by y; with more, only the edges of q's horizontal strip are
 /// looked at: an edge is listed in every strip its y range meets, the strip of a y value
 /// is a monotone function of it (rounding is monotone), so the edges whose closed y
 /// range holds q.y are all in q's strip.
 fn windings_left_of(segs: &[Segment2], na: usize, queries: &[Point2]) -> Option<Vec<(i32, i32)>> {
-    windings_left_of_by(segs, na, queries, false)
+    windings_left_of_by(segs, na, queries, Windings::Auto)
 }
 
-/// [`windings_left_of`]; with `force_strips` the strips are used however few the
-/// queries (tests compare both ways).
+/// How [`windings_left_of_by`] finds the segments that count at each query.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Windings {
+    /// By the number of queries (below).
+    Auto,
+    /// Every segment for every query.
+    Direct,
+    /// Each segment looks up the queries in its y range among the queries sorted by y.
+    Sorted,
+    /// The segments of each query's horizontal strip.
+    Strips,
+}
+
+/// At most this many queries are looked up per segment ([`Windings::Sorted`]): two
+/// binary searches over a few heights per segment cost less than listing the segments
+/// by strips, and only the segments that count are tested. (Above, the strips' lists
+/// pay: on the squares' 48 queries they do.)
+const SORTED_QUERIES: usize = 32;
+
+/// [`windings_left_of`] the way `how` says (tests compare the ways).
 fn windings_left_of_by(
     segs: &[Segment2],
     na: usize,
     queries: &[Point2],
-    force_strips: bool,
+    how: Windings,
 ) -> Option<Vec<(i32, i32)>> {
+    // The winding change of segment s at q when its y range [y_min, y_max) holds q.y
+    // (the only segments that cross the line y = q.y + δ).
+    fn crossing(s: Segment2, q: Point2) -> i32 {
+        if s.a.y <= q.y && s.b.y > q.y {
+            i32::from(orient2d(s.a, s.b, q) != Orientation::Clockwise)
+        } else if s.b.y <= q.y && s.a.y > q.y {
+            -i32::from(orient2d(s.a, s.b, q) != Orientation::CounterClockwise)
+        } else {
+            0
+        }
+    }
     // The winding numbers at q from the segments `items` (all that can cross q's line).
     fn winding(
         segs: &[Segment2],
@@ -620,14 +651,7 @@ fn windings_left_of_by(
     ) -> (i32, i32) {
         let (mut wa, mut wb) = (0, 0);
         for i in items {
-            let s = segs[i];
-            let w = if s.a.y <= q.y && s.b.y > q.y {
-                i32::from(orient2d(s.a, s.b, q) != Orientation::Clockwise)
-            } else if s.b.y <= q.y && s.a.y > q.y {
-                -i32::from(orient2d(s.a, s.b, q) != Orientation::CounterClockwise)
-            } else {
-                0
-            };
+            let w = crossing(segs[i], q);
             if i < na {
                 wa += w;
             } else {
@@ -639,13 +663,51 @@ fn windings_left_of_by(
     let n = segs.len();
     // Few queries: every segment for each of them costs less than the strips (same
     // answers: the strips only leave out segments that cannot count).
-    if queries.len().saturating_mul(n) <= 4 * n + 4096 && !force_strips {
+    let how = match how {
+        Windings::Auto if queries.len().saturating_mul(n) <= 4 * n + 4096 => Windings::Direct,
+        Windings::Auto if queries.len() <= SORTED_QUERIES => Windings::Sorted,
+        Windings::Auto => Windings::Strips,
+        how => how,
+    };
+    if how == Windings::Direct {
         return Some(
             queries
                 .iter()
                 .map(|&q| winding(segs, na, q, 0..n))
                 .collect(),
         );
+    }
+    if how == Windings::Sorted {
+        let mut order: Vec<u32> = (0..queries.len() as u32).collect();
+        order.sort_unstable_by(|&i, &j| queries[i as usize].y.total_cmp(&queries[j as usize].y));
+        let ys: Vec<f64> = order.iter().map(|&k| queries[k as usize].y).collect();
+        let mut w = vec![(0, 0); queries.len()];
+        let (Some(&y_min), Some(&y_max)) = (ys.first(), ys.last()) else {
+            return Some(w);
+        };
+        for (i, &s) in segs.iter().enumerate() {
+            let (lo, hi) = (s.a.y.min(s.b.y), s.a.y.max(s.b.y));
+            // Only queries with lo <= q.y < hi can count (never for horizontal ones).
+            if hi <= y_min || lo > y_max {
+                continue;
+            }
+            // (total_cmp orders as < does here: only -0 and 0 differ, on which `<`
+            // agrees, so the predicate is monotone along `ys`.)
+            let from = ys.partition_point(|&y| y < lo);
+            for (&y, &k) in ys[from..].iter().zip(&order[from..]) {
+                if y >= hi {
+                    break;
+                }
+                let c = crossing(s, queries[k as usize]);
+                let slot = &mut w[k as usize];
+                if i < na {
+                    slot.0 += c;
+                } else {
+                    slot.1 += c;
+                }
+            }
+        }
+        return Some(w);
     }
     let ranges: Vec<(f64, f64)> = segs
         .iter()
@@ -1229,9 +1291,12 @@ mod tests {
                 .map(|&(a, b, c, d)| Segment2::new(Point2::new(f(a), f(b)), Point2::new(f(c), f(d))))
                 .collect();
             let queries: Vec<Point2> = queries.iter().map(|&(x, y)| Point2::new(f(x), f(y))).collect();
-            let direct = super::windings_left_of_by(&segs, na, &queries, false);
+            use super::Windings;
+            let direct = super::windings_left_of_by(&segs, na, &queries, Windings::Direct);
             prop_assert!(direct.is_some());
-            if let Some(strips) = super::windings_left_of_by(&segs, na, &queries, true) {
+            let sorted = super::windings_left_of_by(&segs, na, &queries, Windings::Sorted);
+            prop_assert_eq!(&direct, &sorted);
+            if let Some(strips) = super::windings_left_of_by(&segs, na, &queries, Windings::Strips) {
                 prop_assert_eq!(direct.unwrap(), strips);
             }
         }
