@@ -93,10 +93,7 @@ impl Vertices {
     /// correctly rounded: the exact tests filter on it).
     pub(crate) fn rounded_exact(points: Vec<ExactPoint>, approx: Vec<Point2>) -> Self {
         debug_assert_eq!(points.len(), approx.len());
-        debug_assert!(points
-            .iter()
-            .zip(&approx)
-            .all(|(p, a)| p.approx() == *a));
+        debug_assert!(points.iter().zip(&approx).all(|(p, a)| p.approx() == *a));
         Vertices::Exact { points, approx }
     }
 

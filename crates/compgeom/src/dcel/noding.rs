@@ -838,7 +838,11 @@ fn assemble(sub: &[Segment2], kept: Option<&[usize]>, found: Found) -> Flat {
     // (With its nearest f64 point: the contact's, rounded when it was found.)
     let point_of = |r: usize| {
         if r < 2 * m {
-            let q = if r % 2 == 0 { sub[r / 2].a } else { sub[r / 2].b };
+            let q = if r % 2 == 0 {
+                sub[r / 2].a
+            } else {
+                sub[r / 2].b
+            };
             (ExactPoint::Input(q), q)
         } else {
             let c = rep[r - 2 * m] as usize;

@@ -74,6 +74,34 @@ fn half(c: &Carrier) -> u8 {
     u8::from(!(b.y > a.y || (b.y == a.y && b.x > a.x)))
 }
 
+/// `list` (half-edges leaving one vertex) in counter-clockwise order from +x, as
+/// [`Carrier::angle_cmp`] orders their carriers: by half-plane, then by the exact turn
+/// from one direction to the other. Each entry's carrier and half-plane are made once
+/// (`keyed` is scratch space), not at each of the O(k log k) comparisons. Kept out of
+/// line: the caller's loop over all vertices rarely comes here.
+#[inline(never)]
+fn sort_by_angle(
+    list: &mut [u32],
+    keyed: &mut Vec<(u8, Carrier, u32)>,
+    carrier: impl Fn(u32) -> Carrier,
+) {
+    keyed.clear();
+    keyed.extend(list.iter().map(|&h| {
+        let c = carrier(h);
+        (half(&c), c, h)
+    }));
+    keyed.sort_unstable_by(|x, y| {
+        x.0.cmp(&y.0).then_with(|| match x.1.turn(&y.1) {
+            Orientation::CounterClockwise => Ordering::Less,
+            Orientation::Clockwise => Ordering::Greater,
+            Orientation::Collinear => Ordering::Equal,
+        })
+    });
+    for (slot, k) in list.iter_mut().zip(keyed.iter()) {
+        *slot = k.2;
+    }
+}
+
 fn find(p: &mut [u32], mut x: u32) -> u32 {
     while p[x as usize] != x {
         let up = p[p[x as usize] as usize];
@@ -206,6 +234,9 @@ fn traced(
     out_start.pop();
     let slice = |v: usize| (out_start[v] as usize, out_start[v + 1] as usize);
     let mut next = vec![0u32; m];
+    // One list's entries with their half-plane and carrier, each made once (the sort
+    // compares them O(k log k) times).
+    let mut keyed: Vec<(u8, Carrier, u32)> = Vec::new();
     for v in 0..nv {
         let (a, b) = slice(v);
         let list = &mut out[a..b];
@@ -225,7 +256,7 @@ fn traced(
                     list[j] = h;
                 }
             } else {
-                list.sort_unstable_by(|&x, &y| carrier(x).angle_cmp(&carrier(y)));
+                sort_by_angle(list, &mut keyed, carrier);
             }
         }
         // (The one before the first is the last; no division per half-edge.)
@@ -618,11 +649,11 @@ enum Windings {
     Strips,
 }
 
-/// At most this many queries are looked up per segment ([`Windings::Sorted`]): two
-/// binary searches over a few heights per segment cost less than listing the segments
-/// by strips, and only the segments that count are tested. (Above, the strips' lists
-/// pay: on the squares' 48 queries they do.)
-const SORTED_QUERIES: usize = 32;
+/// At most this many queries are looked up per segment ([`Windings::Sorted`]): a binary
+/// search over a few heights per segment costs less than listing the segments by
+/// strips, and only the segments that count are tested (GEOS-837 dissolve, 18 queries:
+/// -4.9% of the call; squares 1e4, 48 queries: -0.3%).
+const SORTED_QUERIES: usize = 64;
 
 /// [`windings_left_of`] the way `how` says (tests compare the ways).
 fn windings_left_of_by(
@@ -685,6 +716,9 @@ fn windings_left_of_by(
         let (Some(&y_min), Some(&y_max)) = (ys.first(), ys.last()) else {
             return Some(w);
         };
+        // The strips' scan budget: past it the nearest-edge search is cheaper (long
+        // segments across many queries' lines).
+        let mut budget = 4 * n + 4096;
         for (i, &s) in segs.iter().enumerate() {
             let (lo, hi) = (s.a.y.min(s.b.y), s.a.y.max(s.b.y));
             // Only queries with lo <= q.y < hi can count (never for horizontal ones).
@@ -698,6 +732,7 @@ fn windings_left_of_by(
                 if y >= hi {
                     break;
                 }
+                budget = budget.checked_sub(1)?;
                 let c = crossing(s, queries[k as usize]);
                 let slot = &mut w[k as usize];
                 if i < na {
@@ -1294,8 +1329,9 @@ mod tests {
             use super::Windings;
             let direct = super::windings_left_of_by(&segs, na, &queries, Windings::Direct);
             prop_assert!(direct.is_some());
-            let sorted = super::windings_left_of_by(&segs, na, &queries, Windings::Sorted);
-            prop_assert_eq!(&direct, &sorted);
+            if let Some(sorted) = super::windings_left_of_by(&segs, na, &queries, Windings::Sorted) {
+                prop_assert_eq!(direct.as_ref(), Some(&sorted));
+            }
             if let Some(strips) = super::windings_left_of_by(&segs, na, &queries, Windings::Strips) {
                 prop_assert_eq!(direct.unwrap(), strips);
             }
