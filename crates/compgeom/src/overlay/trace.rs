@@ -270,8 +270,10 @@ fn traced(
     }
     // Cycles labelled relative to their component (depth-first across twins).
     let mut cyc = vec![NONE; m];
-    let mut label: Vec<(i32, i32)> = Vec::new();
-    let mut comp_of: Vec<u32> = Vec::new();
+    // (A connected plane graph has E − V + 2 face cycles; more components add cycles.)
+    let cycles_hint = (ne + 2).saturating_sub(nv);
+    let mut label: Vec<(i32, i32)> = Vec::with_capacity(cycles_hint);
+    let mut comp_of: Vec<u32> = Vec::with_capacity(cycles_hint);
     let mut ncomp = 0u32;
     let mut stack: Vec<(u32, i32, i32)> = Vec::new();
     for h0 in 0..m as u32 {
@@ -305,6 +307,8 @@ fn traced(
     let ncycles = label.len();
     // Each component's smallest vertex (an input point, see the module docs).
     let mut low = vec![NONE; ncomp as usize];
+    // The smallest point so far beside each (no second look-up of the vertex).
+    let mut low_p = vec![Point2::new(f64::INFINITY, f64::INFINITY); ncomp as usize];
     for v in 0..nv {
         let (a, b) = slice(v);
         if a == b {
@@ -314,16 +318,13 @@ fn traced(
             continue;
         };
         let k = comp_of[cyc[out[a] as usize] as usize] as usize;
-        let better = low[k] == NONE || {
-            let Some(q) = flat.vertices.input(low[k] as usize) else {
-                unreachable!("only input points are kept")
-            };
-            p.x < q.x || (p.x == q.x && p.y < q.y)
-        };
-        if better {
+        let q = low_p[k];
+        if low[k] == NONE || p.x < q.x || (p.x == q.x && p.y < q.y) {
             low[k] = v as u32;
+            low_p[k] = p;
         }
     }
+    drop(low_p);
     // The exterior cycle of each component: left of the out-edge at its smallest vertex
     // just clockwise of direction −x (all out-edges point into (−90°, 90°]).
     let exterior: Vec<u32> = low
