@@ -514,7 +514,6 @@ impl Flat {
             }
         }
         let both: Vec<(ExactPoint, Point2)> = vertices.into_iter().zip(approx).collect();
-        let mut pieces = pieces;
         let both = renumber_vertices(&mut pieces.edges, &both);
         let (vertices, approx) = both.into_iter().unzip();
         Ok(pieces.finish_numbered(Vertices::rounded_exact(vertices, approx)))
