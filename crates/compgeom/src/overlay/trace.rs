@@ -19,10 +19,12 @@
 //!    going west from it, found among the edges of its horizontal strip, sorted by x (one
 //!    radix sort of 32-bit monotone keys for all strips) so that only a few are tested
 //!    ([`faces_left_by_strips`]); where the strips would be too large, winding counts
-//!    over strips of input segments (over all segments when there are few components)
-//!    or one sweep (`dcel/holes.rs`) are used instead. Components are resolved in lexicographic order
-//!    of their smallest vertex, so the face found is already labelled. All decisions are
-//!    exact; crossings are rounded only where a test looks at them.
+//!    over strips of input segments (over all segments when there are few components;
+//!    with at most 64 components, each segment looks up the smallest vertices in its y
+//!    range) or one sweep (`dcel/holes.rs`) are used instead. Components are resolved in
+//!    lexicographic order of their smallest vertex, so the face found is already
+//!    labelled. All decisions are exact; the rounded crossings are those the noding made
+//!    (kept in the arrangement), used only as filters and for the output.
 //! 4. *Rings*: an edge is on the result's boundary when the fill rule puts exactly one of
 //!    its sides in the result. The boundary is traced with the result on the left (after
 //!    boundary half-edge `h` comes the first boundary half-edge clockwise around its end),
@@ -775,8 +777,8 @@ fn windings_left_of_by(
 /// edges (which do not cross each other), the one further east is found by testing an
 /// end of one that lies in the other's y range and is not one of its ends: the higher
 /// lower end, or, where the lower ends are the same vertex, the lower upper end. All
-/// tests are exact (vertex heights by [`compare_y_filtered`], sides by [`side`]);
-/// crossings are rounded only where they are looked at.
+/// tests are exact (vertex heights by [`compare_y_filtered`], sides by [`side`]), filtered
+/// by the rounded points the arrangement keeps.
 ///
 /// Cost: O(V + E) for the strips plus the edges of each query's strip (the same budget
 /// as [`windings_left_of`]), instead of a sweep over every vertex.
