@@ -53,21 +53,32 @@ pub(crate) struct Flat {
 /// The vertices of a [`Flat`]: exact points, or, when every vertex is an input point (the
 /// axis-parallel path), plain points (16 bytes instead of 72 each: the largest array of
 /// the arrangement, written once and read again by every later pass).
+///
+/// Exact points come with their nearest `f64` points when their maker had them (the
+/// noding rounds every crossing it finds, with its fast fused rounding): `approx` is then
+/// one point per vertex, else empty and [`ExactPoint::approx`] is asked (about 1.8 k
+/// instructions per crossing) where a point is looked at.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Vertices {
-    Exact(Vec<ExactPoint>),
+    Exact {
+        points: Vec<ExactPoint>,
+        approx: Vec<Point2>,
+    },
     Input(Vec<Point2>),
 }
 
 impl Default for Vertices {
     fn default() -> Self {
-        Vertices::Exact(Vec::new())
+        Vec::<ExactPoint>::new().into()
     }
 }
 
 impl From<Vec<ExactPoint>> for Vertices {
-    fn from(v: Vec<ExactPoint>) -> Self {
-        Vertices::Exact(v)
+    fn from(points: Vec<ExactPoint>) -> Self {
+        Vertices::Exact {
+            points,
+            approx: Vec::new(),
+        }
     }
 }
 
@@ -78,11 +89,19 @@ impl From<Vec<Point2>> for Vertices {
 }
 
 impl Vertices {
+    /// Exact points with their nearest `f64` points (`approx[i]` is `points[i].approx()`,
+    /// correctly rounded: the exact tests filter on it).
+    pub(crate) fn rounded_exact(points: Vec<ExactPoint>, approx: Vec<Point2>) -> Self {
+        debug_assert_eq!(points.len(), approx.len());
+        debug_assert!(points.iter().zip(&approx).all(|(p, a)| p.approx() == *a));
+        Vertices::Exact { points, approx }
+    }
+
     /// The number of vertices.
     #[inline]
     pub(crate) fn len(&self) -> usize {
         match self {
-            Vertices::Exact(v) => v.len(),
+            Vertices::Exact { points, .. } => points.len(),
             Vertices::Input(v) => v.len(),
         }
     }
@@ -91,7 +110,7 @@ impl Vertices {
     #[inline]
     pub(crate) fn input(&self, i: usize) -> Option<Point2> {
         match self {
-            Vertices::Exact(v) => match v[i] {
+            Vertices::Exact { points, .. } => match points[i] {
                 ExactPoint::Input(p) => Some(p),
                 ExactPoint::Crossing(_) => None,
             },
@@ -103,7 +122,10 @@ impl Vertices {
     #[inline]
     pub(crate) fn approx(&self, i: usize) -> Point2 {
         match self {
-            Vertices::Exact(v) => v[i].approx(),
+            Vertices::Exact { points, approx } => match approx.get(i) {
+                Some(&a) => a,
+                None => points[i].approx(),
+            },
             Vertices::Input(v) => v[i],
         }
     }
@@ -112,7 +134,10 @@ impl Vertices {
     #[inline]
     pub(crate) fn rounded(&self, i: usize) -> Rounded {
         match self {
-            Vertices::Exact(v) => Rounded::of(&v[i], v[i].approx()),
+            Vertices::Exact { points, approx } => {
+                let p = &points[i];
+                Rounded::of(p, approx.get(i).copied().unwrap_or_else(|| p.approx()))
+            }
             Vertices::Input(v) => Rounded::of(&ExactPoint::Input(v[i]), v[i]),
         }
     }
@@ -122,7 +147,7 @@ impl Vertices {
     #[inline]
     pub(crate) fn compare_xy(&self, a: usize, ra: &Rounded, b: usize, rb: &Rounded) -> Ordering {
         match self {
-            Vertices::Exact(v) => compare_xy_filtered(&v[a], ra, &v[b], rb),
+            Vertices::Exact { points: v, .. } => compare_xy_filtered(&v[a], ra, &v[b], rb),
             Vertices::Input(v) => {
                 compare_xy_filtered(&ExactPoint::Input(v[a]), ra, &ExactPoint::Input(v[b]), rb)
             }
@@ -132,7 +157,7 @@ impl Vertices {
     /// All vertices as exact points, borrowed when they are stored so.
     pub(crate) fn exact(&self) -> std::borrow::Cow<'_, [ExactPoint]> {
         match self {
-            Vertices::Exact(v) => v.as_slice().into(),
+            Vertices::Exact { points, .. } => points.as_slice().into(),
             Vertices::Input(v) => v.iter().map(|&p| ExactPoint::Input(p)).collect(),
         }
     }
@@ -140,7 +165,7 @@ impl Vertices {
     /// All vertices as exact points.
     pub(crate) fn into_exact(self) -> Vec<ExactPoint> {
         match self {
-            Vertices::Exact(v) => v,
+            Vertices::Exact { points, .. } => points,
             Vertices::Input(v) => v.into_iter().map(ExactPoint::Input).collect(),
         }
     }
@@ -412,8 +437,11 @@ impl Flat {
         }
         let mut fill: Vec<u32> = in_start[..m].to_vec();
         let mut inner = vec![0u32; in_start[m] as usize];
+        // Their nearest f64 points, from the sweep (which rounded the crossings).
+        let mut approx: Vec<Point2> = Vec::with_capacity(vertices.capacity());
         for (id, p) in found.points.iter().enumerate() {
             vertices.push(p.exact(&sub));
+            approx.push(p.point);
             let id = id as u32;
             for &s in p.upper() {
                 up_v[s] = id;
@@ -447,6 +475,7 @@ impl Flat {
                 if *slot == NONE {
                     *slot = vertices.len() as u32;
                     vertices.push(ExactPoint::Input(q));
+                    approx.push(q);
                 }
             }
             chain.clear();
@@ -484,7 +513,10 @@ impl Flat {
                 ));
             }
         }
-        Ok(pieces.finish(vertices))
+        let both: Vec<(ExactPoint, Point2)> = vertices.into_iter().zip(approx).collect();
+        let both = renumber_vertices(&mut pieces.edges, &both);
+        let (vertices, approx) = both.into_iter().unzip();
+        Ok(pieces.finish_numbered(Vertices::rounded_exact(vertices, approx)))
     }
 
     /// The arrangement of horizontal and vertical segments (zero-length ones skipped),

@@ -45,7 +45,7 @@
 //! Cost: O(n + m + K log K) for n segments, m candidate pairs looked at and K contacts
 //! (near-linear union–find); the work over all segments is a few plain passes.
 use super::build::Source;
-use super::flat::{Flat, Pieces};
+use super::flat::{Flat, Pieces, Vertices};
 use super::holes::{compare_xy_filtered, Rounded};
 use crate::delaunay::EdgeMap;
 use crate::intersect::{prefer_pairwise, round_crossing, PARALLEL_SCAN_FROM};
@@ -835,15 +835,18 @@ fn assemble(sub: &[Segment2], kept: Option<&[usize]>, found: Found) -> Flat {
             *slot = c;
         }
     }
+    // (With its nearest f64 point: the contact's, rounded when it was found.)
     let point_of = |r: usize| {
         if r < 2 * m {
-            ExactPoint::Input(if r % 2 == 0 {
+            let q = if r % 2 == 0 {
                 sub[r / 2].a
             } else {
                 sub[r / 2].b
-            })
+            };
+            (ExactPoint::Input(q), q)
         } else {
-            exact[rep[r - 2 * m] as usize]
+            let c = rep[r - 2 * m] as usize;
+            (exact[c], contacts[c].point)
         }
     };
     let mut shared = vec![false; m];
@@ -854,11 +857,15 @@ fn assemble(sub: &[Segment2], kept: Option<&[usize]>, found: Found) -> Flat {
     // The pieces, segment by segment; a class gets its vertex at its first use.
     let mut vertex_of = vec![NONE; total];
     let mut vertices: Vec<ExactPoint> = Vec::with_capacity(m + k_count);
+    // Their nearest f64 points, handed to the tracer (which would round them again).
+    let mut approx: Vec<Point2> = Vec::with_capacity(m + k_count);
     let mut vertex = |item: u32, parent: &mut [u32]| {
         let r = find(parent, item) as usize;
         if vertex_of[r] == NONE {
             vertex_of[r] = vertices.len() as u32;
-            vertices.push(point_of(r));
+            let (p, a) = point_of(r);
+            vertices.push(p);
+            approx.push(a);
         }
         vertex_of[r]
     };
@@ -916,7 +923,7 @@ fn assemble(sub: &[Segment2], kept: Option<&[usize]>, found: Found) -> Flat {
             ));
         }
     }
-    pieces.finish_numbered(vertices)
+    pieces.finish_numbered(Vertices::rounded_exact(vertices, approx))
 }
 
 #[cfg(test)]
