@@ -1299,6 +1299,31 @@ mod tests {
                     }
                 }
             }
+            // Collinear overlaps from a shared end, for each pair of ends (a·a, a·b,
+            // b·a, b·b), apart from the rings and from each other.
+            let mut at = 40.0;
+            for (u, v, w) in [
+                ((5., 5.), (3., 3.), (4., 4.)),
+                ((5., 0.), (7., 0.), (6., 0.)),
+            ] {
+                for (first, second) in [(false, false), (false, true), (true, false), (true, true)]
+                {
+                    let p = |q: (f64, f64)| Point2::new(q.0 + at, q.1);
+                    let (u, v, w) = (p(u), p(v), p(w));
+                    let long = if first {
+                        Segment2::new(v, u)
+                    } else {
+                        Segment2::new(u, v)
+                    };
+                    let short = if second {
+                        Segment2::new(w, u)
+                    } else {
+                        Segment2::new(u, w)
+                    };
+                    segs.extend([long, short]);
+                    at += 10.0;
+                }
+            }
             // -0 and 0 are one point.
             segs.push(Segment2::new(Point2::new(-0.0, 0.0), Point2::new(2.0, 1.0)));
             segs.push(Segment2::new(Point2::new(2.0, 1.0), Point2::new(0.0, -0.0)));
