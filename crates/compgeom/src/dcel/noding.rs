@@ -5,6 +5,13 @@
 //! cost four vectors per point, and whose points include every shared endpoint: every
 //! vertex of every ring).
 //!
+//! 0. Input vertices: input of many short rings (which share vertices: maps, dissolves;
+//!    see [`HASH_RINGS_BELOW`]) has its segment ends grouped into vertices once, by an
+//!    exact hash of their coordinates, so that the pair tests compare vertex numbers, not
+//!    points, and no pair of equal ends is recorded and joined later. On other input
+//!    (long rings meet rarely at their vertices) each end is its own item, consecutive
+//!    ring edges are joined at their common end, and the pair tests compare the ends'
+//!    points and record the equal ones.
 //! 1. Candidate pairs: the segments sorted by the bucket of the left end of their boxes
 //!    (a counting sort; buckets of equal width, so the order is monotone in x), each
 //!    paired with the later ones whose left bucket is at most the bucket of its right
@@ -16,21 +23,21 @@
 //!    separates boxes in y, proposes the pairs instead. Large inputs test their pairs on
 //!    the rayon pool; the result does not depend on how the work was split.
 //! 2. Pair tests: consecutive ring edges (the common pair) are joined at their shared end
-//!    with no record, and meet nowhere else unless collinear: one orientation decided by
-//!    the static-bound filter ([`static_orient_bound`], exact fallback when it cannot
-//!    tell). Other pairs sharing an endpoint likewise. The rest go through four filtered
-//!    orientations and, when those cannot decide, [`segment_intersection`]; a *contact*
-//!    is recorded when the meeting point lies in the interior of one or both segments (a
-//!    proper crossing, a T-junction, the ends of a collinear overlap).
-//! 3. Vertices without a global point sort: the *items* (segment ends and contacts) at
-//!    one point are joined by union–find from facts the scan already knows exactly: two
-//!    tested segments with equal ends (the start of a segment equal to the end of the one
-//!    before, consecutive ring edges, needs no test), a T-contact and the end it touches,
-//!    and contacts on one segment found equal when its cuts are sorted along it. Every
-//!    pair of segments through a point p has overlapping boxes, so it is tested, and it
-//!    links its items at p (a shared end, or a contact on the segment p is interior to):
-//!    the items at p form one class. A vertex is an input point whenever one of its items
-//!    is.
+//!    and meet nowhere else unless collinear: one orientation decided by the
+//!    static-bound filter ([`static_orient_bound`], exact fallback when it cannot tell).
+//!    Other pairs sharing an end vertex likewise; two segments with the same two end
+//!    vertices overlap with no cut. The rest go through four filtered orientations and,
+//!    when those cannot decide, [`segment_intersection`]; a *contact* is recorded when
+//!    the meeting point lies in the interior of one or both segments (a proper crossing,
+//!    a T-junction, the ends of a collinear overlap).
+//! 3. Vertices without a global point sort: the *items* (input vertices and contacts) at
+//!    one point are joined by union–find from facts the scan already knows exactly: equal
+//!    ends of a tested pair (when not one vertex already), a T-contact and the end it
+//!    touches, and contacts on one segment found equal when its cuts are sorted along it.
+//!    Every pair of segments through a point p has overlapping boxes, so it is tested,
+//!    and it links its items at p (a shared end, or a contact on the segment p is
+//!    interior to): the items at p form one class. A vertex is an input point whenever
+//!    one of its items is.
 //! 4. Each segment is cut at its contacts, sorted along it (exact lexicographic order,
 //!    decided by the rounded points where they differ — rounding is monotone, crossings
 //!    are correctly rounded — and exactly where they tie). Only segments in a collinear
@@ -43,7 +50,8 @@
 //! (see [`crate::intersect::prefer_pairwise`]) the intersection sweep does it all.
 //!
 //! Cost: O(n + m + K log K) for n segments, m candidate pairs looked at and K contacts
-//! (near-linear union–find); the work over all segments is a few plain passes.
+//! (expected, for the hash of the ends; near-linear union–find); the work over all
+//! segments is a few plain passes.
 use super::build::Source;
 use super::flat::{Flat, Pieces, Vertices};
 use super::holes::{compare_xy_filtered, Rounded};
@@ -70,9 +78,126 @@ struct Contact {
     b: u32,
     /// A proper crossing of `a < b` (the exact point is their [`Crossing`]).
     crossing: bool,
-    /// For an input point: the segment end it is (item `2k` or `2k + 1` for segment `k`'s
-    /// `a` or `b`), or `NONE`.
+    /// For an input point: the vertex (see [`Ends`]) of the segment end it is, or `NONE`.
     end: u32,
+}
+
+/// A segment, its number and its end vertices.
+type Seg = (Segment2, u32, [u32; 2]);
+
+/// The vertices of the segment ends, below `count`. When `exact`, equal points are one
+/// vertex, numbered in order of first appearance: `of[k]` = the vertices of segment k's
+/// ends `a` and `b`, `points[v]` the point of vertex v. Else (`of` and `points` empty)
+/// vertex `2k` or `2k + 1` is end `a` or `b` of segment k: the start of a segment equal
+/// to the end of the one before (consecutive ring edges) is joined to it in the
+/// assembly, other equal ends by the pair tests, which compare their points.
+struct Ends {
+    of: Vec<[u32; 2]>,
+    points: Vec<Point2>,
+    count: usize,
+    exact: bool,
+}
+
+/// Input of rings shorter than this on average (in edges) has its ends hashed into exact
+/// vertices: many rings share vertices (maps, dissolves), and comparing vertex numbers
+/// in the pair tests pays for the hash; long rings (few starts) rarely meet at their
+/// vertices, and the hash would cost more than the equal ends it finds.
+const HASH_RINGS_BELOW: usize = 16;
+
+/// The ring starts are counted among this many segments spread evenly over the input.
+const RING_SAMPLE: usize = 32;
+
+impl Ends {
+    fn of(sub: &[Segment2]) -> Ends {
+        let n = sub.len();
+        // Segments k > 0 at about even steps; a start is one not joined to the one before.
+        let step = (n / RING_SAMPLE).max(1);
+        let (mut looked, mut starts, mut k) = (0, 0, step);
+        while k < n {
+            looked += 1;
+            starts += usize::from(sub[k - 1].b != sub[k].a);
+            k += step;
+        }
+        if looked > 0 && looked < HASH_RINGS_BELOW * starts {
+            Ends::hashed(sub)
+        } else {
+            Ends::by_segments(n)
+        }
+    }
+
+    /// The ends of `n` segments numbered by segment (not exact).
+    fn by_segments(n: usize) -> Ends {
+        Ends {
+            of: Vec::new(),
+            points: Vec::new(),
+            count: 2 * n,
+            exact: false,
+        }
+    }
+
+    /// Equal points (exact `f64` equality, so -0 = 0) get one vertex: found by an
+    /// open-addressing hash of the coordinates' bits (-0 folded into 0), O(n) expected.
+    fn hashed(sub: &[Segment2]) -> Ends {
+        let n = sub.len();
+        // At most 2n vertices: a table at most 2/3 full.
+        let bits = (3 * n).max(16).next_power_of_two().trailing_zeros();
+        let mut table = PointTable {
+            slots: vec![NONE; 1 << bits],
+            shift: 64 - bits,
+            points: Vec::with_capacity(2 * n),
+        };
+        let mut of: Vec<[u32; 2]> = Vec::with_capacity(n);
+        let mut last = Point2::new(f64::NAN, f64::NAN);
+        let mut last_v = NONE;
+        for s in sub {
+            let a = if s.a == last {
+                last_v
+            } else {
+                table.vertex(s.a)
+            };
+            last = s.b;
+            last_v = table.vertex(s.b);
+            of.push([a, last_v]);
+        }
+        Ends {
+            of,
+            count: table.points.len(),
+            points: table.points,
+            exact: true,
+        }
+    }
+}
+
+/// An open-addressing (linear probing) hash of points to their vertex numbers.
+struct PointTable {
+    slots: Vec<u32>,
+    shift: u32,
+    points: Vec<Point2>,
+}
+
+impl PointTable {
+    /// The vertex of `p`, a new one when `p` is new.
+    #[inline(always)]
+    fn vertex(&mut self, p: Point2) -> u32 {
+        let (x, y) = ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits());
+        let h = (x.wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29) ^ y)
+            .wrapping_mul(0xD6E8_FEB8_6659_FD93);
+        let mask = self.slots.len() - 1;
+        let mut at = (h >> self.shift) as usize;
+        loop {
+            let v = self.slots[at & mask];
+            if v == NONE {
+                let v = self.points.len() as u32;
+                self.slots[at & mask] = v;
+                self.points.push(p);
+                return v;
+            }
+            if self.points[v as usize] == p {
+                return v;
+            }
+            at += 1;
+        }
+    }
 }
 
 /// What the scanned pairs contribute.
@@ -81,14 +206,106 @@ struct Found {
     contacts: Vec<Contact>,
     /// Pairs overlapping collinearly.
     overlapping: Vec<(u32, u32)>,
-    /// Pairs of equal segment ends (items `2k`, `2k + 1`), except the consecutive ones.
+    /// Pairs of different vertices at one point (only when the [`Ends`] are not exact).
     same: Vec<(u32, u32)>,
 }
 
 impl Found {
-    /// Test segments `s` = number `i` < `j` = `t` exactly and record the cuts and equal
-    /// ends they give. `bound` is the [`static_orient_bound`] of the input.
-    fn test(&mut self, s: Segment2, t: Segment2, i: u32, j: u32, bound: f64) {
+    /// Empty records with room for what the scan of `n` segments usually finds (growing
+    /// them pair by pair was ~8 reallocations per call on the JTS pairs); `same` only when
+    /// the ends are not `exact`.
+    fn for_segments(n: usize, exact: bool) -> Found {
+        let n = n.min(1 << 16);
+        Found {
+            contacts: Vec::with_capacity(n / 4 + 16),
+            overlapping: Vec::with_capacity(n / 8 + 8),
+            same: Vec::with_capacity(if exact { 0 } else { n / 2 + 16 }),
+        }
+    }
+
+    /// Test segments `s` = number `i` < `j` = `t`, with end vertices `ei` and `ej` (exact
+    /// [`Ends`]: equal points are equal vertices), exactly and record the cuts they
+    /// give. `bound` is the [`static_orient_bound`] of the input.
+    #[allow(clippy::too_many_arguments)]
+    fn test_by_vertices(
+        &mut self,
+        s: Segment2,
+        t: Segment2,
+        i: u32,
+        j: u32,
+        ei: [u32; 2],
+        ej: [u32; 2],
+        bound: f64,
+    ) {
+        // Shared ends, by vertex number.
+        let (aa, ab, ba, bb) = (
+            ei[0] == ej[0],
+            ei[0] == ej[1],
+            ei[1] == ej[0],
+            ei[1] == ej[1],
+        );
+        if (aa & bb) | (ab & ba) {
+            // The same segment twice (an edge two rings share, common in maps): an
+            // overlap whose ends are ends of both, so it cuts neither.
+            return self.overlapping.push((i, j));
+        }
+        let shared = if aa {
+            Some((s.a, s.b, t.b))
+        } else if ab {
+            Some((s.a, s.b, t.a))
+        } else if ba {
+            Some((s.b, s.a, t.b))
+        } else if bb {
+            Some((s.b, s.a, t.a))
+        } else {
+            None
+        };
+        if let Some((p, far_s, far_t)) = shared {
+            // Not collinear: the lines meet only at p, an end of both (the static filter
+            // first: it decides the sign wherever it is not 0).
+            if orient_static(p, far_s, far_t, bound) != 0
+                || orient2d(p, far_s, far_t) != Orientation::Collinear
+            {
+                return;
+            }
+        } else {
+            // Most pairs are decided by four filtered orientations.
+            match quick_crossing_static(s, t, bound) {
+                Some(false) => return,
+                Some(true) => {
+                    return self.contacts.push(Contact {
+                        point: round_crossing(&Crossing { s, t }),
+                        a: i,
+                        b: j,
+                        crossing: true,
+                        end: NONE,
+                    })
+                }
+                None => {}
+            }
+        }
+        match crate::kernel::segment_intersection(s, t) {
+            SegmentIntersection::None => {}
+            SegmentIntersection::Endpoint(q) => self.touch(q, (s, i, ei), (t, j, ej)),
+            SegmentIntersection::Crossing(c) => self.contacts.push(Contact {
+                point: round_crossing(&c),
+                a: i,
+                b: j,
+                crossing: true,
+                end: NONE,
+            }),
+            SegmentIntersection::Overlap(p, q) => {
+                self.touch(p, (s, i, ei), (t, j, ej));
+                self.touch(q, (s, i, ei), (t, j, ej));
+                self.overlapping.push((i, j));
+            }
+        }
+    }
+
+    /// [`Found::test_by_vertices`] for ends numbered by segment (vertices `2k`, `2k + 1`,
+    /// not exact: see [`Ends`]): equal ends are found by comparing points and recorded
+    /// but for the joined ones.
+    fn test_by_points(&mut self, s: Segment2, t: Segment2, i: u32, j: u32, bound: f64) {
         let (i32_, j32) = (i, j);
         // Consecutive ring edges (the common pair): joined at s.b = t.a without a record,
         // and meeting only there unless collinear (then s.a ≠ t.b too).
@@ -140,7 +357,11 @@ impl Found {
         }
         match crate::kernel::segment_intersection(s, t) {
             SegmentIntersection::None => {}
-            SegmentIntersection::Endpoint(q) => self.touch(q, s, i32_, t, j32),
+            SegmentIntersection::Endpoint(q) => self.touch(
+                q,
+                (s, i32_, [2 * i, 2 * i + 1]),
+                (t, j32, [2 * j, 2 * j + 1]),
+            ),
             SegmentIntersection::Crossing(c) => self.contacts.push(Contact {
                 point: round_crossing(&c),
                 a: i32_,
@@ -149,25 +370,34 @@ impl Found {
                 end: NONE,
             }),
             SegmentIntersection::Overlap(p, q) => {
-                self.touch(p, s, i32_, t, j32);
-                self.touch(q, s, i32_, t, j32);
+                self.touch(
+                    p,
+                    (s, i32_, [2 * i, 2 * i + 1]),
+                    (t, j32, [2 * j, 2 * j + 1]),
+                );
+                self.touch(
+                    q,
+                    (s, i32_, [2 * i, 2 * i + 1]),
+                    (t, j32, [2 * j, 2 * j + 1]),
+                );
                 self.overlapping.push((i32_, j32));
             }
         }
     }
 
-    /// Input point `q` lies on both segments: it cuts each it is not an end of.
-    fn touch(&mut self, q: Point2, s: Segment2, i: u32, t: Segment2, j: u32) {
-        let end_of = |s: Segment2, k: u32| {
+    /// Input point `q` lies on both segments (each with its number and end vertices): it
+    /// cuts each it is not an end of.
+    fn touch(&mut self, q: Point2, (s, i, ei): Seg, (t, j, ej): Seg) {
+        let end_of = |s: Segment2, e: [u32; 2]| {
             if q == s.a {
-                2 * k
+                e[0]
             } else if q == s.b {
-                2 * k + 1
+                e[1]
             } else {
                 NONE
             }
         };
-        let (es, et) = (end_of(s, i), end_of(t, j));
+        let (es, et) = (end_of(s, ei), end_of(t, ej));
         let (a, b, end) = match (es == NONE, et == NONE) {
             (true, true) => (i, j, NONE),
             (true, false) => (i, NONE, et),
@@ -519,13 +749,22 @@ impl XSweep {
         self.ids.len()
     }
 
-    /// Test the candidates of the entries `ps` whose boxes overlap their own.
-    fn scan(&self, ps: std::ops::Range<usize>, found: &mut Found, bound: f64) {
+    /// Test the candidates of the entries `ps` whose boxes overlap their own; `ends` are
+    /// the end vertices of the segments, `EXACT` when equal points have equal vertices.
+    fn scan<const EXACT: bool>(
+        &self,
+        ps: std::ops::Range<usize>,
+        ends: &[[u32; 2]],
+        found: &mut Found,
+        bound: f64,
+    ) {
         // One buffer for all entries (zeroing one per entry showed in profiles).
         let mut hits = [0u32; CHUNK];
         for p in ps {
             let (s, i) = (self.segs[p], self.ids[p]);
-            self.pairs_of(p, &mut hits, |q| self.test_pair(s, i, q, found, bound));
+            self.pairs_of(p, &mut hits, |q| {
+                self.test_pair::<EXACT>(s, i, q, ends, found, bound)
+            });
         }
     }
 
@@ -578,15 +817,28 @@ impl XSweep {
 
     /// Test entry `q` against segment `s` = number `i` (their boxes overlap).
     #[inline(always)]
-    fn test_pair(&self, s: Segment2, i: u32, q: usize, found: &mut Found, bound: f64) {
+    fn test_pair<const EXACT: bool>(
+        &self,
+        s: Segment2,
+        i: u32,
+        q: usize,
+        ends: &[[u32; 2]],
+        found: &mut Found,
+        bound: f64,
+    ) {
         let (t, j) = (self.segs[q], self.ids[q]);
         let (s, t, i, j) = if i < j { (s, t, i, j) } else { (t, s, j, i) };
         // Consecutive ring edges (the common pair), inlined here: joined at
-        // s.b = t.a without a record, and meeting only there unless collinear.
+        // s.b = t.a, and meeting only there unless collinear.
         if j == i + 1 && s.b == t.a && orient_static(s.a, s.b, t.b, bound) != 0 {
             return;
         }
-        found.test(s, t, i, j, bound);
+        if EXACT {
+            let (ei, ej) = (ends[i as usize], ends[j as usize]);
+            found.test_by_vertices(s, t, i, j, ei, ej, bound);
+        } else {
+            found.test_by_points(s, t, i, j, bound);
+        }
     }
 }
 
@@ -632,8 +884,10 @@ impl Flat {
         if sub.len() >= 1 << 29 {
             return Flat::general(segments);
         }
-        match found_by(&sub, how) {
-            Some(found) => Ok(assemble(&sub, kept.as_deref(), found)),
+        let ends = Ends::of(&sub);
+        match found_by(&sub, &ends, how) {
+            Some(found) if ends.exact => Ok(assemble::<true>(&sub, kept.as_deref(), &ends, found)),
+            Some(found) => Ok(assemble::<false>(&sub, kept.as_deref(), &ends, found)),
             None => Flat::general(segments),
         }
     }
@@ -642,7 +896,7 @@ impl Flat {
 /// The contacts, overlaps and equal ends of the pairs of `sub` (at most 2^29 segments)
 /// from the candidates of `how`; `None` when the grid would test too many pairs or the
 /// item ids would not fit in `u32` (the intersection sweep then does it all).
-fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
+fn found_by(sub: &[Segment2], ends: &Ends, how: Candidates) -> Option<Found> {
     let inf = f64::INFINITY;
     let mut heights = 0.0;
     let e = sub.iter().fold([inf, -inf, inf, -inf], |e, s| {
@@ -668,8 +922,12 @@ fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
     let found = if let Some(sweep) = sweep {
         let n = sweep.len();
         if n < PARALLEL_SWEEP_FROM {
-            let mut f = Found::default();
-            sweep.scan(0..n, &mut f, bound);
+            let mut f = Found::for_segments(n, ends.exact);
+            if ends.exact {
+                sweep.scan::<true>(0..n, &ends.of, &mut f, bound);
+            } else {
+                sweep.scan::<false>(0..n, &ends.of, &mut f, bound);
+            }
             f
         } else {
             // Blocks of entries on the pool (the result does not depend on the split:
@@ -678,18 +936,30 @@ fn found_by(sub: &[Segment2], how: Candidates) -> Option<Found> {
             (0..n.div_ceil(BLOCK))
                 .into_par_iter()
                 .fold(Found::default, |mut f, k| {
-                    sweep.scan(k * BLOCK..n.min((k + 1) * BLOCK), &mut f, bound);
+                    let ps = k * BLOCK..n.min((k + 1) * BLOCK);
+                    if ends.exact {
+                        sweep.scan::<true>(ps, &ends.of, &mut f, bound);
+                    } else {
+                        sweep.scan::<false>(ps, &ends.of, &mut f, bound);
+                    }
                     f
                 })
                 .reduce(Found::default, Found::merge)
         }
     } else {
         let grid = prefer_pairwise(sub)?;
-        let test =
-            |f: &mut Found, i: usize, j: usize| f.test(sub[i], sub[j], i as u32, j as u32, bound);
+        let test = |f: &mut Found, i: usize, j: usize| {
+            let (s, t, i, j) = (sub[i], sub[j], i as u32, j as u32);
+            if ends.exact {
+                let (ei, ej) = (ends.of[i as usize], ends.of[j as usize]);
+                f.test_by_vertices(s, t, i, j, ei, ej, bound)
+            } else {
+                f.test_by_points(s, t, i, j, bound)
+            }
+        };
         let entries = grid.entry_count();
         if grid.candidates() < PARALLEL_SCAN_FROM {
-            let mut f = Found::default();
+            let mut f = Found::for_segments(sub.len(), ends.exact);
             for k in 0..entries {
                 grid.scan_from(k, |i, j| test(&mut f, i, j));
             }
@@ -732,33 +1002,48 @@ fn union(parent: &mut [u32], a: u32, b: u32) {
 /// Work over all segments is a few plain passes; everything that depends on the contacts
 /// (exact points, cut order, representatives) is O(K log K) for K contacts. Vertices are
 /// numbered in order of first use by the edges, as they are made.
-fn assemble(sub: &[Segment2], kept: Option<&[usize]>, found: Found) -> Flat {
+/// `EXACT`: `ends.exact`.
+fn assemble<const EXACT: bool>(
+    sub: &[Segment2],
+    kept: Option<&[usize]>,
+    ends: &Ends,
+    found: Found,
+) -> Flat {
     // The input number of segment k of `sub`.
     let input = |k: usize| kept.map_or(k, |kept| kept[k]);
     let m = sub.len();
     let contacts = &found.contacts;
     let k_count = contacts.len();
-    let total = 2 * m + k_count;
-    // Items: 2k and 2k + 1 are the ends a and b of segment k; 2m + c is contact c. A
-    // union keeps the smaller id as the root, so a root is the smallest item of its class.
+    // Items: v < nv is input vertex v; nv + c is contact c. A union keeps the smaller id
+    // as the root, so a root is the smallest item of its class: its input vertex when it
+    // has one. A contact at an input point starts in that vertex's class.
+    let nv = ends.count;
+    let total = nv + k_count;
     let mut parent: Vec<u32> = Vec::with_capacity(total);
-    for k in 0..m {
-        let joined = k > 0 && sub[k - 1].b == sub[k].a;
-        parent.push(if joined {
-            2 * k as u32 - 1
-        } else {
-            2 * k as u32
-        });
-        parent.push(2 * k as u32 + 1);
-    }
-    parent.extend(2 * m as u32..total as u32);
-    for &(x, y) in &found.same {
-        union(&mut parent, x, y);
-    }
-    for (c, contact) in contacts.iter().enumerate() {
-        if contact.end != NONE {
-            union(&mut parent, (2 * m + c) as u32, contact.end);
+    if EXACT {
+        parent.extend(0..nv as u32);
+    } else {
+        for k in 0..m {
+            let joined = k > 0 && sub[k - 1].b == sub[k].a;
+            parent.push(if joined {
+                2 * k as u32 - 1
+            } else {
+                2 * k as u32
+            });
+            parent.push(2 * k as u32 + 1);
         }
+    }
+    parent.extend(
+        contacts
+            .iter()
+            .enumerate()
+            .map(|(c, contact)| match contact.end {
+                NONE => (nv + c) as u32,
+                v => v,
+            }),
+    );
+    for &(u, v) in &found.same {
+        union(&mut parent, u, v);
     }
     // The exact contact points.
     let exact: Vec<ExactPoint> = contacts
@@ -811,8 +1096,8 @@ fn assemble(sub: &[Segment2], kept: Option<&[usize]>, found: Found) -> Flat {
             if cmp(run[w - 1], run[w]) == Ordering::Equal {
                 union(
                     &mut parent,
-                    (2 * m) as u32 + run[w - 1] as u32,
-                    (2 * m) as u32 + run[w] as u32,
+                    nv as u32 + run[w - 1] as u32,
+                    nv as u32 + run[w] as u32,
                 );
             }
         }
@@ -826,26 +1111,28 @@ fn assemble(sub: &[Segment2], kept: Option<&[usize]>, found: Found) -> Flat {
     let pair = |c: u32| (contacts[c as usize].a, contacts[c as usize].b);
     let mut rep = vec![NONE; k_count];
     for c in 0..k_count as u32 {
-        let r = find(&mut parent, 2 * m as u32 + c) as usize;
-        if r < 2 * m {
+        let r = find(&mut parent, nv as u32 + c) as usize;
+        if r < nv {
             continue;
         }
-        let slot = &mut rep[r - 2 * m];
+        let slot = &mut rep[r - nv];
         if *slot == NONE || (is_crossing(*slot) && (!is_crossing(c) || pair(c) < pair(*slot))) {
             *slot = c;
         }
     }
     // (With its nearest f64 point: the contact's, rounded when it was found.)
     let point_of = |r: usize| {
-        if r < 2 * m {
-            let q = if r % 2 == 0 {
+        if r < nv {
+            let q = if EXACT {
+                ends.points[r]
+            } else if r % 2 == 0 {
                 sub[r / 2].a
             } else {
                 sub[r / 2].b
             };
             (ExactPoint::Input(q), q)
         } else {
-            let c = rep[r - 2 * m] as usize;
+            let c = rep[r - nv] as usize;
             (exact[c], contacts[c].point)
         }
     };
@@ -880,21 +1167,26 @@ fn assemble(sub: &[Segment2], kept: Option<&[usize]>, found: Found) -> Flat {
     let mut prev_end = NONE;
     for k in 0..m {
         chain.clear();
+        let [a, b] = if EXACT {
+            ends.of[k]
+        } else {
+            [2 * k as u32, 2 * k as u32 + 1]
+        };
         // The start of a segment joined to the end of the one before is that vertex.
-        chain.push(if k > 0 && sub[k - 1].b == sub[k].a {
+        chain.push(if !EXACT && k > 0 && sub[k - 1].b == sub[k].a {
             prev_end
         } else {
-            vertex(2 * k as u32, &mut parent)
+            vertex(a, &mut parent)
         });
         while next_cut < cuts.len() && (cuts[next_cut] >> 32) as usize == k {
             // The same point may cut a segment for several pairs.
-            let v = vertex((2 * m) as u32 + cuts[next_cut] as u32, &mut parent);
+            let v = vertex(nv as u32 + cuts[next_cut] as u32, &mut parent);
             next_cut += 1;
             if chain.last() != Some(&v) {
                 chain.push(v);
             }
         }
-        prev_end = vertex(2 * k as u32 + 1, &mut parent);
+        prev_end = vertex(b, &mut parent);
         chain.push(prev_end);
         for w in chain.windows(2) {
             let (u, v) = (w[0], w[1]);
@@ -979,6 +1271,91 @@ mod tests {
             assert_eq!(sweep, Flat::noded(&segs).unwrap());
             assert_eq!(canonical(&sweep), canonical(&Flat::general(&segs).unwrap()));
         }
+    }
+
+    /// The arrangement of `segs` (no points among them) with the ends hashed into exact
+    /// vertices or numbered by segment.
+    fn noded_with_ends(segs: &[Segment2], exact: bool) -> Flat {
+        let ends = if exact {
+            Ends::hashed(segs)
+        } else {
+            Ends::by_segments(segs.len())
+        };
+        let found = found_by(segs, &ends, Candidates::Auto).unwrap();
+        if exact {
+            assemble::<true>(segs, None, &ends, found)
+        } else {
+            assemble::<false>(segs, None, &ends, found)
+        }
+    }
+
+    /// Small rings on a coarse grid, many meeting at their vertices and sharing edges
+    /// (either way round), with collinear overlaps, T-junctions and crossings: the
+    /// hashed ends and the ends numbered by segment give the same arrangement, numbered
+    /// alike, and the intersection sweep's; `Ends::of` hashes such input and not the
+    /// stars.
+    #[test]
+    fn hashed_ends_agree_with_ends_by_segment() {
+        let mut state = 99u64;
+        let mut next = move |m: u64| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 33) % m
+        };
+        for grid in [3u64, 6, 12] {
+            let mut segs = Vec::new();
+            for _ in 0..150 {
+                let k = 3 + next(3) as usize;
+                let (cx, cy) = (next(grid) as f64, next(grid) as f64);
+                let ring: Vec<Point2> = (0..k)
+                    .map(|_| Point2::new(cx + next(3) as f64, cy + next(3) as f64))
+                    .collect();
+                for w in 0..k {
+                    let s = Segment2::new(ring[w], ring[(w + 1) % k]);
+                    if !s.is_degenerate() {
+                        segs.push(s);
+                    }
+                }
+            }
+            // Collinear overlaps from a shared end, for each pair of ends (a·a, a·b,
+            // b·a, b·b), apart from the rings and from each other.
+            let mut at = 40.0;
+            for (u, v, w) in [
+                ((5., 5.), (3., 3.), (4., 4.)),
+                ((5., 0.), (7., 0.), (6., 0.)),
+            ] {
+                for (first, second) in [(false, false), (false, true), (true, false), (true, true)]
+                {
+                    let p = |q: (f64, f64)| Point2::new(q.0 + at, q.1);
+                    let (u, v, w) = (p(u), p(v), p(w));
+                    let long = if first {
+                        Segment2::new(v, u)
+                    } else {
+                        Segment2::new(u, v)
+                    };
+                    let short = if second {
+                        Segment2::new(w, u)
+                    } else {
+                        Segment2::new(u, w)
+                    };
+                    segs.extend([long, short]);
+                    at += 10.0;
+                }
+            }
+            // -0 and 0 are one point.
+            segs.push(Segment2::new(Point2::new(-0.0, 0.0), Point2::new(2.0, 1.0)));
+            segs.push(Segment2::new(Point2::new(2.0, 1.0), Point2::new(0.0, -0.0)));
+            assert!(Ends::of(&segs).exact);
+            let hashed = noded_with_ends(&segs, true);
+            assert_eq!(hashed, noded_with_ends(&segs, false));
+            assert_eq!(hashed, Flat::noded(&segs).unwrap());
+            assert_eq!(
+                canonical(&hashed),
+                canonical(&Flat::general(&segs).unwrap())
+            );
+        }
+        assert!(!Ends::of(&star(500, 0.0, 3, 9)).exact);
     }
 
     fn sweep_of(segs: &[Segment2], layout: Layout, budget: u64) -> Option<XSweep> {
