@@ -260,6 +260,53 @@ impl Found {
         } else {
             None
         };
+        self.test_rest((s, i, ei), (t, j, ej), shared, bound);
+    }
+
+    /// [`Found::test_by_vertices`] for ends numbered by segment (vertices `2k`, `2k + 1`,
+    /// not exact: see [`Ends`]): equal ends are found by comparing points and recorded
+    /// but for the joined ones.
+    fn test_by_points(&mut self, s: Segment2, t: Segment2, i: u32, j: u32, bound: f64) {
+        // Consecutive ring edges (the common pair): joined at s.b = t.a without a record,
+        // and meeting only there unless collinear (then s.a ≠ t.b too).
+        if j == i + 1 && s.b == t.a && orient_static(s.a, s.b, t.b, bound) != 0 {
+            return;
+        }
+        let mut shared = None;
+        let mut ends_shared = 0;
+        for (x, p, far_s) in [(0, s.a, s.b), (1, s.b, s.a)] {
+            for (y, q, far_t) in [(0, t.a, t.b), (1, t.b, t.a)] {
+                if p == q {
+                    // The end of segment i = the start of i + 1 is joined anyway.
+                    if !(j == i + 1 && x == 1 && y == 0) {
+                        self.same.push((2 * i + x, 2 * j + y));
+                    }
+                    shared = Some((p, far_s, far_t));
+                    ends_shared += 1;
+                }
+            }
+        }
+        if ends_shared == 2 {
+            // The same segment twice (an edge two rings share, common in maps): an
+            // overlap whose ends are ends of both, so it cuts neither.
+            return self.overlapping.push((i, j));
+        }
+        let (ei, ej) = ([2 * i, 2 * i + 1], [2 * j, 2 * j + 1]);
+        self.test_rest((s, i, ei), (t, j, ej), shared, bound);
+    }
+
+    /// The rest of a pair test once the shared ends are known: `shared` is `(p, far_s,
+    /// far_t)` for an end `p` of both (the other ends `far_s` of `s` and `far_t` of `t`).
+    /// Not collinear, the two meet only at `p`; else, and for pairs sharing no end, the
+    /// filtered crossing test, then the exact intersection, whose cuts are recorded.
+    #[inline(always)]
+    fn test_rest(
+        &mut self,
+        (s, i, ei): Seg,
+        (t, j, ej): Seg,
+        shared: Option<(Point2, Point2, Point2)>,
+        bound: f64,
+    ) {
         if let Some((p, far_s, far_t)) = shared {
             // Not collinear: the lines meet only at p, an end of both (the static filter
             // first: it decides the sign wherever it is not 0).
@@ -298,89 +345,6 @@ impl Found {
                 self.touch(p, (s, i, ei), (t, j, ej));
                 self.touch(q, (s, i, ei), (t, j, ej));
                 self.overlapping.push((i, j));
-            }
-        }
-    }
-
-    /// [`Found::test_by_vertices`] for ends numbered by segment (vertices `2k`, `2k + 1`,
-    /// not exact: see [`Ends`]): equal ends are found by comparing points and recorded
-    /// but for the joined ones.
-    fn test_by_points(&mut self, s: Segment2, t: Segment2, i: u32, j: u32, bound: f64) {
-        let (i32_, j32) = (i, j);
-        // Consecutive ring edges (the common pair): joined at s.b = t.a without a record,
-        // and meeting only there unless collinear (then s.a ≠ t.b too).
-        if j == i + 1 && s.b == t.a && orient_static(s.a, s.b, t.b, bound) != 0 {
-            return;
-        }
-        let mut shared = None;
-        let mut ends_shared = 0;
-        for (x, p, far_s) in [(0, s.a, s.b), (1, s.b, s.a)] {
-            for (y, q, far_t) in [(0, t.a, t.b), (1, t.b, t.a)] {
-                if p == q {
-                    // The end of segment i = the start of i + 1 is joined anyway.
-                    if !(j == i + 1 && x == 1 && y == 0) {
-                        self.same.push((2 * i32_ + x, 2 * j32 + y));
-                    }
-                    shared = Some((p, far_s, far_t));
-                    ends_shared += 1;
-                }
-            }
-        }
-        if ends_shared == 2 {
-            // The same segment twice (an edge two rings share, common in maps): an
-            // overlap whose ends are ends of both, so it cuts neither.
-            return self.overlapping.push((i32_, j32));
-        }
-        if let Some((p, far_s, far_t)) = shared {
-            // Not collinear: the lines meet only at p, an end of both (the static filter
-            // first: it decides the sign wherever it is not 0).
-            if orient_static(p, far_s, far_t, bound) != 0
-                || orient2d(p, far_s, far_t) != Orientation::Collinear
-            {
-                return;
-            }
-        } else {
-            // Most pairs are decided by four filtered orientations.
-            match quick_crossing_static(s, t, bound) {
-                Some(false) => return,
-                Some(true) => {
-                    return self.contacts.push(Contact {
-                        point: round_crossing(&Crossing { s, t }),
-                        a: i32_,
-                        b: j32,
-                        crossing: true,
-                        end: NONE,
-                    })
-                }
-                None => {}
-            }
-        }
-        match crate::kernel::segment_intersection(s, t) {
-            SegmentIntersection::None => {}
-            SegmentIntersection::Endpoint(q) => self.touch(
-                q,
-                (s, i32_, [2 * i, 2 * i + 1]),
-                (t, j32, [2 * j, 2 * j + 1]),
-            ),
-            SegmentIntersection::Crossing(c) => self.contacts.push(Contact {
-                point: round_crossing(&c),
-                a: i32_,
-                b: j32,
-                crossing: true,
-                end: NONE,
-            }),
-            SegmentIntersection::Overlap(p, q) => {
-                self.touch(
-                    p,
-                    (s, i32_, [2 * i, 2 * i + 1]),
-                    (t, j32, [2 * j, 2 * j + 1]),
-                );
-                self.touch(
-                    q,
-                    (s, i32_, [2 * i, 2 * i + 1]),
-                    (t, j32, [2 * j, 2 * j + 1]),
-                );
-                self.overlapping.push((i32_, j32));
             }
         }
     }
