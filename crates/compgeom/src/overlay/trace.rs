@@ -277,7 +277,8 @@ fn traced(
     let mut label: Vec<(i32, i32)> = Vec::with_capacity(cycles_hint);
     let mut comp_of: Vec<u32> = Vec::with_capacity(cycles_hint);
     let mut ncomp = 0u32;
-    let mut stack: Vec<(u32, i32, i32)> = Vec::new();
+    // (Sized once: at most one entry per edge; growing it was a few reallocations a call.)
+    let mut stack: Vec<(u32, i32, i32)> = Vec::with_capacity(ne);
     for h0 in 0..m as u32 {
         if cyc[h0 as usize] != NONE {
             continue;
@@ -491,10 +492,11 @@ fn traced(
     let mut region_of = vec![NONE; ncycles];
     let mut regions: Vec<Region> = Vec::new();
     let mut pos = vec![NONE; nv];
-    let mut cycle: Vec<u32> = Vec::new();
-    let mut stack: Vec<u32> = Vec::new();
+    // (A boundary cycle has at most one half-edge per edge: sized once, not grown.)
+    let mut cycle: Vec<u32> = Vec::with_capacity(ne);
+    let mut stack: Vec<u32> = Vec::with_capacity(ne);
     let mut rings: Vec<(usize, usize)> = Vec::new();
-    let mut flat_rings: Vec<u32> = Vec::new();
+    let mut flat_rings: Vec<u32> = Vec::with_capacity(ne);
     // The rounded points (and exactness flags) of one ring's vertices, computed once per
     // ring: a vertex is on few rings, so no cache over all vertices is needed.
     let mut ring_r: Vec<Rounded> = Vec::new();
