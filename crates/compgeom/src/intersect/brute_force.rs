@@ -686,7 +686,7 @@ pub fn verify_intersections(segments: &[Segment2], found: &Intersections) -> Res
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
     /// The records of every meeting pair of `segments`, dealt into `parts` pieces.
@@ -702,6 +702,24 @@ mod tests {
         out
     }
 
+    /// Segments from integer-grid end points `v` scaled by `how`: 0 the grid itself (with
+    /// -0.0 for 0), 1 divided by 3 (distinct crossings round to the same point), 2 huge
+    /// (×1e300: the static bound is infinite), 3 tiny (×1e-300), 4 offset by 2^22
+    /// (orientations near the static bound). The degenerate inputs of the intersect tests.
+    pub(crate) fn grid_segments(v: &[(i32, i32, i32, i32)], how: u8) -> Vec<Segment2> {
+        let f = |k: i32| match how {
+            0 if k == 0 => -0.0,
+            0 => k as f64,
+            1 => k as f64 / 3.0,
+            2 => k as f64 * 1e300,
+            3 => k as f64 * 1e-300,
+            _ => k as f64 + 4_194_304.0,
+        };
+        v.iter()
+            .map(|&(a, b, c, d)| Segment2::new(Point2::new(f(a), f(b)), Point2::new(f(c), f(d))))
+            .collect()
+    }
+
     proptest::proptest! {
         /// The marked assembly (groups found inside the sort, points built from the
         /// marks) gives exactly the plain one (sort, list of group starts, points) on
@@ -715,20 +733,7 @@ mod tests {
             how in 0u8..5,
             parts in 1usize..5,
         ) {
-            let f = |k: i32| match how {
-                0 if k == 0 => -0.0,
-                0 => k as f64,
-                1 => k as f64 / 3.0,
-                2 => k as f64 * 1e300,
-                3 => k as f64 * 1e-300,
-                _ => k as f64 + 4_194_304.0,
-            };
-            let segs: Vec<Segment2> = v
-                .iter()
-                .map(|&(a, b, c, d)| {
-                    Segment2::new(Point2::new(f(a), f(b)), Point2::new(f(c), f(d)))
-                })
-                .collect();
+            let segs = grid_segments(&v, how);
             let plain = {
                 let mut all = PairResults::default();
                 for p in dealt(&segs, 1) {

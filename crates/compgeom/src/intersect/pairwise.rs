@@ -854,16 +854,7 @@ mod tests {
             v in proptest::collection::vec((-3i32..4, -3i32..4, -3i32..4, -3i32..4), 0..40),
             how in 0u8..5,
         ) {
-            let f = |k: i32| match how {
-                0 if k == 0 => -0.0,
-                0 => k as f64,
-                1 => k as f64 / 3.0,
-                2 => k as f64 * 1e300,
-                3 => k as f64 * 1e-300,
-                _ => k as f64 + 4_194_304.0,
-            };
-            let segs: Vec<Segment2> =
-                v.iter().map(|&(a, b, c, d)| seg((f(a), f(b)), (f(c), f(d)))).collect();
+            let segs = super::super::brute_force::tests::grid_segments(&v, how);
             let want = super::super::brute_force_intersections(&segs).unwrap();
             for axis in 0..2 {
                 proptest::prop_assert_eq!(swept_answer(&segs, axis), want.clone());
