@@ -313,8 +313,14 @@ fn spread_and_sort<T: Copy>(
 ) {
     local.clear();
     local.resize(width + 1, 0);
+    // The largest fine bucket, tracked while counting: when none is above `SMALL` (the
+    // common case, about one record per fine bucket) the pass over the buckets below
+    // that looks for large ones is skipped.
+    let mut largest = 0;
     for &f in fines {
-        local[f as usize - base + 1] += 1;
+        let count = &mut local[f as usize - base + 1];
+        *count += 1;
+        largest = largest.max(*count);
     }
     for f in 0..width {
         local[f + 1] += local[f];
@@ -330,9 +336,11 @@ fn spread_and_sort<T: Copy>(
     // lengths of the fine buckets (mostly 0, 1 or 2, at random) are no longer branched
     // on, which mispredicted about once per record. At most `SMALL` records per
     // unsorted fine bucket bound the insertion sort's work by `SMALL` per record.
-    for w in local.windows(2) {
-        if w[1] - w[0] > SMALL as u32 {
-            to[w[0] as usize..w[1] as usize].sort_unstable_by(&cmp);
+    if largest > SMALL as u32 {
+        for w in local.windows(2) {
+            if w[1] - w[0] > SMALL as u32 {
+                to[w[0] as usize..w[1] as usize].sort_unstable_by(&cmp);
+            }
         }
     }
     insertion_sort(to, &cmp);

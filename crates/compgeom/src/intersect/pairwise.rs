@@ -393,13 +393,22 @@ impl<'a> SweepLanes<'a> {
         let a_id = sweep.items[k].id as usize;
         // Crossings of `a` not yet rounded: rounded eight at a time, `a` shared.
         let (mut mine, mut len) = ([0usize; BLOCK], 0);
+        // Every column cut to the same length once, so that one range check per block
+        // covers all eight loads.
+        let n = self.ax.len();
+        fn col(v: &[f64], n: usize) -> &[f64] {
+            &v[..n]
+        }
+        let col = |v| col(v, n);
+        let (ax, ay, dx, dy) = (col(&self.ax), col(&self.ay), col(&self.dx), col(&self.dy));
+        let (bx, by, olo, ohi) = (col(&self.bx), col(&self.by), col(&self.olo), col(&self.ohi));
         let mut p = k + 1;
         while p < end {
             let m = (end - p).min(BLOCK);
+            assert!(p + BLOCK <= n);
             let run = |v: &[f64]| -> [f64; BLOCK] { v[p..p + BLOCK].try_into().unwrap() };
-            let (bax, bay, bdx, bdy) = (run(&self.ax), run(&self.ay), run(&self.dx), run(&self.dy));
-            let (bbx, bby, bolo, bohi) =
-                (run(&self.bx), run(&self.by), run(&self.olo), run(&self.ohi));
+            let (bax, bay, bdx, bdy) = (run(ax), run(ay), run(dx), run(dy));
+            let (bbx, bby, bolo, bohi) = (run(bx), run(by), run(olo), run(ohi));
             // Bit l: lane l is a certified proper crossing / is undecided.
             let (mut cross, mut open) = (0u32, 0u32);
             for l in 0..BLOCK {
