@@ -404,9 +404,17 @@ fn assemble_marked(
                 // Within one job the groups come in order: the next group starts where
                 // this one ends. Otherwise (a job's first group) it is looked up.
                 let from = if g == *next { *at } else { marked.start_of(g) };
-                let to = marked.end_of(from);
+                let records = marked.records;
+                // The common case first, without the search for the group's end: one
+                // record (the next one starts a group) of two segments crossing.
+                let single = records.get(from + 1).map_or(true, Record::starts_group);
+                let to = if single { from + 1 } else { marked.end_of(from) };
                 (*next, *at) = (g + 1, to);
-                point_of(segments, &segs, &marked.records[from..to])
+                let first = records[from];
+                if single && first.is_crossing() {
+                    return IntersectionPoint::crossing(first.point(), first.i(), first.j());
+                }
+                shared_point_of(segments, &segs, &records[from..to])
             },
         )
         .collect_into_vec(&mut points);
