@@ -408,7 +408,11 @@ fn assemble_marked(
                 // The common case first, without the search for the group's end: one
                 // record (the next one starts a group) of two segments crossing.
                 let single = records.get(from + 1).map_or(true, Record::starts_group);
-                let to = if single { from + 1 } else { marked.end_of(from) };
+                let to = if single {
+                    from + 1
+                } else {
+                    marked.end_of(from)
+                };
                 (*next, *at) = (g + 1, to);
                 let first = records[from];
                 if single && first.is_crossing() {
