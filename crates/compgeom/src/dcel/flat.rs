@@ -568,14 +568,34 @@ impl Flat {
         // `k` last: segments are in input order, so it breaks ties as `index` would.
         // The segments are then copied into that order: every later pass (the sweep,
         // the cuts, the pieces) reads them front to back instead of at random.
+        // The key is narrow (16 bytes, not 32 for (axis, across, lo, k)): the axis is
+        // a split of the array (horizontals first), `lo` a second sort of each run of
+        // equal `across` (a line holds few segments), so the big sort moves half the bytes.
         let segs: Vec<Seg> = {
-            let mut keyed: Vec<(u8, u64, u64, u32)> = segs
-                .iter()
-                .enumerate()
-                .map(|(k, s)| (s.axis, okey(s.across), okey(s.lo), k as u32))
-                .collect();
-            keyed.sort_unstable();
-            keyed.iter().map(|t| segs[t.3 as usize]).collect()
+            let horizontal_count = segs.iter().filter(|s| s.axis == 0).count();
+            let mut keyed: Vec<(u64, u32)> = vec![(0, 0); segs.len()];
+            let (mut h, mut v) = (0, horizontal_count);
+            for (k, s) in segs.iter().enumerate() {
+                let slot = if s.axis == 0 { &mut h } else { &mut v };
+                keyed[*slot] = (okey(s.across), k as u32);
+                *slot += 1;
+            }
+            let (horizontal, vertical) = keyed.split_at_mut(horizontal_count);
+            for part in [horizontal, vertical] {
+                part.sort_unstable();
+                let mut a = 0;
+                while a < part.len() {
+                    let mut b = a + 1;
+                    while b < part.len() && part[b].0 == part[a].0 {
+                        b += 1;
+                    }
+                    if b - a > 1 {
+                        part[a..b].sort_unstable_by_key(|t| (okey(segs[t.1 as usize].lo), t.1));
+                    }
+                    a = b;
+                }
+            }
+            keyed.iter().map(|t| segs[t.1 as usize]).collect()
         };
         let n = segs.len();
         let mut line_of = vec![0u32; n];
