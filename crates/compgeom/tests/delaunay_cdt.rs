@@ -489,3 +489,58 @@ fn crossing_constraints_near_grid_points() {
     assert!(verify_cdt(&cdt).is_ok(), "{:?}", verify_cdt(&cdt));
     assert_covered(&pts, &segs, &cdt);
 }
+
+/// Segments through a few common centres (each end rounded, so the lines miss the centre
+/// by an ulp or so): their pairwise crossings round to points an ulp or two apart, each on
+/// the wrong side of a third segment, and the pieces used to be split back and forth
+/// between them until the crossing budget ran out (594 of 2000 such inputs failed).
+fn near_concurrent_bundle(r: &mut Lcg, scale: f64) -> Vec<Segment2> {
+    let centres: Vec<(f64, f64)> = (0..1 + (r.f() * 3.0) as usize)
+        .map(|_| (r.f() * scale, r.f() * scale))
+        .collect();
+    let k = 3 + (r.f() * 8.0) as usize;
+    (0..k)
+        .map(|_| {
+            let (cx, cy) = centres[(r.f() * centres.len() as f64) as usize];
+            let angle = r.f() * std::f64::consts::PI;
+            let (dx, dy) = (angle.cos(), angle.sin());
+            let (l0, l1) = ((0.05 + r.f()) * scale, (0.05 + r.f()) * scale);
+            Segment2::new(
+                Point2::new(cx - l0 * dx, cy - l0 * dy),
+                Point2::new(cx + l1 * dx, cy + l1 * dy),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn near_concurrent_crossings_meet_once() {
+    let p = |x, y| Point2::new(x, y);
+    let smallest = [
+        Segment2::new(
+            p(0.8029563997699567, 0.69526718032915),
+            p(0.23671726779248814, 1.3945039391876004),
+        ),
+        Segment2::new(
+            p(0.9575945092869936, 0.6254387566324116),
+            p(0.02883566739624377, 1.2616311416464248),
+        ),
+        Segment2::new(
+            p(0.7325039517408075, 0.09309319493285784),
+            p(0.7399218773311586, 1.1473819835660362),
+        ),
+    ];
+    let cdt = constrained_delaunay(&[], &smallest).unwrap();
+    verify_cdt(&cdt).unwrap();
+    assert_covered(&[], &smallest, &cdt);
+    let mut r = Lcg(2026);
+    for scale in [1.0, 1e-3, 1e6] {
+        for case in 0..300 {
+            let segs = near_concurrent_bundle(&mut r, scale);
+            let cdt = constrained_delaunay(&[], &segs)
+                .unwrap_or_else(|e| panic!("scale {scale} case {case}: {e}: {segs:?}"));
+            verify_cdt(&cdt).unwrap();
+            assert_covered(&[], &segs, &cdt);
+        }
+    }
+}

@@ -14,7 +14,9 @@
 //! rounded to the nearest `f64` point, which becomes a Steiner vertex (listed after the
 //! input vertices), and both constraints become pieces through it (see `constrain.rs` for
 //! the exact meaning: the result is the exact CDT of the vertices and the pieces, which
-//! deviate from the input segments by at most half an ulp per coordinate at the crossings).
+//! deviate from the input segments by at most four ulps per coordinate at their vertices:
+//! half an ulp at a rounded crossing, more where segments through nearly one point are
+//! made to meet at one vertex).
 //!
 //! [`polygon_delaunay`] constrains every ring edge and keeps the triangles inside the
 //! polygons (odd nesting depth of constraint loops: holes removed).

@@ -15,9 +15,13 @@
 //! split the same way (the number of such splits is bounded, else `Err`).
 //! Crossings are taken between the *input* segments the pieces come from when those
 //! properly cross (so all constraints through one input crossing meet at one rounded
-//! point), and a bent piece passing within rounding of a vertex that its input segment goes
-//! through is routed through that vertex (see `Constrained::meeting_vertex`): otherwise
-//! pieces meet at angles of ~10⁻¹⁶ that Delaunay refinement splits without end. The result is the
+//! point), and a bent piece is routed through every vertex alongside it that its input
+//! segment passes within a few ulps of (see `snap_radius`, `Constrained::meeting_vertex`):
+//! otherwise pieces meet at angles of ~10⁻¹⁶ that Delaunay refinement splits without end,
+//! and segments through (nearly) one point, whose pairwise crossings round to points an
+//! ulp apart on the wrong sides of each other, are split back and forth between them. So
+//! a bent piece deviates from its input segment by at most `snap_radius` (four ulps of the
+//! larger coordinate) per coordinate at its vertices. The result is the
 //! exact constrained Delaunay triangulation of the vertices (inputs and Steiner points) and
 //! the pieces: every piece is an edge and every other edge is locally Delaunay by the exact
 //! in-circle test.
@@ -548,14 +552,49 @@ fn same_direction(a: Point2, x: Point2, b: Point2) -> bool {
     sign(x.x, a.x) * sign(b.x, a.x) > 0 || sign(x.y, a.y) * sign(b.y, a.y) > 0
 }
 
-/// Does segment p–d properly cross segment a–b (interiors meet in one point)?
-/// Whether `z` lies exactly on the line of the input segment `o` and strictly inside the
-/// circle with diameter `p–q` (a piece of `o`, possibly bent): the vertex a bent piece
-/// must pass through (exact orientation and dot-product signs).
-fn on_segment_near_piece(z: Point2, (o0, o1): (Point2, Point2), (p, q): (Point2, Point2)) -> bool {
-    orient(o0, o1, z) == 0 && dot_sign(z, p, q) == std::cmp::Ordering::Less
+/// Whether the vertex `z` is one that a (possibly bent) piece `p–q` of the input segment
+/// `o` must pass through: `o` passes within [`snap_radius`] of `z` (exactly: `o` meets the
+/// closed square of that half-side centred on `z`) and `z` is strictly inside the circle
+/// with diameter `p–q` (it lies alongside the piece, not beyond an end).
+fn on_segment_near_piece(z: Point2, o: (Point2, Point2), (p, q): (Point2, Point2)) -> bool {
+    passes_near(z, o) && dot_sign(z, p, q) == std::cmp::Ordering::Less
 }
 
+/// How close (per coordinate) an input segment must pass to a vertex for its pieces to be
+/// routed through it: a few units in the last place of the vertex's larger coordinate.
+/// Rounded crossings lie within half an ulp of each of their two segments, so several
+/// segments through one point (or nearly) have pairwise crossings a few ulps apart; with
+/// this radius they all meet at the first of them instead of at points an ulp apart on
+/// the wrong sides of each other (which would make the pieces cross again without end).
+fn snap_radius(z: Point2) -> f64 {
+    const SNAP_ULPS: f64 = 4.0;
+    let m = z.x.abs().max(z.y.abs());
+    let ulp = if m == 0.0 {
+        f64::from_bits(1)
+    } else {
+        m - f64::from_bits(m.to_bits() - 1)
+    };
+    SNAP_ULPS * ulp
+}
+
+/// Does the segment `o` meet the closed square of half-side [`snap_radius`]`(z)` centred
+/// on `z`? Exact: the boxes overlap and the corners are not all strictly on one side of
+/// the line of `o`.
+fn passes_near(z: Point2, (o0, o1): (Point2, Point2)) -> bool {
+    let r = snap_radius(z);
+    let (x0, x1, y0, y1) = (z.x - r, z.x + r, z.y - r, z.y + r);
+    if ![x0, x1, y0, y1].iter().all(|c| c.is_finite()) {
+        return orient(o0, o1, z) == 0;
+    }
+    if o0.x.max(o1.x) < x0 || o0.x.min(o1.x) > x1 || o0.y.max(o1.y) < y0 || o0.y.min(o1.y) > y1 {
+        return false;
+    }
+    let sides =
+        [(x0, y0), (x1, y0), (x1, y1), (x0, y1)].map(|(x, y)| orient(o0, o1, Point2::new(x, y)));
+    !(sides.iter().all(|&s| s > 0) || sides.iter().all(|&s| s < 0))
+}
+
+/// Does segment p–d properly cross segment a–b (interiors meet in one point)?
 fn crosses(a: Point2, b: Point2, p: Point2, d: Point2) -> bool {
     orient(a, b, p) * orient(a, b, d) < 0 && orient(p, d, a) * orient(p, d, b) < 0
 }
