@@ -493,12 +493,14 @@ fn crossing_constraints_near_grid_points() {
 /// Segments through a few common centres (each end rounded, so the lines miss the centre
 /// by an ulp or so): their pairwise crossings round to points an ulp or two apart, each on
 /// the wrong side of a third segment, and the pieces used to be split back and forth
-/// between them until the crossing budget ran out (594 of 2000 such inputs failed).
-fn near_concurrent_bundle(r: &mut Lcg, scale: f64) -> Vec<Segment2> {
+/// between them until the crossing budget ran out (594 of 2000 such inputs of up to 10
+/// segments failed; with up to 43, 3 in 5000 still did when only crossings met during
+/// insertion were rounded, before snap rounding).
+fn near_concurrent_bundle(r: &mut Lcg, scale: f64, most: usize) -> Vec<Segment2> {
     let centres: Vec<(f64, f64)> = (0..1 + (r.f() * 3.0) as usize)
         .map(|_| (r.f() * scale, r.f() * scale))
         .collect();
-    let k = 3 + (r.f() * 8.0) as usize;
+    let k = 3 + (r.f() * (most - 2) as f64) as usize;
     (0..k)
         .map(|_| {
             let (cx, cy) = centres[(r.f() * centres.len() as f64) as usize];
@@ -530,13 +532,35 @@ fn near_concurrent_crossings_meet_once() {
             p(0.7399218773311586, 1.1473819835660362),
         ),
     ];
-    let cdt = constrained_delaunay(&[], &smallest).unwrap();
-    verify_cdt(&cdt).unwrap();
-    assert_covered(&[], &smallest, &cdt);
+    // Four segments: two rounded crossings 4.5 ulps apart, a third segment passing
+    // within rounding of one and a fourth of the other.
+    let four = [
+        Segment2::new(
+            p(-0.6390338935861394, 0.12607355335803666),
+            p(0.25626865524771003, 0.6142298900017252),
+        ),
+        Segment2::new(
+            p(-0.5372045469468751, 0.24027627820740077),
+            p(1.012881539784735, 0.9389946202028013),
+        ),
+        Segment2::new(
+            p(0.39067826138081757, -0.42470578530157344),
+            p(-0.22687630793757352, 1.4774132993155515),
+        ),
+        Segment2::new(
+            p(0.09192191305550236, 0.36774046715190734),
+            p(0.04943778309712854, 1.1739721996634047),
+        ),
+    ];
+    for segs in [&smallest[..], &four[..]] {
+        let cdt = constrained_delaunay(&[], segs).unwrap();
+        verify_cdt(&cdt).unwrap();
+        assert_covered(&[], segs, &cdt);
+    }
     let mut r = Lcg(2026);
-    for scale in [1.0, 1e-3, 1e6] {
+    for (scale, most) in [(1.0, 10), (1e-3, 10), (1e6, 10), (1.0, 43)] {
         for case in 0..300 {
-            let segs = near_concurrent_bundle(&mut r, scale);
+            let segs = near_concurrent_bundle(&mut r, scale, most);
             let cdt = constrained_delaunay(&[], &segs)
                 .unwrap_or_else(|e| panic!("scale {scale} case {case}: {e}: {segs:?}"));
             verify_cdt(&cdt).unwrap();

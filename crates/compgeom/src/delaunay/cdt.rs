@@ -10,13 +10,16 @@
 //! Degenerate input: a vertex lying exactly on a constraint splits it there (both pieces
 //! are constrained); repeated and zero-length constraints are merged / ignored; collinear
 //! overlapping constraints merge into shared pieces; constraints that share endpoints are
-//! fine. Constraints that **cross** are split at their crossing: the exact crossing is
-//! rounded to the nearest `f64` point, which becomes a Steiner vertex (listed after the
-//! input vertices), and both constraints become pieces through it (see `constrain.rs` for
-//! the exact meaning: the result is the exact CDT of the vertices and the pieces, which
-//! deviate from the input segments by at most four ulps per coordinate at their vertices:
-//! half an ulp at a rounded crossing, more where segments through nearly one point are
-//! made to meet at one vertex).
+//! fine. Constraints that **cross** are split at their crossings, snap-rounded: each
+//! exact crossing is rounded to the nearest `f64` point, which becomes a Steiner vertex
+//! (listed after the input vertices), and every constraint becomes the chain of pieces
+//! through the rounded crossings whose rounding cell it passes through (so segments
+//! through nearly one point meet at one vertex, not at several an ulp apart that bent
+//! pieces would cross again). The result is the exact CDT of the vertices and the pieces,
+//! which deviate from the input segments by at most half an ulp per coordinate at their
+//! vertices (see `snap.rs` and `constrain.rs`). Input with no crossings costs nothing
+//! extra; at the first crossing met, the constraints are snap-rounded (one intersection
+//! sweep) and inserted again.
 //!
 //! [`polygon_delaunay`] constrains every ring edge and keeps the triangles inside the
 //! polygons (odd nesting depth of constraint loops: holes removed).
@@ -27,11 +30,12 @@
 use super::constrain::{key, Constrained};
 use super::fast;
 use super::pred::orient;
+use super::snap;
 use super::triangulation::{Triangulation, NO_NEIGHBOR};
 use super::verify::check_locally_delaunay;
 use crate::kernel::ensure_finite;
 use crate::{Error, Point2, Polygon, Result, Segment2};
-use std::collections::{HashSet, VecDeque};
+use std::collections::{HashMap, HashSet, VecDeque};
 
 /// A constrained Delaunay triangulation: the triangulation and its constrained edges.
 #[derive(Debug, Clone, PartialEq)]
@@ -146,21 +150,32 @@ fn build(all: &[Point2], pairs: &[(usize, usize)], interior_only: bool) -> Resul
             constraints: Vec::new(),
         });
     };
-    let mut c = Constrained::new(mesh, false);
-    // k constraints cross at most k(k-1)/2 times; the rest is slack for rounded crossings
-    // that cross a third constraint.
-    c.crossing_budget = pairs.len().saturating_mul(pairs.len()) + 64 * pairs.len() + 1000;
-    // A segment given twice is inserted once: its first insertion may have bent it through
-    // a rounded crossing, and a second straight walk would then cross those pieces and
-    // leave near-coincident vertices joined by sliver pieces (which refinement cannot
-    // resolve: the pieces encroach on each other without end).
-    let mut inserted = std::collections::HashSet::with_capacity(pairs.len());
-    for (ci, &(i, j)) in pairs.iter().enumerate() {
-        let (a, b) = (rep[i], rep[j]);
-        if a != b && inserted.insert((a.min(b), a.max(b))) {
-            c.insert_segment(a, b, ci as u32)?;
+    // The constraints are inserted as they are, which is all there is to do unless two
+    // of them cross. At the first crossing, start again with the snap-rounded constraints
+    // (see `snap.rs`; finding every crossing first would cost a sweep on every input).
+    let mut first = Constrained::new(mesh, false);
+    first.stop_at_crossing = true;
+    let mut c = match insert_all(first, all, &rep, pairs, None)? {
+        Some(c) => c,
+        None => {
+            let segments: Vec<Segment2> = pairs
+                .iter()
+                .map(|&(i, j)| Segment2::new(all[i], all[j]))
+                .collect();
+            let snapped = snap::snap_round(&segments)?;
+            let Some(mesh) = fast::triangulate(all).0 else {
+                return Err(Error::InvalidInput(
+                    "the triangulation of the points failed on the second pass (internal error)"
+                        .into(),
+                ));
+            };
+            let second = Constrained::new(mesh, false);
+            match insert_all(second, all, &rep, pairs, Some(snapped.as_ref()))? {
+                Some(c) => c,
+                None => unreachable_crossing()?,
+            }
         }
-    }
+    };
     c.restore_dirty();
     let (t, constraints) = finish(&c, all.len(), &rep);
     let mut cdt = Cdt {
@@ -171,6 +186,68 @@ fn build(all: &[Point2], pairs: &[(usize, usize)], interior_only: bool) -> Resul
         keep_inside(&mut cdt.triangulation, &cdt.constraints);
     }
     Ok(cdt)
+}
+
+fn unreachable_crossing<T>() -> Result<T> {
+    Err(Error::InvalidInput(
+        "a crossing stopped the second pass (internal error)".into(),
+    ))
+}
+
+/// Inserts the constraints `pairs` (indices into `all`, mesh vertices `rep`). On the first
+/// pass (`snapped` is `None` and the engine stops at crossings) returns `None` at the first
+/// proper crossing. On the second, `snapped` is the snap-rounding of the constraints (or
+/// `Some(None)`: no crossing bends them) and each constraint is inserted as its chain.
+fn insert_all<'a>(
+    mut c: Constrained<'a>,
+    all: &[Point2],
+    rep: &[u32],
+    pairs: &[(usize, usize)],
+    snapped: Option<Option<&snap::Snapped>>,
+) -> Result<Option<Constrained<'a>>> {
+    // k constraints cross at most k(k-1)/2 times; the rest is slack for rounded crossings
+    // that cross a third constraint.
+    c.crossing_budget = pairs.len().saturating_mul(pairs.len()) + 64 * pairs.len() + 1000;
+    let snapped = snapped.flatten();
+    // The vertex of each point a chain goes through: a hot point or an input vertex.
+    let mut vertex_at: HashMap<(u64, u64), u32> = HashMap::new();
+    let bits = |p: Point2| (p.x.to_bits(), p.y.to_bits());
+    if let Some(s) = snapped {
+        vertex_at.extend(all.iter().zip(rep.iter()).map(|(&p, &v)| (bits(p), v)));
+        for &p in &s.hot {
+            let v = c.add_point(p).0;
+            vertex_at.insert(bits(p), v);
+        }
+    }
+    // A segment given twice is inserted once: its first insertion may have bent it through
+    // a rounded crossing, and a second straight walk would then cross those pieces and
+    // leave near-coincident vertices joined by sliver pieces (which refinement cannot
+    // resolve: the pieces encroach on each other without end).
+    let mut inserted = HashSet::with_capacity(pairs.len());
+    let mut chain = Vec::new();
+    for (ci, &(i, j)) in pairs.iter().enumerate() {
+        let (a, b) = (rep[i], rep[j]);
+        if a == b || !inserted.insert((a.min(b), a.max(b))) {
+            continue;
+        }
+        chain.clear();
+        chain.push(a);
+        if let Some(s) = snapped {
+            // The snap-rounded chain: its points are vertices already (hot points, inputs).
+            for &p in &s.inner[ci] {
+                let known = vertex_at.get(&bits(p)).copied();
+                chain.push(known.unwrap_or_else(|| c.add_point(p).0));
+            }
+            c.set_origin(ci as u32, (all[i], all[j]));
+        }
+        chain.push(b);
+        for piece in chain.windows(2) {
+            if let Err(e) = c.insert_segment(piece[0], piece[1], ci as u32) {
+                return if c.met_crossing { Ok(None) } else { Err(e) };
+            }
+        }
+    }
+    Ok(Some(c))
 }
 
 /// The result of a constrained mesh: the triangulation (the first `n_input` mesh points

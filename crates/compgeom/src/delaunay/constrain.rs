@@ -5,32 +5,27 @@
 //!
 //! # Crossing constraints
 //!
-//! When the segment `a–b` being inserted properly crosses a constrained edge `u–w`, their
-//! crossing (a constructed point, decided exactly by `kernel::Crossing`) is rounded to the
-//! nearest `f64` point `x` and inserted as a Steiner vertex (or, if `x` equals an existing
-//! vertex, that vertex is used). Then `u–w` is replaced by the pieces `u–x`, `x–w` and
-//! `a–b` by `a–x`, `x–b`, each inserted like any constraint. Rounding moves `x` off the
-//! exact crossing by at most half a unit in the last place per coordinate, so the pieces
-//! bend by that much; if a bent piece then crosses a third constraint, that crossing is
-//! split the same way (the number of such splits is bounded, else `Err`).
-//! Crossings are taken between the *input* segments the pieces come from when those
-//! properly cross (so all constraints through one input crossing meet at one rounded
-//! point), and a bent piece is routed through every vertex alongside it that its input
-//! segment passes within a few ulps of (see `snap_radius`, `Constrained::meeting_vertex`):
-//! otherwise pieces meet at angles of ~10⁻¹⁶ that Delaunay refinement splits without end,
-//! and segments through (nearly) one point, whose pairwise crossings round to points an
-//! ulp apart on the wrong sides of each other, are split back and forth between them. So
-//! a bent piece deviates from its input segment by at most `snap_radius` (four ulps of the
-//! larger coordinate) per coordinate at its vertices. The result is the
-//! exact constrained Delaunay triangulation of the vertices (inputs and Steiner points) and
-//! the pieces: every piece is an edge and every other edge is locally Delaunay by the exact
-//! in-circle test.
+//! Constraints that properly cross are snap-rounded before they are inserted (see
+//! `snap.rs`): each becomes a chain of pieces through the rounded crossings whose rounding
+//! cell it meets, and those chains do not cross. The engine still handles a crossing it
+//! meets (`Walk::Blocked`; the first pass of `cdt.rs` stops there instead): the pieces
+//! are made to meet at a vertex (see `Constrained::meeting_vertex`) — an end of one piece
+//! whose rounding cell the other's input segment meets, or else the crossing of the input
+//! segments (or of the pieces) rounded to `f64` — and both are split there; if a bent
+//! piece then crosses a third constraint, that crossing is split the same way (the number
+//! of such splits is bounded, else `Err`). A bent piece is also routed through every
+//! vertex alongside it whose rounding cell its input segment meets: otherwise pieces meet
+//! at angles of ~10⁻¹⁶ that Delaunay refinement splits without end. So every vertex of a
+//! constraint's chain lies on its input segment or within half an ulp of it per
+//! coordinate. The result is the exact constrained Delaunay triangulation of the vertices
+//! (inputs and Steiner points) and the pieces: every piece is an edge and every other edge
+//! is locally Delaunay by the exact in-circle test.
 //!
 //! Collinear overlapping constraints merge: a constraint is split at every vertex lying on
 //! it (found exactly by the walk), so the overlap becomes shared pieces.
 
 use super::mesh::{next, prev, Found, Mesh, GHOST};
-use super::pred::{dot_sign, in_circle, orient};
+use super::pred::{dot_sign, in_circle, orient, segment_meets_cell};
 use crate::kernel::Crossing;
 use crate::{Error, Point2, Result, Segment2};
 use std::collections::{HashMap, VecDeque};
@@ -83,6 +78,11 @@ pub(crate) struct Constrained<'a> {
     /// The input segment of each constraint id (its ends when first inserted): a piece
     /// bent through a rounded crossing is still split at the vertices on this segment.
     origin: HashMap<u32, (Point2, Point2), BuildHasherDefault<EdgeHasher>>,
+    /// Whether a proper crossing of two constraints ends the insertion (with an `Err`,
+    /// and `met_crossing` set) instead of being split: the constrained Delaunay
+    /// triangulation then starts again with snap-rounded constraints.
+    pub(crate) stop_at_crossing: bool,
+    pub(crate) met_crossing: bool,
 }
 
 /// What the walk from `a` towards `b` found.
@@ -113,6 +113,8 @@ impl<'a> Constrained<'a> {
             ghost_fixed,
             crossing_budget: 0,
             origin: HashMap::default(),
+            stop_at_crossing: false,
+            met_crossing: false,
         }
     }
 
@@ -227,6 +229,12 @@ impl<'a> Constrained<'a> {
         self.vmap[p as usize] = h0;
     }
 
+    /// Records that constraint `ci` comes from the input segment `o` (for a constraint
+    /// inserted as a chain of pieces; else its first piece is taken for the segment).
+    pub(crate) fn set_origin(&mut self, ci: u32, o: (Point2, Point2)) {
+        self.origin.insert(ci, o);
+    }
+
     /// Inserts the constraint `a–b` (vertex ids) with id `ci`, splitting it at vertices on
     /// it and at crossings with constrained edges (see the module docs).
     pub(crate) fn insert_segment(&mut self, a: u32, b: u32, ci: u32) -> Result<()> {
@@ -253,6 +261,10 @@ impl<'a> Constrained<'a> {
                 }
                 Walk::Split(c) => work.extend_from_slice(&[(c, b), (a, c)]),
                 Walk::Blocked(u, w) => {
+                    if self.stop_at_crossing {
+                        self.met_crossing = true;
+                        return Err(internal(ci, "crossing (first pass)"));
+                    }
                     if self.crossing_budget == 0 {
                         return Err(Error::InvalidInput(format!(
                             "constraint {ci}: too many crossings split (rounded crossing points keep creating new crossings)"
@@ -553,45 +565,11 @@ fn same_direction(a: Point2, x: Point2, b: Point2) -> bool {
 }
 
 /// Whether the vertex `z` is one that a (possibly bent) piece `p–q` of the input segment
-/// `o` must pass through: `o` passes within [`snap_radius`] of `z` (exactly: `o` meets the
-/// closed square of that half-side centred on `z`) and `z` is strictly inside the circle
-/// with diameter `p–q` (it lies alongside the piece, not beyond an end).
+/// `o` must pass through: `o` meets the rounding cell of `z` (passes within half an ulp of
+/// it per coordinate, decided exactly) and `z` is strictly inside the circle with diameter
+/// `p–q` (it lies alongside the piece, not beyond an end).
 fn on_segment_near_piece(z: Point2, o: (Point2, Point2), (p, q): (Point2, Point2)) -> bool {
-    passes_near(z, o) && dot_sign(z, p, q) == std::cmp::Ordering::Less
-}
-
-/// How close (per coordinate) an input segment must pass to a vertex for its pieces to be
-/// routed through it: a few units in the last place of the vertex's larger coordinate.
-/// Rounded crossings lie within half an ulp of each of their two segments, so several
-/// segments through one point (or nearly) have pairwise crossings a few ulps apart; with
-/// this radius they all meet at the first of them instead of at points an ulp apart on
-/// the wrong sides of each other (which would make the pieces cross again without end).
-fn snap_radius(z: Point2) -> f64 {
-    const SNAP_ULPS: f64 = 4.0;
-    let m = z.x.abs().max(z.y.abs());
-    let ulp = if m == 0.0 {
-        f64::from_bits(1)
-    } else {
-        m - f64::from_bits(m.to_bits() - 1)
-    };
-    SNAP_ULPS * ulp
-}
-
-/// Does the segment `o` meet the closed square of half-side [`snap_radius`]`(z)` centred
-/// on `z`? Exact: the boxes overlap and the corners are not all strictly on one side of
-/// the line of `o`.
-fn passes_near(z: Point2, (o0, o1): (Point2, Point2)) -> bool {
-    let r = snap_radius(z);
-    let (x0, x1, y0, y1) = (z.x - r, z.x + r, z.y - r, z.y + r);
-    if ![x0, x1, y0, y1].iter().all(|c| c.is_finite()) {
-        return orient(o0, o1, z) == 0;
-    }
-    if o0.x.max(o1.x) < x0 || o0.x.min(o1.x) > x1 || o0.y.max(o1.y) < y0 || o0.y.min(o1.y) > y1 {
-        return false;
-    }
-    let sides =
-        [(x0, y0), (x1, y0), (x1, y1), (x0, y1)].map(|(x, y)| orient(o0, o1, Point2::new(x, y)));
-    !(sides.iter().all(|&s| s > 0) || sides.iter().all(|&s| s < 0))
+    segment_meets_cell(z, o.0, o.1) && dot_sign(z, p, q) == std::cmp::Ordering::Less
 }
 
 /// Does segment p–d properly cross segment a–b (interiors meet in one point)?

@@ -60,6 +60,7 @@ mod incremental;
 mod mesh;
 pub(crate) mod pred;
 mod refine;
+mod snap;
 mod terrain;
 mod triangulation;
 mod verify;

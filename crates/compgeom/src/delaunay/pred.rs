@@ -241,6 +241,91 @@ pub(crate) fn strictly_between(a: Point2, b: Point2, q: Point2) -> bool {
     (lo.x, lo.y) < (q.x, q.y) && (q.x, q.y) < (hi.x, hi.y)
 }
 
+/// The neighbouring `f64` values of a finite `v`: (below, above), infinite past the range.
+fn neighbours(v: f64) -> (f64, f64) {
+    let step = |x: f64, up: bool| {
+        if x == 0.0 {
+            let tiny = f64::from_bits(1);
+            return if up { tiny } else { -tiny };
+        }
+        // Away from zero is one more in the bit pattern, towards zero one less.
+        let away = (x > 0.0) == up;
+        f64::from_bits(if away {
+            x.to_bits() + 1
+        } else {
+            x.to_bits() - 1
+        })
+    };
+    (step(v, false), step(v, true))
+}
+
+/// The closed rounding cell of the finite `v`: the reals within half a gap of `v`, as the
+/// offsets `(below, above)` (both ≥ 0). Half a gap is exact except below the smallest
+/// normal gap, where the whole gap is used (a slightly larger cell); at `±f64::MAX` the
+/// inner gap is used on both sides.
+fn cell_offsets(v: f64) -> (f64, f64) {
+    let (lo, hi) = neighbours(v);
+    let half = |gap: f64| {
+        if (gap / 2.0) * 2.0 == gap {
+            gap / 2.0
+        } else {
+            gap
+        }
+    };
+    let (below, above) = (half(v - lo), half(hi - v));
+    match (below.is_finite(), above.is_finite()) {
+        (true, false) => (below, below),
+        (false, true) => (above, above),
+        _ => (below, above),
+    }
+}
+
+/// `a - (z + d)`, exactly.
+fn offset_diff<T: Arith>(a: f64, z: f64, d: f64) -> T {
+    T::diff(a, z).minus(&T::val(d))
+}
+
+/// orient2d(o0, o1, z + (dx, dy)), exactly (the corner need not be an `f64` point).
+fn corner_side<T: Arith>(o0: Point2, o1: Point2, z: Point2, dx: f64, dy: f64) -> T {
+    let (ux, uy) = (T::diff(o1.x, o0.x), T::diff(o1.y, o0.y));
+    let px = T::diff(z.x, o0.x).plus(&T::val(dx));
+    let py = T::diff(z.y, o0.y).plus(&T::val(dy));
+    ux.times(&py).minus(&uy.times(&px))
+}
+
+/// Does the closed segment `o0–o1` meet the rounding cell of the point `z` (the closed
+/// box of reals that round to `z`, see `cell_offsets`)? Exact: the boxes overlap and the
+/// cell's corners are not all strictly on one side of the segment's line.
+pub(crate) fn segment_meets_cell(z: Point2, o0: Point2, o1: Point2) -> bool {
+    let (xl, xh) = cell_offsets(z.x);
+    let (yl, yh) = cell_offsets(z.y);
+    let outside = |lo: f64, hi: f64, zc: f64, below: f64, above: f64| {
+        exact_sign!(offset_diff(hi, zc, -below)) == Ordering::Less
+            || exact_sign!(offset_diff(lo, zc, above)) == Ordering::Greater
+    };
+    if outside(o0.x.min(o1.x), o0.x.max(o1.x), z.x, xl, xh)
+        || outside(o0.y.min(o1.y), o0.y.max(o1.y), z.y, yl, yh)
+    {
+        return false;
+    }
+    let sides = [(-xl, -yl), (xh, -yl), (xh, yh), (-xl, yh)]
+        .map(|(dx, dy)| exact_sign!(corner_side(o0, o1, z, dx, dy)));
+    !(sides.iter().all(|&s| s == Ordering::Greater) || sides.iter().all(|&s| s == Ordering::Less))
+}
+
+fn along_det<T: Arith>(p: Point2, q: Point2, a: Point2, b: Point2) -> T {
+    let (dx, dy) = (T::diff(b.x, a.x), T::diff(b.y, a.y));
+    T::diff(p.x, q.x)
+        .times(&dx)
+        .plus(&T::diff(p.y, q.y).times(&dy))
+}
+
+/// The order of `p` and `q` along the direction from `a` to `b`: the exact sign of
+/// `(p - q) · (b - a)`.
+pub(crate) fn along_cmp(p: Point2, q: Point2, a: Point2, b: Point2) -> Ordering {
+    exact_sign!(along_det(p, q, a, b))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -457,6 +542,54 @@ mod tests {
         assert_eq!(
             in_circle_grid(g[0], g[1], p(4096.0, 4095.0), g[3]),
             k_incircle(g[0], g[1], p(4096.0, 4095.0), g[3])
+        );
+    }
+
+    #[test]
+    fn rounding_cells_are_met_exactly() {
+        let p = |x, y| Point2::new(x, y);
+        // Around 1.0 the gap below is 2^-53, above 2^-52: the cell of (1, 1) is
+        // [1 - 2^-54, 1 + 2^-53] in each coordinate.
+        let z = p(1.0, 1.0);
+        assert_eq!(cell_offsets(1.0), (2f64.powi(-54), 2f64.powi(-53)));
+        // Horizontal segments on the point and through the next f64 above (beyond the
+        // cell's top side 1 + 2^-53, which is not an f64 itself).
+        let up = f64::from_bits(1f64.to_bits() + 1);
+        assert!(segment_meets_cell(z, p(0.0, 1.0), p(2.0, 1.0)));
+        assert!(!segment_meets_cell(z, p(0.0, up), p(2.0, up)));
+        // The diagonal y = x goes through the centre; the anti-diagonal x + y = 2 + 2^-52
+        // (between (1, 1 + 2^-52) and (1 + 2^-52, 1)) touches the cell only at its corner
+        // (1 + 2^-53, 1 + 2^-53); x + y = 2 + 2^-51 passes beyond it.
+        assert!(segment_meets_cell(z, p(0.0, 0.0), p(4.0, 4.0)));
+        let (e1, e2) = (1.0 + 2f64.powi(-52), 1.0 + 2f64.powi(-51));
+        assert!(segment_meets_cell(z, p(1.0, e1), p(e1, 1.0)));
+        assert!(!segment_meets_cell(z, p(1.0, e2), p(e2, 1.0)));
+        // Ends before the cell.
+        assert!(!segment_meets_cell(z, p(0.0, 1.0), p(0.5, 1.0)));
+        // Zero: half the smallest gap is not an f64, the whole gap is used.
+        let tiny = f64::from_bits(1);
+        assert_eq!(cell_offsets(0.0), (tiny, tiny));
+        assert!(segment_meets_cell(p(0.0, 0.0), p(-1.0, tiny), p(1.0, tiny)));
+        assert!(!segment_meets_cell(
+            p(0.0, 0.0),
+            p(-1.0, 2.0 * tiny),
+            p(1.0, 2.0 * tiny)
+        ));
+        // The largest finite value: the inner gap on both sides.
+        let (lo, hi) = cell_offsets(f64::MAX);
+        assert!(lo.is_finite() && lo == hi);
+    }
+
+    #[test]
+    fn order_along_a_direction_is_exact() {
+        let p = |x, y| Point2::new(x, y);
+        let (a, b) = (p(0.0, 0.0), p(1.0, 3.0));
+        assert_eq!(along_cmp(p(1.0, 0.0), p(0.0, 0.0), a, b), Ordering::Greater);
+        // (3, -1) is perpendicular to (1, 3): equal projections.
+        assert_eq!(along_cmp(p(3.0, -1.0), p(0.0, 0.0), a, b), Ordering::Equal);
+        assert_eq!(
+            along_cmp(p(3.0, -1.0), p(0.0, -f64::from_bits(1)), a, b),
+            Ordering::Greater
         );
     }
 }
