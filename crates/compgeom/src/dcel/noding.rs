@@ -208,6 +208,8 @@ struct Found {
     overlapping: Vec<(u32, u32)>,
     /// Pairs of different vertices at one point (only when the [`Ends`] are not exact).
     same: Vec<(u32, u32)>,
+    /// When not empty, the next copy of each segment (see [`Copies`]): cut where it is.
+    copies: Vec<u32>,
 }
 
 impl Found {
@@ -220,6 +222,7 @@ impl Found {
             contacts: Vec::with_capacity(n / 4 + 16),
             overlapping: Vec::with_capacity(n / 8 + 8),
             same: Vec::with_capacity(if exact { 0 } else { n / 2 + 16 }),
+            copies: Vec::new(),
         }
     }
 
@@ -849,12 +852,110 @@ impl Flat {
             return Flat::general(segments);
         }
         let ends = Ends::of(&sub);
+        // With exact ends, an edge given more than once (neighbouring rings share their
+        // common edges) is tested once: its copies get its cuts.
+        if let Some(copies) = ends.exact.then(|| Copies::of(&ends.of)).flatten() {
+            return Ok(match found_by_once(&sub, &ends, &copies, how) {
+                Some(found) => assemble::<true>(&sub, kept.as_deref(), &ends, found),
+                None => return Flat::general(segments),
+            });
+        }
         match found_by(&sub, &ends, how) {
             Some(found) if ends.exact => Ok(assemble::<true>(&sub, kept.as_deref(), &ends, found)),
             Some(found) => Ok(assemble::<false>(&sub, kept.as_deref(), &ends, found)),
             None => Flat::general(segments),
         }
     }
+}
+
+/// The segments with the same two end vertices as an earlier one (exact [`Ends`]):
+/// `first` the segments that are the first with their pair of vertices, in order;
+/// `next[k]` the next segment after `k` with the same pair (or `NONE`).
+struct Copies {
+    first: Vec<u32>,
+    next: Vec<u32>,
+}
+
+impl Copies {
+    /// The copies among the segments with end vertices `of`, or `None` when there are
+    /// none. An open-addressing hash of the vertex pairs, O(n) expected.
+    fn of(of: &[[u32; 2]]) -> Option<Copies> {
+        let n = of.len();
+        let bits = (2 * n).max(16).next_power_of_two().trailing_zeros();
+        let mask = (1usize << bits) - 1;
+        // Per slot the last segment with that pair (its key read from `of`).
+        let mut slots = vec![NONE; 1 << bits];
+        let key = |e: [u32; 2]| {
+            let (u, v) = if e[0] < e[1] {
+                (e[0], e[1])
+            } else {
+                (e[1], e[0])
+            };
+            u64::from(u) << 32 | u64::from(v)
+        };
+        let mut next = vec![NONE; n];
+        let mut first = Vec::with_capacity(n);
+        // The last segment of each chain so far, by its first one.
+        let mut last = vec![NONE; n];
+        for (k, &e) in of.iter().enumerate() {
+            let want = key(e);
+            let mut at = (want.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (64 - bits)) as usize;
+            loop {
+                let f = slots[at];
+                if f == NONE {
+                    slots[at] = k as u32;
+                    last[k] = k as u32;
+                    first.push(k as u32);
+                    break;
+                }
+                if key(of[f as usize]) == want {
+                    next[last[f as usize] as usize] = k as u32;
+                    last[f as usize] = k as u32;
+                    break;
+                }
+                at = (at + 1) & mask;
+            }
+        }
+        (first.len() < n).then_some(Copies { first, next })
+    }
+}
+
+/// [`found_by`] testing only the first segment with each pair of end vertices (exact
+/// `ends`): the records of the others are those of their first, which is the same
+/// segment up to direction. The found records are numbered by `sub`; the copies are
+/// recorded as overlapping their first and listed in [`Found::copies`], so that the
+/// assembly cuts them where their first is cut. A pair with a copy gives the contacts at
+/// the same points as with its first, and the first (the smaller number) is the one the
+/// representative of a class of crossings would be chosen from: the arrangement is the
+/// one of testing every pair, numbered alike.
+fn found_by_once(sub: &[Segment2], ends: &Ends, copies: &Copies, how: Candidates) -> Option<Found> {
+    let once: Vec<Segment2> = copies.first.iter().map(|&k| sub[k as usize]).collect();
+    let once_ends = Ends {
+        of: copies.first.iter().map(|&k| ends.of[k as usize]).collect(),
+        points: Vec::new(),
+        count: ends.count,
+        exact: true,
+    };
+    let mut found = found_by(&once, &once_ends, how)?;
+    let first = &copies.first;
+    for c in &mut found.contacts {
+        c.a = first[c.a as usize];
+        if c.b != NONE {
+            c.b = first[c.b as usize];
+        }
+    }
+    for (i, j) in &mut found.overlapping {
+        (*i, *j) = (first[*i as usize], first[*j as usize]);
+    }
+    for &f in first {
+        let mut k = copies.next[f as usize];
+        while k != NONE {
+            found.overlapping.push((f, k));
+            k = copies.next[k as usize];
+        }
+    }
+    found.copies = copies.next.clone();
+    Some(found)
 }
 
 /// The contacts, overlaps and equal ends of the pairs of `sub` (at most 2^29 segments)
@@ -1034,6 +1135,13 @@ fn assemble<const EXACT: bool>(
         for s in [contact.a, contact.b] {
             if s != NONE {
                 cuts.push(u64::from(s) << 32 | c as u64);
+                if !found.copies.is_empty() {
+                    let mut k = found.copies[s as usize];
+                    while k != NONE {
+                        cuts.push(u64::from(k) << 32 | c as u64);
+                        k = found.copies[k as usize];
+                    }
+                }
             }
         }
     }

@@ -87,6 +87,34 @@ fn sort_by_angle(
     keyed: &mut Vec<(u8, Carrier, u32)>,
     carrier: impl Fn(u32) -> Carrier,
 ) {
+    // `x` before `y`: a smaller half-plane, or the same and a left turn from x to y.
+    let before = |x: &(u8, Carrier, u32), y: &(u8, Carrier, u32)| {
+        x.0 < y.0 || (x.0 == y.0 && x.1.turn(&y.1) == Orientation::CounterClockwise)
+    };
+    const SMALL: usize = 8;
+    if list.len() <= SMALL {
+        // Few entries (the usual vertex of a map has 3 or 4): an insertion sort of
+        // indices into a stack array of keys, entries moved as 4-byte numbers.
+        let mut keys = [(0u8, carrier(list[0]), 0u32); SMALL];
+        for (k, &h) in keys.iter_mut().zip(list.iter()) {
+            let c = carrier(h);
+            *k = (half(&c), c, h);
+        }
+        let mut order = [0u8; SMALL];
+        for i in 1..list.len() {
+            let x = &keys[i];
+            let mut j = i;
+            while j > 0 && before(x, &keys[order[j - 1] as usize]) {
+                order[j] = order[j - 1];
+                j -= 1;
+            }
+            order[j] = i as u8;
+        }
+        for (slot, &o) in list.iter_mut().zip(order.iter()) {
+            *slot = keys[o as usize].2;
+        }
+        return;
+    }
     keyed.clear();
     keyed.extend(list.iter().map(|&h| {
         let c = carrier(h);
