@@ -146,12 +146,6 @@ fn overlapping_collinear_constraints_merge() {
 fn assert_covered(pts: &[Point2], segs: &[Segment2], cdt: &compgeom::delaunay::Cdt) {
     let t = &cdt.triangulation;
     let v = t.vertices();
-    let first_steiner = pts.len() + 2 * segs.len();
-    let n_input_vertices = t.input_to_vertex()[..first_steiner.min(t.input_to_vertex().len())]
-        .iter()
-        .map(|&x| x as usize + 1)
-        .max()
-        .unwrap_or(0);
     let mut adj: std::collections::HashMap<u32, Vec<u32>> = Default::default();
     for &(a, b) in &cdt.constraints {
         adj.entry(a).or_default().push(b);
