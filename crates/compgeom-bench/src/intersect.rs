@@ -4,7 +4,9 @@
 //! * geo 0.33's `sweep::Intersections` iterator (sorts by x, then tests every pair whose
 //!   x-ranges overlap with `line_intersection`; yields one item per meeting pair);
 //! * a plain O(n²) loop over all pairs with geo's `line_intersection` (a bounding-box
-//!   test first, which only skips the call).
+//!   test first, which only skips the call), run two ways: counting the meeting pairs
+//!   (compared with compgeom's count) and collecting one `(i, j, LineIntersection)` per
+//!   meeting pair into a `Vec` (compared with compgeom's find).
 //!
 //! compgeom is timed three times: `find_intersections` (the default: exact tests of the
 //! pairs whose boxes overlap, found with a uniform grid, or the sweep when many pairs
@@ -25,6 +27,9 @@
 //!   compgeom's holds more (one 56-byte record per distinct point with correctly
 //!   rounded coordinates, sorted U/L/C lists and, for a crossing, the pair of segments
 //!   that defines its exact point; maximal overlaps; sweep order).
+//! * The O(n²) loops likewise: the counting loop against `count_intersections`, the
+//!   collecting loop (a `Vec` of 64-byte items) against `find_intersections`. Until
+//!   session 24 the table set the counting loop against `find_intersections`.
 //!
 //! Answers are compared once, outside the clock, by the number of meeting pairs
 //! (compgeom's `pair_count` for both methods and `pairs` of the count, against the
@@ -252,8 +257,9 @@ fn geo_sweep_collect(lines: &[Line<f64>]) -> Vec<(&Line<f64>, &Line<f64>, LineIn
     Intersections::from_iter(lines.iter()).collect()
 }
 
-fn geo_brute_pairs(lines: &[Line<f64>]) -> usize {
-    let boxes: Vec<[f64; 4]> = lines
+/// The boxes `[min x, max x, min y, max y]` of `lines`, for the O(n²) loops' box test.
+fn line_boxes(lines: &[Line<f64>]) -> Vec<[f64; 4]> {
+    lines
         .iter()
         .map(|l| {
             [
@@ -263,18 +269,39 @@ fn geo_brute_pairs(lines: &[Line<f64>]) -> usize {
                 l.start.y.max(l.end.y),
             ]
         })
-        .collect();
-    let mut count = 0;
+        .collect()
+}
+
+/// Calls `meet(i, j, how)` for every pair `i < j` of `lines` that meets, by a plain
+/// O(n²) loop: a box test, then geo's `line_intersection`.
+#[inline]
+fn geo_brute_each(lines: &[Line<f64>], mut meet: impl FnMut(usize, usize, LineIntersection<f64>)) {
+    let boxes = line_boxes(lines);
     for i in 0..lines.len() {
         for j in i + 1..lines.len() {
             let (a, b) = (&boxes[i], &boxes[j]);
             if a[0] > b[1] || b[0] > a[1] || a[2] > b[3] || b[2] > a[3] {
                 continue;
             }
-            count += usize::from(line_intersection(lines[i], lines[j]).is_some());
+            if let Some(how) = line_intersection(lines[i], lines[j]) {
+                meet(i, j, how);
+            }
         }
     }
+}
+
+/// The O(n²) loop keeping nothing: the number of meeting pairs.
+fn geo_brute_pairs(lines: &[Line<f64>]) -> usize {
+    let mut count = 0;
+    geo_brute_each(lines, |_, _, _| count += 1);
     count
+}
+
+/// The O(n²) loop keeping its answer: one `(i, j, intersection)` per meeting pair.
+fn geo_brute_collect(lines: &[Line<f64>]) -> Vec<(usize, usize, LineIntersection<f64>)> {
+    let mut found = Vec::new();
+    geo_brute_each(lines, |i, j, how| found.push((i, j, how)));
+    found
 }
 
 fn case(name: &str, segs: &[Segment2], brute_runs: usize) -> Result<(), String> {
@@ -324,11 +351,23 @@ fn case(name: &str, segs: &[Segment2], brute_runs: usize) -> Result<(), String> 
         );
     }
     let t_sweep = best_of(3, || sweep_intersections(black_box(segs)).unwrap()).as_secs_f64();
+    // The O(n²) loops, the counting one against compgeom's count and the collecting
+    // one against its find (each side keeping, or not keeping, its answer).
     let brute = if brute_runs == 0 {
-        "| skipped | |".to_string()
+        "| skipped | | skipped | |".to_string()
     } else {
-        let t = best_of(brute_runs, || geo_brute_pairs(black_box(&lines))).as_secs_f64();
-        format!("| {t:.4} | {:.2}× |", t / t_ours)
+        let (mut t_brute, mut t_brute_collect) = (f64::MAX, f64::MAX);
+        for _ in 0..brute_runs {
+            let t = best_of(1, || geo_brute_pairs(black_box(&lines)));
+            t_brute = t_brute.min(t.as_secs_f64());
+            let t = best_of(1, || geo_brute_collect(black_box(&lines)));
+            t_brute_collect = t_brute_collect.min(t.as_secs_f64());
+        }
+        format!(
+            "| {t_brute:.4} | {:.2}× | {t_brute_collect:.4} | {:.2}× |",
+            t_brute / t_count,
+            t_brute_collect / t_ours
+        )
     };
     println!(
         "| {name} | {} | {} | {} | {pairs} | {t_count:.4} | {t_geo:.4} | **{:.2}×** | {t_ours:.4} | {t_collect:.4} | **{:.2}×** | {t_sweep:.4} {brute}",
@@ -390,9 +429,9 @@ pub fn run(quick: bool) -> Result<(), String> {
         "## intersect: segment intersection (best of {RUNS}, interleaved; the O(n²) loop once at n = 1e5)\n"
     );
     println!(
-        "| input | n | intersection points | overlaps | meeting pairs (= geo's) | compgeom count s | geo sweep count() s | geo count / compgeom count | compgeom find s | geo sweep collect() s | geo collect / compgeom find | compgeom sweep s | geo O(n²) s | O(n²) / compgeom find |"
+        "| input | n | intersection points | overlaps | meeting pairs (= geo's) | compgeom count s | geo sweep count() s | geo count / compgeom count | compgeom find s | geo sweep collect() s | geo collect / compgeom find | compgeom sweep s | geo O(n²) count s | O(n²) count / compgeom count | geo O(n²) collect s | O(n²) collect / compgeom find |"
     );
-    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     // `COMPGEOM_BENCH_ONLY=short|long|grid` runs one input (the others are still
     // generated, so that every input is the same as in a full run).
     let only = std::env::var("COMPGEOM_BENCH_ONLY").unwrap_or_default();
