@@ -1,35 +1,49 @@
 //! [`IntersectionPoint`]: one reported point, kept small.
 //!
 //! Dense inputs report hundreds of thousands of points, nearly all of them two segments
-//! crossing. The record is 56 bytes: the rounded point, the four segment lists, and which
-//! two segments define the point when it is a crossing (the exact point is rebuilt from
-//! them on demand, [`IntersectionPoint::exact`], instead of carrying two copies of the
-//! segments). Writing the records was most of the cost of the dense case when they were
-//! 184 bytes (the memory is fresh, so every page is a fault).
+//! crossing. The record is 40 bytes: the rounded point and the four segment lists, with
+//! which two segments define the point when it is a crossing (the exact point is rebuilt
+//! from them on demand, [`IntersectionPoint::exact`], instead of carrying two copies of
+//! the segments). Writing the records was most of the cost of the dense case when they
+//! were 184 bytes (the memory is fresh, so every page is a fault); 56 → 40 bytes cut the
+//! result of long 1e3 (251k points) from 14 to 10 MB.
 //!
 //! The lists: with at most two segments every list is a sub-slice of the sorted pair
 //! (`[]`, `[i]`, `[j]` or `[i, j]`), so they are kept inline as ranges into it (no heap
 //! allocation: a crossing, a shared endpoint, an endpoint on another segment). With more
-//! segments one heap slice holds `segments ++ upper ++ lower ++ interior`.
+//! segments one heap slice holds where the first three lists end and the defining pair's
+//! second position, then `segments ++ upper ++ lower ++ interior`.
 
 use crate::kernel::{orient2d, Crossing, ExactPoint, Orientation, Point2, Segment2};
 use std::fmt;
 
-/// Marks a record that is an input point ([`IntersectionPoint::second`]).
-const INPUT: u32 = u32::MAX;
+/// Marks an input point in [`Lists::Heap`]'s header (no defining pair).
+const INPUT: usize = usize::MAX;
 
+/// In [`Lists::Inline`]'s `len`: the point is a crossing of the two segments (the
+/// defining pair is both of them; an input point has none).
+const CROSSING: u8 = 0x80;
+
+/// The lists of an [`IntersectionPoint`] (24 bytes: the tag and the small fields of
+/// `Inline` share the first word).
 #[derive(Clone)]
 enum Lists {
-    /// At most two segments, sorted in `ids[..len]`; `ranges` are the sub-slices of U(p),
-    /// L(p) and C(p).
+    /// At most two segments, sorted in `ids[..len & !CROSSING]`; `ranges` are the
+    /// sub-slices of U(p), L(p) and C(p).
     Inline {
         ids: [usize; 2],
         len: u8,
         ranges: [[u8; 2]; 3],
     },
-    /// `segments ++ upper ++ lower ++ interior`; `ends` are where the first three end.
-    Heap { ids: Box<[usize]>, ends: [u32; 3] },
+    /// `[end of segments, end of upper, end of lower, second] ++ segments ++ upper ++
+    /// lower ++ interior`, the ends counted from the start of `segments`; `second` is
+    /// the position in `segments` of the defining pair's second segment, [`INPUT`] for an
+    /// input point.
+    Heap { ids: Box<[usize]> },
 }
+
+/// Where [`Lists::Heap`]'s lists start.
+const HEADER: usize = 4;
 
 /// A point where two or more segments meet, with the segments through it.
 ///
@@ -62,9 +76,6 @@ pub struct IntersectionPoint {
     /// The nearest `f64` point (the exact point for input points).
     pub point: Point2,
     lists: Lists,
-    /// For a crossing: the position in `segments()` of the defining pair's second
-    /// segment (the first is `segments()[0]`); [`INPUT`] for an input point.
-    second: u32,
 }
 
 /// The position in a list of `u8` indices (lists of at most two).
@@ -86,10 +97,9 @@ impl IntersectionPoint {
             point,
             lists: Lists::Inline {
                 ids: [i, j],
-                len: 2,
+                len: 2 | CROSSING,
                 ranges: [[0, 0], [0, 0], [0, 2]],
             },
-            second: 1,
         }
     }
 
@@ -105,10 +115,13 @@ impl IntersectionPoint {
         let lists = if segments.len() <= 2 {
             let mut ids = [0; 2];
             ids[..segments.len()].copy_from_slice(segments);
+            // A crossing of at most two segments is defined by both (`second` is 1).
+            debug_assert!(matches!(second, None | Some(1)), "second {second:?}");
+            let flag = if second.is_some() { CROSSING } else { 0 };
             // Every subset of a sorted list of two is a contiguous sub-slice of it.
             Lists::Inline {
                 ids,
-                len: segments.len() as u8,
+                len: segments.len() as u8 | flag,
                 ranges: [
                     range_in(segments, upper),
                     range_in(segments, lower),
@@ -116,41 +129,50 @@ impl IntersectionPoint {
                 ],
             }
         } else {
-            let mut ids =
-                Vec::with_capacity(segments.len() + upper.len() + lower.len() + interior.len());
-            let mut ends = [0u32; 3];
+            let mut ends = [0; 3];
+            let mut at = 0;
             for (k, part) in [segments, upper, lower].into_iter().enumerate() {
-                ids.extend_from_slice(part);
-                ends[k] = ids.len() as u32;
+                at += part.len();
+                ends[k] = at;
             }
-            ids.extend_from_slice(interior);
+            let mut ids = Vec::with_capacity(HEADER + at + interior.len());
+            ids.extend_from_slice(&ends);
+            ids.push(second.unwrap_or(INPUT));
+            for part in [segments, upper, lower, interior] {
+                ids.extend_from_slice(part);
+            }
             Lists::Heap {
                 ids: ids.into_boxed_slice(),
-                ends,
             }
         };
-        IntersectionPoint {
-            point,
-            lists,
-            second: second.map_or(INPUT, |k| k as u32),
-        }
+        IntersectionPoint { point, lists }
     }
 
     fn list(&self, k: usize) -> &[usize] {
         match &self.lists {
             Lists::Inline { ids, len, ranges } => {
                 if k == 0 {
-                    &ids[..usize::from(*len)]
+                    &ids[..usize::from(len & !CROSSING)]
                 } else {
                     let [a, b] = ranges[k - 1];
                     &ids[usize::from(a)..usize::from(b)]
                 }
             }
-            Lists::Heap { ids, ends } => {
-                let start = if k == 0 { 0 } else { ends[k - 1] as usize };
-                let end = if k == 3 { ids.len() } else { ends[k] as usize };
-                &ids[start..end]
+            Lists::Heap { ids } => {
+                let (header, lists) = ids.split_at(HEADER);
+                let start = if k == 0 { 0 } else { header[k - 1] };
+                let end = if k == 3 { lists.len() } else { header[k] };
+                &lists[start..end]
             }
+        }
+    }
+
+    /// For a crossing: the position in `segments()` of the defining pair's second
+    /// segment (the first is `segments()[0]`).
+    fn second(&self) -> Option<usize> {
+        match &self.lists {
+            Lists::Inline { len, .. } => (len & CROSSING != 0).then_some(1),
+            Lists::Heap { ids } => (ids[HEADER - 1] != INPUT).then_some(ids[HEADER - 1]),
         }
     }
 
@@ -180,14 +202,14 @@ impl IntersectionPoint {
 
     /// Whether the point is a proper crossing (no input point lies there).
     pub fn is_crossing(&self) -> bool {
-        self.second != INPUT
+        self.second().is_some()
     }
 
     /// For a crossing, the two segments (ascending) that define it: the first of
     /// [`segments`](Self::segments) and the next one not collinear with it.
     pub fn crossing_pair(&self) -> Option<(usize, usize)> {
         let s = self.segments();
-        self.is_crossing().then(|| (s[0], s[self.second as usize]))
+        self.second().map(|k| (s[0], s[k]))
     }
 
     /// The exact point: the input point, or the crossing of the two defining segments
@@ -238,7 +260,7 @@ impl fmt::Debug for IntersectionPoint {
 impl PartialEq for IntersectionPoint {
     fn eq(&self, other: &Self) -> bool {
         self.point == other.point
-            && self.second == other.second
+            && self.second() == other.second()
             && (0..4).all(|k| self.list(k) == other.list(k))
     }
 }
@@ -249,7 +271,7 @@ mod tests {
 
     #[test]
     fn the_record_is_small() {
-        assert!(std::mem::size_of::<IntersectionPoint>() <= 56);
+        assert!(std::mem::size_of::<IntersectionPoint>() <= 40);
     }
 
     #[test]
