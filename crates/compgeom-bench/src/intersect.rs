@@ -24,7 +24,7 @@
 //!   (the count of distinct points), but computes no coordinates, while geo computes an
 //!   `f64` point per pair and throws it away.
 //! * `find_intersections` against geo's `collect()`: both materialise the answer;
-//!   compgeom's holds more (one 56-byte record per distinct point with correctly
+//!   compgeom's holds more (one 40-byte record per distinct point with correctly
 //!   rounded coordinates, sorted U/L/C lists and, for a crossing, the pair of segments
 //!   that defines its exact point; maximal overlaps; sweep order).
 //! * The O(n²) loops likewise: the counting loop against `count_intersections`, the

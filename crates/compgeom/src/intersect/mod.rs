@@ -61,7 +61,7 @@
 //!
 //! ## Output size
 //!
-//! An [`IntersectionPoint`] is 56 bytes: the rounded point, its lists (inline, as ranges
+//! An [`IntersectionPoint`] is 40 bytes: the rounded point, its lists (inline, as ranges
 //! into the sorted pair, when at most two segments meet there: a crossing, a shared
 //! endpoint, a T-junction), and for a crossing the defining pair of segments, from which
 //! the exact point is rebuilt on demand.

@@ -396,10 +396,10 @@ impl<'a> SweepLanes<'a> {
         // Every column cut to the same length once, so that one range check per block
         // covers all eight loads.
         let n = self.ax.len();
-        fn col(v: &[f64], n: usize) -> &[f64] {
+        fn cut_to(v: &[f64], n: usize) -> &[f64] {
             &v[..n]
         }
-        let col = |v| col(v, n);
+        let col = |v| cut_to(v, n);
         let (ax, ay, dx, dy) = (col(&self.ax), col(&self.ay), col(&self.dx), col(&self.dy));
         let (bx, by, olo, ohi) = (col(&self.bx), col(&self.by), col(&self.olo), col(&self.ohi));
         let mut p = k + 1;
