@@ -25,7 +25,7 @@
 //! and an estimate of K ([`prefer_pairwise`]).
 
 use super::brute_force::{check_count, PairResults};
-use super::round::{round_crossings_sharing, Prepared};
+use super::round::{Dispatched, Prepared, RoundSharing};
 use super::sweep::check_finite;
 use super::Intersections;
 use crate::kernel::{segment_intersection, static_orient_bound, Segment2, SegmentIntersection};
@@ -385,6 +385,20 @@ impl<'a> SweepLanes<'a> {
         bound: f64,
         found: &mut PairResults,
     ) {
+        self.scan_from_rounding::<Dispatched>(k, segments, table, bound, found)
+    }
+
+    /// [`SweepLanes::scan_from`] with the crossings of unit `k`'s segment rounded by
+    /// `R` (every instantiation gives the same bits).
+    #[inline(always)]
+    fn scan_from_rounding<R: RoundSharing>(
+        &self,
+        k: usize,
+        segments: &[Segment2],
+        table: &[Prepared],
+        bound: f64,
+        found: &mut PairResults,
+    ) {
         let sweep = self.sweep;
         let end = k + 1 + sweep.visits_from[k] as usize;
         let (aax, aay, adx, ady) = (self.ax[k], self.ay[k], self.dx[k], self.dy[k]);
@@ -440,7 +454,7 @@ impl<'a> SweepLanes<'a> {
                 mine[len] = sweep.items[p + l].id as usize;
                 len += 1;
                 if len == BLOCK {
-                    let points = round_crossings_sharing(segments, table, a_id, &mine);
+                    let points = R::round(segments, table, a_id, &mine);
                     found.push_rounded(&points, a_id, &mine);
                     len = 0;
                 }
@@ -706,6 +720,10 @@ pub(crate) fn intersections_on(segments: &[Segment2], pairs: &Pairs) -> Intersec
     // (Two instantiations of the scan: the grid's keeps its own code.)
     match pairs.sweep_lanes(segments) {
         Some(lanes) => scan_with(segments, pairs, &table, |k, found| {
+            #[cfg(target_arch = "x86_64")]
+            if wide::scan_from(&lanes, k, segments, &table, bound, found) {
+                return;
+            }
             lanes.scan_from(k, segments, &table, bound, found)
         }),
         None => scan_with(segments, pairs, &table, |k, found| {
@@ -741,6 +759,63 @@ fn scan_with(
     found.assemble(segments)
 }
 
+/// The axis sweep's batched scan compiled a second time for x86-64 processors with AVX2
+/// and FMA (nearly all since 2013), chosen at run time, with the rounding of
+/// [`super::round`] inlined in its fused instantiation: the eight lanes of the static
+/// filter and of the rounding in 256-bit registers. The same operations in the same
+/// order (Rust does not reassociate or contract floating point), so the same bits; only
+/// the instructions differ. Long random 1e3, one thread (callgrind): 142.9M → 131.3M
+/// instructions per `find`. Compiled for AVX-512 instead it was slower (512-bit
+/// registers, 15.0 against 14.3 ms); passing the rounding as a function value kept it
+/// out of line, compiled without FMA (`mul_add` as a libm call): 17.5 ms.
+///
+/// The crate's other `unsafe` place is [`super::round`]'s `fma` module; the same
+/// argument: sound exactly when the processor has the features, checked first.
+#[cfg(target_arch = "x86_64")]
+#[allow(unsafe_code)]
+mod wide {
+    use super::super::round::AlwaysFused;
+    use super::*;
+
+    /// Whether the processor has every feature [`scan_from`]'s body is compiled for.
+    #[inline]
+    pub(super) fn available() -> bool {
+        std::arch::is_x86_feature_detected!("avx2")
+            && std::arch::is_x86_feature_detected!("fma")
+            && std::arch::is_x86_feature_detected!("avx")
+    }
+
+    /// [`SweepLanes::scan_from`] with wide vectors, where [`available`]; `false` (and
+    /// nothing done) elsewhere.
+    #[inline]
+    pub(super) fn scan_from(
+        lanes: &SweepLanes<'_>,
+        k: usize,
+        segments: &[Segment2],
+        table: &[Prepared],
+        bound: f64,
+        found: &mut PairResults,
+    ) -> bool {
+        #[target_feature(enable = "avx2,fma,avx")]
+        unsafe fn wide(
+            lanes: &SweepLanes<'_>,
+            k: usize,
+            segments: &[Segment2],
+            table: &[Prepared],
+            bound: f64,
+            found: &mut PairResults,
+        ) {
+            lanes.scan_from_rounding::<AlwaysFused>(k, segments, table, bound, found)
+        }
+        if !available() {
+            return false;
+        }
+        // SAFETY: the processor has the features `wide` is compiled for.
+        unsafe { wide(lanes, k, segments, table, bound, found) };
+        true
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -748,6 +823,64 @@ mod tests {
 
     fn seg(a: (f64, f64), b: (f64, f64)) -> Segment2 {
         Segment2::new(Point2::new(a.0, a.1), Point2::new(b.0, b.1))
+    }
+
+    /// The wide instantiation of the axis sweep's scan reports exactly what the plain one
+    /// does, on long segments (the axis sweep) with random and with degenerate
+    /// crossings: integer ends on a small grid (crossings at input points, shared
+    /// endpoints, collinear overlaps, undecided pairs for the exact test) and random
+    /// ends scaled by awkward factors (crossings rounded near ties).
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn the_wide_scan_reports_what_the_plain_one_does() {
+        if !wide::available() {
+            eprintln!("skipped: the processor has no AVX2/FMA");
+            return;
+        }
+        let mut state = 11u64;
+        let mut unit = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for case in 0..6 {
+            let scale = [1.0, 1.0 / 3.0, 1e-7, 7e9, 0.1, 1.0][case];
+            let segs: Vec<Segment2> = (0..300)
+                .map(|_| {
+                    let (xa, xb) = ((unit() * 2.0).floor(), 8.0 - (unit() * 2.0).floor());
+                    let (ya, yb) = if case % 2 == 0 {
+                        ((unit() * 9.0).floor(), (unit() * 9.0).floor())
+                    } else {
+                        (unit() * 8.0, unit() * 8.0)
+                    };
+                    seg((xa * scale, ya * scale), (xb * scale, yb * scale))
+                })
+                .collect();
+            let pairs = Pairs::new(Grid::new(&segs));
+            let lanes = pairs
+                .sweep_lanes(&segs)
+                .expect("long segments: the axis sweep");
+            let table = Prepared::table(&segs);
+            let bound = pairs.orient_bound();
+            let run = |wide: bool| {
+                let mut found = PairResults::with_capacity(0);
+                for k in 0..pairs.units() {
+                    if !(wide && wide::scan_from(&lanes, k, &segs, &table, bound, &mut found)) {
+                        lanes.scan_from(k, &segs, &table, bound, &mut found);
+                    }
+                    found.flush(&segs, &table);
+                }
+                found.assemble(&segs)
+            };
+            let (plain, fast) = (run(false), run(true));
+            assert!(
+                plain.points.len() > 1000,
+                "case {case}: {}",
+                plain.points.len()
+            );
+            assert_eq!(plain, fast, "case {case}");
+        }
     }
 
     #[test]

@@ -596,6 +596,52 @@ pub(crate) fn round_crossings_sharing<const L: usize>(
     round_crossings_sharing_with::<Native, L>(segments, table, a, bs)
 }
 
+/// How a pair scan rounds the crossings of one segment with `L` others: what
+/// [`round_crossings_sharing`] computes, by one of two instantiations.
+pub(crate) trait RoundSharing {
+    /// [`round_crossings_sharing`]'s result.
+    fn round<const L: usize>(
+        segments: &[Segment2],
+        table: &[Prepared],
+        a: usize,
+        bs: &[usize; L],
+    ) -> [Point2; L];
+}
+
+/// [`round_crossings_sharing`] itself: the products chosen at run time.
+pub(crate) struct Dispatched;
+
+impl RoundSharing for Dispatched {
+    #[inline(always)]
+    fn round<const L: usize>(
+        segments: &[Segment2],
+        table: &[Prepared],
+        a: usize,
+        bs: &[usize; L],
+    ) -> [Point2; L] {
+        round_crossings_sharing(segments, table, a, bs)
+    }
+}
+
+/// Fused products, always: for code compiled with the FMA target feature (the wide pair
+/// scan of [`super::pairwise`]), into which it inlines as hardware fused multiply-adds.
+/// Correct anywhere (`mul_add` is exact everywhere), only slow without the feature.
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct AlwaysFused;
+
+#[cfg(target_arch = "x86_64")]
+impl RoundSharing for AlwaysFused {
+    #[inline(always)]
+    fn round<const L: usize>(
+        segments: &[Segment2],
+        table: &[Prepared],
+        a: usize,
+        bs: &[usize; L],
+    ) -> [Point2; L] {
+        round_crossings_sharing_with::<Fused, L>(segments, table, a, bs)
+    }
+}
+
 /// [`round_crossings_sharing`] with the products of `P`.
 #[inline(always)]
 fn round_crossings_sharing_with<P: Products, const L: usize>(
@@ -627,8 +673,9 @@ fn round_crossings_sharing_with<P: Products, const L: usize>(
 /// chosen at run time. (FMA implies AVX, whose three-operand VEX encoding comes along;
 /// adding AVX2 changed nothing in this scalar code.)
 ///
-/// The crate's only `unsafe`: calling a function compiled for target features is
-/// sound exactly when the processor has them, which each call checks first.
+/// One of the crate's two `unsafe` places (the other is the wide pair scan of
+/// [`super::pairwise`]): calling a function compiled for target features is sound
+/// exactly when the processor has them, which each call checks first.
 #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
 #[allow(unsafe_code)]
 mod fma {
