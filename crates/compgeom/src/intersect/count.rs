@@ -254,20 +254,53 @@ struct AlongSegments {
     counts: Vec<u32>,
 }
 
+/// [`count_along_segments`]'s sink for the batched filter of the axis sweep
+/// ([`pairwise::SweepLanes::scan_batched`]): the crossings it certifies recorded
+/// straight away, the pairs it leaves open tested by [`AlongSegments::test`].
+struct AlongSink<'a> {
+    acc: &'a mut AlongSegments,
+    segments: &'a [Segment2],
+    /// The unit's segment.
+    a: usize,
+    bound: f64,
+    axis: usize,
+}
+
+impl pairwise::BatchSink for AlongSink<'_> {
+    #[inline(always)]
+    fn cross(&mut self, b: usize) {
+        let (i, j) = (self.a.min(b), self.a.max(b));
+        let (s, t) = (self.segments[i], self.segments[j]);
+        self.acc
+            .local
+            .push(crossing_rec(&Crossing { s, t }, i, j, self.axis));
+    }
+
+    #[inline(always)]
+    fn open(&mut self, b: usize) {
+        let (i, j) = (self.a.min(b), self.a.max(b));
+        self.acc.test(self.segments, i, j, self.bound, self.axis);
+    }
+}
+
+/// The record of the proper crossing `c` of segments `i < j`, by coordinate `axis`.
+#[inline]
+fn crossing_rec(c: &Crossing, i: usize, j: usize, axis: usize) -> Rec {
+    let (lo, hi) = crossing_interval(c, axis);
+    Rec {
+        lo,
+        hi,
+        pair: ((i as u64) << 32) | CROSSING | j as u64,
+    }
+}
+
 impl AlongSegments {
     /// Record how segments `i < j` meet, by the coordinate `axis` of the point (along
     /// the unit's segment, on which every point of the unit lies).
     #[inline]
     fn test(&mut self, segments: &[Segment2], i: usize, j: usize, bound: f64, axis: usize) {
         let (s, t) = (segments[i], segments[j]);
-        let crossing = |c: &Crossing| {
-            let (lo, hi) = crossing_interval(c, axis);
-            Rec {
-                lo,
-                hi,
-                pair: ((i as u64) << 32) | CROSSING | j as u64,
-            }
-        };
+        let crossing = |c: &Crossing| crossing_rec(c, i, j, axis);
         match quick_crossing_static(s, t, bound) {
             Some(false) => return,
             Some(true) => return self.local.push(crossing(&Crossing { s, t })),
@@ -389,6 +422,8 @@ fn input_pair(segments: &[Segment2], p: Point2, i: usize, j: usize) -> u64 {
 /// exactly.
 fn count_along_segments(segments: &[Segment2], pairs: &Pairs) -> Option<IntersectionCount> {
     let bound = pairs.orient_bound();
+    // The batched filter of the axis sweep (this method runs on the axis sweep only).
+    let lanes = pairs.sweep_lanes(segments);
     let extent = |s: &Segment2| ((s.b.x - s.a.x).abs(), (s.b.y - s.a.y).abs());
     let scan = |k: usize, acc: &mut AlongSegments| {
         let Some(a) = pairs.unit_segment(k) else {
@@ -403,7 +438,19 @@ fn count_along_segments(segments: &[Segment2], pairs: &Pairs) -> Option<Intersec
         let (dx, dy) = extent(&segments[a]);
         let axis = usize::from(dy > dx);
         acc.local.clear();
-        pairs.scan_from(k, |i, j| acc.test(segments, i, j, bound, axis));
+        match &lanes {
+            Some(lanes) => {
+                let mut sink = AlongSink {
+                    acc: &mut *acc,
+                    segments,
+                    a,
+                    bound,
+                    axis,
+                };
+                lanes.scan_batched(k, bound, &mut sink);
+            }
+            None => pairs.scan_from(k, |i, j| acc.test(segments, i, j, bound, axis)),
+        }
         acc.records += acc.local.len();
         acc.points += acc.single_groups(segments);
     };

@@ -399,14 +399,35 @@ impl<'a> SweepLanes<'a> {
         bound: f64,
         found: &mut PairResults,
     ) {
+        let mut sink = Rounding::<R> {
+            segments,
+            table,
+            bound,
+            a: self.sweep.items[k].id as usize,
+            mine: [0; BLOCK],
+            len: 0,
+            found,
+            rounding: std::marker::PhantomData,
+        };
+        self.scan_batched(k, bound, &mut sink);
+        let Rounding { a, mine, len, .. } = sink;
+        for &b in &mine[..len] {
+            found.push_crossing(segments, table, a.min(b), a.max(b));
+        }
+    }
+
+    /// The pairs of unit `k` ([`AxisSweep::scan_from`]'s pairs, with unit `k`'s segment
+    /// `a`), by the batched static filter of [`SweepLanes::scan_from`], into `sink`:
+    /// [`BatchSink::cross`] for each other segment certified to cross `a` properly,
+    /// [`BatchSink::open`] for each one the filter leaves undecided (to be tested
+    /// exactly); pairs certified apart, or whose boxes do not overlap, are skipped.
+    #[inline(always)]
+    pub(crate) fn scan_batched(&self, k: usize, bound: f64, sink: &mut impl BatchSink) {
         let sweep = self.sweep;
         let end = k + 1 + sweep.visits_from[k] as usize;
         let (aax, aay, adx, ady) = (self.ax[k], self.ay[k], self.dx[k], self.dy[k]);
         let (abx, aby) = (self.bx[k], self.by[k]);
         let (aolo, aohi) = (self.olo[k], self.ohi[k]);
-        let a_id = sweep.items[k].id as usize;
-        // Crossings of `a` not yet rounded: rounded eight at a time, `a` shared.
-        let (mut mine, mut len) = ([0usize; BLOCK], 0);
         // Every column cut to the same length once, so that one range check per block
         // covers all eight loads.
         let n = self.ax.len();
@@ -424,7 +445,7 @@ impl<'a> SweepLanes<'a> {
             let (bax, bay, bdx, bdy) = (run(ax), run(ay), run(dx), run(dy));
             let (bbx, bby, bolo, bohi) = (run(bx), run(by), run(olo), run(ohi));
             // Bit l: lane l is a certified proper crossing / is undecided.
-            let (mut cross, mut open) = (0u32, 0u32);
+            let (mut crossing_lanes, mut open_lanes) = (0u32, 0u32);
             for l in 0..BLOCK {
                 // orient(a.a, a.b, b.a), orient(a.a, a.b, b.b), orient(b.a, b.b, a.a),
                 // orient(b.a, b.b, a.b), each (q - p) × (r - p) as orient_static has it.
@@ -442,34 +463,68 @@ impl<'a> SweepLanes<'a> {
                 let crossing = (lo12 < -bound) & (hi12 > bound) & (lo34 < -bound) & (hi34 > bound);
                 // The boxes also overlap along the other axis.
                 let live = (bolo[l] <= aohi) & (aolo <= bohi[l]);
-                cross |= u32::from(live & crossing) << l;
-                open |= u32::from(live & !crossing & !apart) << l;
+                crossing_lanes |= u32::from(live & crossing) << l;
+                open_lanes |= u32::from(live & !crossing & !apart) << l;
             }
             // Only the lanes in range.
             let valid = (1u32 << m) - 1;
-            let (mut cross, mut open) = (cross & valid, open & valid);
-            while cross != 0 {
-                let l = cross.trailing_zeros() as usize;
-                cross &= cross - 1;
-                mine[len] = sweep.items[p + l].id as usize;
-                len += 1;
-                if len == BLOCK {
-                    let points = R::round(segments, table, a_id, &mine);
-                    found.push_rounded(&points, a_id, &mine);
-                    len = 0;
-                }
+            let (mut crossing_lanes, mut open_lanes) = (crossing_lanes & valid, open_lanes & valid);
+            while crossing_lanes != 0 {
+                let l = crossing_lanes.trailing_zeros() as usize;
+                crossing_lanes &= crossing_lanes - 1;
+                sink.cross(sweep.items[p + l].id as usize);
             }
-            while open != 0 {
-                let l = open.trailing_zeros() as usize;
-                open &= open - 1;
-                let b_id = sweep.items[p + l].id as usize;
-                found.test(segments, table, a_id.min(b_id), a_id.max(b_id), bound);
+            while open_lanes != 0 {
+                let l = open_lanes.trailing_zeros() as usize;
+                open_lanes &= open_lanes - 1;
+                sink.open(sweep.items[p + l].id as usize);
             }
             p += m;
         }
-        for &b_id in &mine[..len] {
-            found.push_crossing(segments, table, a_id.min(b_id), a_id.max(b_id));
+    }
+}
+
+/// What [`SweepLanes::scan_batched`] reports, segment by segment (input indices). A
+/// trait rather than closures: its methods are inlined into the scan even where the scan
+/// is compiled for wider vectors ([`wide`]); a closure would be compiled apart, without
+/// the target features.
+pub(crate) trait BatchSink {
+    /// The unit's segment and `b` cross properly (certified).
+    fn cross(&mut self, b: usize);
+    /// The filter did not decide the unit's segment and `b`.
+    fn open(&mut self, b: usize);
+}
+
+/// [`SweepLanes::scan_from_rounding`]'s sink: crossings of `a` rounded eight at a time
+/// by `R`, undecided pairs tested exactly, into `found`.
+struct Rounding<'a, R> {
+    segments: &'a [Segment2],
+    table: &'a [Prepared],
+    bound: f64,
+    a: usize,
+    /// Crossings of `a` not yet rounded.
+    mine: [usize; BLOCK],
+    len: usize,
+    found: &'a mut PairResults,
+    rounding: std::marker::PhantomData<R>,
+}
+
+impl<R: RoundSharing> BatchSink for Rounding<'_, R> {
+    #[inline(always)]
+    fn cross(&mut self, b: usize) {
+        self.mine[self.len] = b;
+        self.len += 1;
+        if self.len == BLOCK {
+            let points = R::round(self.segments, self.table, self.a, &self.mine);
+            self.found.push_rounded(&points, self.a, &self.mine);
+            self.len = 0;
         }
+    }
+
+    #[inline(always)]
+    fn open(&mut self, b: usize) {
+        let (i, j) = (self.a.min(b), self.a.max(b));
+        self.found.test(self.segments, self.table, i, j, self.bound);
     }
 }
 
