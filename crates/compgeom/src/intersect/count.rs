@@ -447,7 +447,7 @@ fn count_along_segments(segments: &[Segment2], pairs: &Pairs) -> Option<Intersec
                     bound,
                     axis,
                 };
-                lanes.scan_batched(k, bound, &mut sink);
+                lanes.scan_batched_widest(k, bound, &mut sink);
             }
             None => pairs.scan_from(k, |i, j| acc.test(segments, i, j, bound, axis)),
         }

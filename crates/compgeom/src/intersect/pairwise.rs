@@ -416,6 +416,17 @@ impl<'a> SweepLanes<'a> {
         }
     }
 
+    /// [`SweepLanes::scan_batched`], compiled for wider vectors where the processor has
+    /// them ([`wide`]).
+    #[inline]
+    pub(crate) fn scan_batched_widest(&self, k: usize, bound: f64, sink: &mut impl BatchSink) {
+        #[cfg(target_arch = "x86_64")]
+        if wide::scan_batched(self, k, bound, sink) {
+            return;
+        }
+        self.scan_batched(k, bound, sink)
+    }
+
     /// The pairs of unit `k` ([`AxisSweep::scan_from`]'s pairs, with unit `k`'s segment
     /// `a`), by the batched static filter of [`SweepLanes::scan_from`], into `sink`:
     /// [`BatchSink::cross`] for each other segment certified to cross `a` properly,
@@ -867,6 +878,27 @@ mod wide {
         }
         // SAFETY: the processor has the features `wide` is compiled for.
         unsafe { wide(lanes, k, segments, table, bound, found) };
+        true
+    }
+
+    /// [`SweepLanes::scan_batched`] with wide vectors, where [`available`]; `false` (and
+    /// nothing done) elsewhere.
+    #[inline]
+    pub(super) fn scan_batched<S: BatchSink>(
+        lanes: &SweepLanes<'_>,
+        k: usize,
+        bound: f64,
+        sink: &mut S,
+    ) -> bool {
+        #[target_feature(enable = "avx2,fma,avx")]
+        unsafe fn wide<S: BatchSink>(lanes: &SweepLanes<'_>, k: usize, bound: f64, sink: &mut S) {
+            lanes.scan_batched(k, bound, sink)
+        }
+        if !available() {
+            return false;
+        }
+        // SAFETY: the processor has the features `wide` is compiled for.
+        unsafe { wide(lanes, k, bound, sink) };
         true
     }
 }
