@@ -187,6 +187,23 @@
 //! same load, three runs: find vs geo collect() 0.94×, 1.20×, 0.95× (not a quiet
 //! figure). Short 1e5 (grid path, unchanged code): +4M instructions per call (~2%,
 //! inlining differences in `Grid::new` and `Prepared::of`).
+//!
+//! Session 24, long random 1e3 (`examples/intersect_profile`, one thread, callgrind per
+//! call): find 143.6M → 131.3M (the axis sweep's batched scan compiled a second time for
+//! AVX2+FMA with the fused rounding inlined; `IntersectionPoint` 56 → 40 bytes), count
+//! 108.8M → 78.7M (count uses the same batched filter instead of a branchy test per
+//! pair, and its wide instantiation). Wall, one thread, example binaries alternating,
+//! best of 15, load 1.5–2.9 (a helper running callgrind): find 14.9 → 14.1 ms (the
+//! smaller record), then 13.0–14.2 → 12.4–12.7 ms (the wide scan); count 10.4 →
+//! 8.5–8.8 ms. This bench at that load,
+//! one thread: count vs geo `count()` 1.35–1.37×, vs the counting O(n²) loop
+//! 1.11–1.19×; find vs geo `collect()` 0.69–0.74×, vs the collecting loop 0.56–0.65×.
+//! Find is slower here (18–21 ms) than in the example driver (12.6–14.6 ms) at the same
+//! load: not page faults (116–211 per call after the first rounds, counted in the
+//! bench); most likely the memory the rounds leave (geo's 27 MB collect between two
+//! finds) — not settled. With two threads, when the second vCPU runs, find is
+//! 7.1–7.6 ms in the driver and 10.4–10.5 ms here (1.14–1.16× geo `collect()`,
+//! 1.01–1.03× the collecting loop); when it does not, it runs as one thread.
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
