@@ -198,10 +198,11 @@
 //! 8.5–8.8 ms. This bench at that load,
 //! one thread: count vs geo `count()` 1.35–1.37×, vs the counting O(n²) loop
 //! 1.11–1.19×; find vs geo `collect()` 0.69–0.74×, vs the collecting loop 0.56–0.65×.
-//! Find is slower here (18–21 ms) than in the example driver (12.6–14.6 ms) at the same
-//! load: not page faults (116–211 per call after the first rounds, counted in the
-//! bench); most likely the memory the rounds leave (geo's 27 MB collect between two
-//! finds) — not settled. With two threads, when the second vCPU runs, find is
+//! Find is slower here (18–21 ms) than the driver's best at other moments (12.6–14.6
+//! ms); run right after each other the two differ by 10–15% (bench 20.9 ms with the
+//! timer around the drop, driver 17.5–18.4 ms, load 2.5), without page faults in the
+//! bench (0 per call after the first round): the load moved, not the code.
+//! With two threads, when the second vCPU runs, find is
 //! 7.1–7.6 ms in the driver and 10.4–10.5 ms here (1.14–1.16× geo `collect()`,
 //! 1.01–1.03× the collecting loop); when it does not, it runs as one thread.
 
