@@ -1244,8 +1244,15 @@ fn assemble<const EXACT: bool>(
         } else {
             [2 * k as u32, 2 * k as u32 + 1]
         };
-        // The start of a segment joined to the end of the one before is that vertex.
-        chain.push(if !EXACT && k > 0 && sub[k - 1].b == sub[k].a {
+        // The start of a segment joined to the end of the one before is that vertex (with
+        // exact ends: the same input vertex, as at every step along a ring).
+        let joined = k > 0
+            && if EXACT {
+                ends.of[k - 1][1] == a
+            } else {
+                sub[k - 1].b == sub[k].a
+            };
+        chain.push(if joined {
             prev_end
         } else {
             vertex(a, &mut parent)
@@ -1287,7 +1294,8 @@ fn assemble<const EXACT: bool>(
             ));
         }
     }
-    pieces.finish_numbered(Vertices::rounded_exact(vertices, approx))
+    // (Sources were pushed segment by segment: ascending within each edge.)
+    pieces.finish_numbered(Vertices::rounded_exact(vertices, approx), true)
 }
 
 #[cfg(test)]
