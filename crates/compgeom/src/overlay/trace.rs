@@ -752,6 +752,20 @@ fn windings_left_of_by(
         // The strips' scan budget: past it the nearest-edge search is cheaper (long
         // segments across many queries' lines).
         let mut budget = 4 * n + 4096;
+        // Equal buckets over [y_min, y_max]: `bucket` is monotone in y (rounding is),
+        // so the queries in buckets below lo's are all below lo, and `first[b]` (the
+        // number of queries in buckets below b) is where the search for lo starts: a
+        // few steps instead of a binary search per segment. (−0 and 0 share a bucket.)
+        let buckets = 4 * ys.len();
+        let inv = buckets as f64 / (y_max - y_min);
+        let bucket = |y: f64| (((y - y_min) * inv) as usize).min(buckets - 1);
+        let mut first = vec![0u32; buckets + 1];
+        for &y in &ys {
+            first[bucket(y) + 1] += 1;
+        }
+        for b in 0..buckets {
+            first[b + 1] += first[b];
+        }
         for (i, &s) in segs.iter().enumerate() {
             let (lo, hi) = (s.a.y.min(s.b.y), s.a.y.max(s.b.y));
             // Only queries with lo <= q.y < hi can count (never for horizontal ones).
@@ -760,7 +774,11 @@ fn windings_left_of_by(
             }
             // (total_cmp orders as < does here: only -0 and 0 differ, on which `<`
             // agrees, so the predicate is monotone along `ys`.)
-            let from = ys.partition_point(|&y| y < lo);
+            let mut from = first[bucket(lo)] as usize;
+            while from < ys.len() && ys[from] < lo {
+                from += 1;
+            }
+            debug_assert_eq!(from, ys.partition_point(|&y| y < lo));
             for (&y, &k) in ys[from..].iter().zip(&order[from..]) {
                 if y >= hi {
                     break;
