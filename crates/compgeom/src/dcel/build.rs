@@ -394,18 +394,28 @@ pub(crate) fn push_ring_segments(
     if reversed {
         // The reversed sequence r[n − 1], …, r[0]: segment i runs from r[n − 1 − i] to
         // r[n − 2 − i], the last from r[0] back to r[n − 1].
-        for i in (0..n).rev() {
-            let s = Segment2::new(r[i], r[(i + n - 1) % n]);
+        // (Pairs of neighbours without a division per point: the windows from the end,
+        // then r[0] → r[n − 1].)
+        for w in r.windows(2).rev() {
+            let s = Segment2::new(w[1], w[0]);
             if !s.is_degenerate() {
                 segs.push(s);
             }
         }
+        let s = Segment2::new(r[0], r[n - 1]);
+        if !s.is_degenerate() {
+            segs.push(s);
+        }
     } else {
-        for i in 0..n {
-            let s = Segment2::new(r[i], r[(i + 1) % n]);
+        for w in r.windows(2) {
+            let s = Segment2::new(w[0], w[1]);
             if !s.is_degenerate() {
                 segs.push(s);
             }
+        }
+        let s = Segment2::new(r[n - 1], r[0]);
+        if !s.is_degenerate() {
+            segs.push(s);
         }
     }
     Ok(())

@@ -329,11 +329,13 @@ impl Pieces {
     {
         let renumbered = renumber_vertices(&mut self.edges, &vertices);
         drop(vertices);
-        self.finish_numbered(renumbered)
+        self.finish_numbered(renumbered, false)
     }
 
-    /// The flat arrangement, vertices already numbered in order of first use by the edges.
-    pub(super) fn finish_numbered(self, vertices: impl Into<Vertices>) -> Flat {
+    /// The flat arrangement, vertices already numbered in order of first use by the edges;
+    /// `in_order` when the pairs of each edge come in ascending segment order (then the
+    /// stable placement by edge below leaves them so, and they are not sorted again).
+    pub(super) fn finish_numbered(self, vertices: impl Into<Vertices>, in_order: bool) -> Flat {
         let Pieces { edges, pairs } = self;
         // One source per edge, in edge order (no overlaps): nothing to sort.
         let vertices = vertices.into();
@@ -363,12 +365,20 @@ impl Pieces {
             sources[fill[e as usize] as usize] = src;
             fill[e as usize] += 1;
         }
-        for i in 0..edges.len() {
-            let (a, b) = (src_start[i] as usize, src_start[i + 1] as usize);
-            if b - a > 1 {
-                sources[a..b].sort_unstable_by_key(|s| s.segment);
+        if !in_order {
+            for i in 0..edges.len() {
+                let (a, b) = (src_start[i] as usize, src_start[i + 1] as usize);
+                if b - a > 1 {
+                    sources[a..b].sort_unstable_by_key(|s| s.segment);
+                }
             }
         }
+        debug_assert!((0..edges.len()).all(|i| {
+            let (a, b) = (src_start[i] as usize, src_start[i + 1] as usize);
+            sources[a..b]
+                .windows(2)
+                .all(|w| w[0].segment < w[1].segment)
+        }));
         Flat {
             vertices,
             edges,
@@ -382,14 +392,21 @@ impl Flat {
     /// The arrangement by the fastest exact path for the input.
     /// Non-finite coordinates are an error naming the segment.
     pub(crate) fn of_segments(segments: &[Segment2]) -> Result<Flat> {
-        for (i, s) in segments.iter().enumerate() {
-            for p in [s.a, s.b] {
-                if !p.is_finite() {
-                    let value = if p.x.is_finite() { p.y } else { p.x };
-                    return Err(Error::NonFinite {
-                        what: format!("segment {i}"),
-                        value,
-                    });
+        // x · 0 is 0 (or −0) for finite x, NaN for infinities and NaN: one sum without
+        // branches tells whether all are finite; only then the segment is looked for.
+        let zero = segments.iter().fold(0.0, |acc, s| {
+            acc + (s.a.x * 0.0 + s.a.y * 0.0) + (s.b.x * 0.0 + s.b.y * 0.0)
+        });
+        if zero != 0.0 {
+            for (i, s) in segments.iter().enumerate() {
+                for p in [s.a, s.b] {
+                    if !p.is_finite() {
+                        let value = if p.x.is_finite() { p.y } else { p.x };
+                        return Err(Error::NonFinite {
+                            what: format!("segment {i}"),
+                            value,
+                        });
+                    }
                 }
             }
         }
@@ -516,7 +533,8 @@ impl Flat {
         let both: Vec<(ExactPoint, Point2)> = vertices.into_iter().zip(approx).collect();
         let both = renumber_vertices(&mut pieces.edges, &both);
         let (vertices, approx) = both.into_iter().unzip();
-        Ok(pieces.finish_numbered(Vertices::rounded_exact(vertices, approx)))
+        // (Sources were pushed segment by segment: ascending within each edge.)
+        Ok(pieces.finish_numbered(Vertices::rounded_exact(vertices, approx), true))
     }
 
     /// The arrangement of horizontal and vertical segments (zero-length ones skipped),

@@ -208,7 +208,8 @@ struct Found {
     overlapping: Vec<(u32, u32)>,
     /// Pairs of different vertices at one point (only when the [`Ends`] are not exact).
     same: Vec<(u32, u32)>,
-    /// When not empty, the next copy of each segment (see [`Copies`]): cut where it is.
+    /// When not empty, per segment the first segment with its two end vertices when it is
+    /// a copy, else `NONE` (see [`Copies`]): its pieces are its first's.
     copies: Vec<u32>,
 }
 
@@ -853,9 +854,9 @@ impl Flat {
         }
         let ends = Ends::of(&sub);
         // With exact ends, an edge given more than once (neighbouring rings share their
-        // common edges) is tested once: its copies get its cuts.
+        // common edges) is tested once: its copies take its pieces.
         if let Some(copies) = ends.exact.then(|| Copies::of(&ends.of)).flatten() {
-            return Ok(match found_by_once(&sub, &ends, &copies, how) {
+            return Ok(match found_by_once(&sub, &ends, copies, how) {
                 Some(found) => assemble::<true>(&sub, kept.as_deref(), &ends, found),
                 None => return Flat::general(segments),
             });
@@ -870,10 +871,10 @@ impl Flat {
 
 /// The segments with the same two end vertices as an earlier one (exact [`Ends`]):
 /// `first` the segments that are the first with their pair of vertices, in order;
-/// `next[k]` the next segment after `k` with the same pair (or `NONE`).
+/// `copy_of[k]` the first segment with the pair of `k` when `k` is a copy (or `NONE`).
 struct Copies {
     first: Vec<u32>,
-    next: Vec<u32>,
+    copy_of: Vec<u32>,
 }
 
 impl Copies {
@@ -883,7 +884,7 @@ impl Copies {
         let n = of.len();
         let bits = (2 * n).max(16).next_power_of_two().trailing_zeros();
         let mask = (1usize << bits) - 1;
-        // Per slot the last segment with that pair (its key read from `of`).
+        // Per slot the first segment with that pair (its key read from `of`).
         let mut slots = vec![NONE; 1 << bits];
         let key = |e: [u32; 2]| {
             let (u, v) = if e[0] < e[1] {
@@ -893,10 +894,8 @@ impl Copies {
             };
             u64::from(u) << 32 | u64::from(v)
         };
-        let mut next = vec![NONE; n];
+        let mut copy_of = vec![NONE; n];
         let mut first = Vec::with_capacity(n);
-        // The last segment of each chain so far, by its first one.
-        let mut last = vec![NONE; n];
         for (k, &e) in of.iter().enumerate() {
             let want = key(e);
             let mut at = (want.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (64 - bits)) as usize;
@@ -904,31 +903,29 @@ impl Copies {
                 let f = slots[at];
                 if f == NONE {
                     slots[at] = k as u32;
-                    last[k] = k as u32;
                     first.push(k as u32);
                     break;
                 }
                 if key(of[f as usize]) == want {
-                    next[last[f as usize] as usize] = k as u32;
-                    last[f as usize] = k as u32;
+                    copy_of[k] = f;
                     break;
                 }
                 at = (at + 1) & mask;
             }
         }
-        (first.len() < n).then_some(Copies { first, next })
+        (first.len() < n).then_some(Copies { first, copy_of })
     }
 }
 
 /// [`found_by`] testing only the first segment with each pair of end vertices (exact
 /// `ends`): the records of the others are those of their first, which is the same
 /// segment up to direction. The found records are numbered by `sub`; the copies are
-/// recorded as overlapping their first and listed in [`Found::copies`], so that the
-/// assembly cuts them where their first is cut. A pair with a copy gives the contacts at
+/// listed in [`Found::copies`], so that the assembly gives them their first's pieces
+/// (the same edges, cut at the same points). A pair with a copy gives the contacts at
 /// the same points as with its first, and the first (the smaller number) is the one the
 /// representative of a class of crossings would be chosen from: the arrangement is the
 /// one of testing every pair, numbered alike.
-fn found_by_once(sub: &[Segment2], ends: &Ends, copies: &Copies, how: Candidates) -> Option<Found> {
+fn found_by_once(sub: &[Segment2], ends: &Ends, copies: Copies, how: Candidates) -> Option<Found> {
     let once: Vec<Segment2> = copies.first.iter().map(|&k| sub[k as usize]).collect();
     let once_ends = Ends {
         of: copies.first.iter().map(|&k| ends.of[k as usize]).collect(),
@@ -947,14 +944,7 @@ fn found_by_once(sub: &[Segment2], ends: &Ends, copies: &Copies, how: Candidates
     for (i, j) in &mut found.overlapping {
         (*i, *j) = (first[*i as usize], first[*j as usize]);
     }
-    for &f in first {
-        let mut k = copies.next[f as usize];
-        while k != NONE {
-            found.overlapping.push((f, k));
-            k = copies.next[k as usize];
-        }
-    }
-    found.copies = copies.next.clone();
+    found.copies = copies.copy_of;
     Some(found)
 }
 
@@ -1134,14 +1124,8 @@ fn assemble<const EXACT: bool>(
     for (c, contact) in contacts.iter().enumerate() {
         for s in [contact.a, contact.b] {
             if s != NONE {
+                // (Copies are not cut: they take their first's pieces.)
                 cuts.push(u64::from(s) << 32 | c as u64);
-                if !found.copies.is_empty() {
-                    let mut k = found.copies[s as usize];
-                    while k != NONE {
-                        cuts.push(u64::from(k) << 32 | c as u64);
-                        k = found.copies[k as usize];
-                    }
-                }
             }
         }
     }
@@ -1237,15 +1221,51 @@ fn assemble<const EXACT: bool>(
     let mut chain: Vec<u32> = Vec::new();
     let mut next_cut = 0;
     let mut prev_end = NONE;
+    // With copies: where each segment's pairs start in `pieces.pairs` (one per piece).
+    let copy_of = &found.copies;
+    let mut piece_from: Vec<u32> = Vec::with_capacity(if copy_of.is_empty() { 0 } else { m });
     for k in 0..m {
+        if EXACT && !copy_of.is_empty() {
+            piece_from.push(pieces.pairs.len() as u32);
+            let f = copy_of[k] as usize;
+            if f != NONE as usize {
+                // A copy of segment f < k (the same two end vertices, so the same
+                // pieces: its cuts are f's): f's edges, the same way or reversed.
+                let same = ends.of[k] == ends.of[f];
+                let (p0, p1) = (piece_from[f] as usize, piece_from[f + 1] as usize);
+                for p in p0..p1 {
+                    let forward = pieces.pairs[p].1.forward == same;
+                    let e = pieces.pairs[p].0;
+                    pieces.pairs.push((
+                        e,
+                        Source {
+                            segment: input(k),
+                            forward,
+                        },
+                    ));
+                }
+                // Its end: f's end (the head of f's last piece along f) or f's start.
+                let (e, src) = pieces.pairs[if same { p1 - 1 } else { p0 }];
+                let [u, v] = pieces.edges[e as usize];
+                prev_end = if src.forward == same { v } else { u };
+                continue;
+            }
+        }
         chain.clear();
         let [a, b] = if EXACT {
             ends.of[k]
         } else {
             [2 * k as u32, 2 * k as u32 + 1]
         };
-        // The start of a segment joined to the end of the one before is that vertex.
-        chain.push(if !EXACT && k > 0 && sub[k - 1].b == sub[k].a {
+        // The start of a segment joined to the end of the one before is that vertex (with
+        // exact ends: the same input vertex, as at every step along a ring).
+        let joined = k > 0
+            && if EXACT {
+                ends.of[k - 1][1] == a
+            } else {
+                sub[k - 1].b == sub[k].a
+            };
+        chain.push(if joined {
             prev_end
         } else {
             vertex(a, &mut parent)
@@ -1287,7 +1307,8 @@ fn assemble<const EXACT: bool>(
             ));
         }
     }
-    pieces.finish_numbered(Vertices::rounded_exact(vertices, approx))
+    // (Sources were pushed segment by segment: ascending within each edge.)
+    pieces.finish_numbered(Vertices::rounded_exact(vertices, approx), true)
 }
 
 #[cfg(test)]

@@ -53,8 +53,9 @@ fn filtered_sign(ring: &[Point2]) -> Option<Orientation> {
     let n = ring.len();
     let mut sum = 0.0f64;
     let mut magnitude = 0.0f64;
-    for (i, p) in ring.iter().enumerate() {
-        let q = ring[(i + 1) % n];
+    // Each vertex with the next, the last with the first (no division per vertex).
+    let nexts = ring[1..].iter().chain(std::iter::once(&ring[0]));
+    for (p, q) in ring.iter().zip(nexts) {
         let (a, b) = (p.x * q.y, q.x * p.y);
         sum += a - b;
         magnitude += a.abs() + b.abs();

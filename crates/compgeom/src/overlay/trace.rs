@@ -182,18 +182,28 @@ fn traced(
                     db += w;
                 }
             }
-            let seg = segs[src[0].segment];
-            let (a, b) = if src[0].forward {
-                (seg.a, seg.b)
+            // The axis direction of the segment a → b (a ≠ b: the arrangement has no
+            // zero-length segments), turned for a half-edge running it backwards.
+            let (a, b) = (segs[src[0].segment].a, segs[src[0].segment].b);
+            let quad = if a.y == b.y {
+                if b.x > a.x {
+                    0
+                } else {
+                    2
+                }
+            } else if a.x == b.x {
+                if b.y > a.y {
+                    1
+                } else {
+                    3
+                }
             } else {
-                (seg.b, seg.a)
+                AXIS_NONE
             };
-            let quad = match (b.x.partial_cmp(&a.x), b.y.partial_cmp(&a.y)) {
-                (Some(Ordering::Greater), Some(Ordering::Equal)) => 0,
-                (Some(Ordering::Equal), Some(Ordering::Greater)) => 1,
-                (Some(Ordering::Less), Some(Ordering::Equal)) => 2,
-                (Some(Ordering::Equal), Some(Ordering::Less)) => 3,
-                _ => AXIS_NONE,
+            let quad = if quad == AXIS_NONE || src[0].forward {
+                quad
+            } else {
+                quad ^ 2
             };
             EdgeInfo {
                 seg: src[0].segment as u32,
@@ -752,6 +762,21 @@ fn windings_left_of_by(
         // The strips' scan budget: past it the nearest-edge search is cheaper (long
         // segments across many queries' lines).
         let mut budget = 4 * n + 4096;
+        // Equal buckets over [y_min, y_max]: `bucket` is monotone in y (rounding is),
+        // so the queries in buckets below lo's are all below lo, and `first[b]` (the
+        // number of queries in buckets below b) is where the search for lo starts: a
+        // few steps instead of a binary search per segment. (−0 and 0 share a bucket.)
+        let buckets = 4 * ys.len();
+        let inv = buckets as f64 / (y_max - y_min);
+        // (`as u32` saturates and is cheaper than a conversion to usize.)
+        let bucket = |y: f64| (((y - y_min) * inv) as u32).min(buckets as u32 - 1) as usize;
+        let mut first = vec![0u32; buckets + 1];
+        for &y in &ys {
+            first[bucket(y) + 1] += 1;
+        }
+        for b in 0..buckets {
+            first[b + 1] += first[b];
+        }
         for (i, &s) in segs.iter().enumerate() {
             let (lo, hi) = (s.a.y.min(s.b.y), s.a.y.max(s.b.y));
             // Only queries with lo <= q.y < hi can count (never for horizontal ones).
@@ -760,7 +785,11 @@ fn windings_left_of_by(
             }
             // (total_cmp orders as < does here: only -0 and 0 differ, on which `<`
             // agrees, so the predicate is monotone along `ys`.)
-            let from = ys.partition_point(|&y| y < lo);
+            let mut from = first[bucket(lo)] as usize;
+            while from < ys.len() && ys[from] < lo {
+                from += 1;
+            }
+            debug_assert_eq!(from, ys.partition_point(|&y| y < lo));
             for (&y, &k) in ys[from..].iter().zip(&order[from..]) {
                 if y >= hi {
                     break;
