@@ -25,6 +25,8 @@
 //! and an estimate of K ([`prefer_pairwise`]).
 
 use super::brute_force::{check_count, PairResults};
+#[cfg(target_arch = "x86_64")]
+use super::round::AlwaysFused;
 use super::round::{Dispatched, Prepared, RoundSharing};
 use super::sweep::check_finite;
 use super::Intersections;
@@ -385,11 +387,18 @@ impl<'a> SweepLanes<'a> {
         bound: f64,
         found: &mut PairResults,
     ) {
-        self.scan_from_rounding::<Dispatched>(k, segments, table, bound, found)
+        // Where the scan runs compiled for wider vectors, the rounding inlined into it
+        // takes the fused products directly.
+        #[cfg(target_arch = "x86_64")]
+        if wide::available() {
+            return self.scan_from_rounding::<AlwaysFused>(k, segments, table, bound, found, true);
+        }
+        self.scan_from_rounding::<Dispatched>(k, segments, table, bound, found, false)
     }
 
     /// [`SweepLanes::scan_from`] with the crossings of unit `k`'s segment rounded by
-    /// `R` (every instantiation gives the same bits).
+    /// `R` (every instantiation gives the same bits), by
+    /// [`SweepLanes::scan_batched_widest`] if `widest`, else the plain scan.
     #[inline(always)]
     fn scan_from_rounding<R: RoundSharing>(
         &self,
@@ -398,6 +407,7 @@ impl<'a> SweepLanes<'a> {
         table: &[Prepared],
         bound: f64,
         found: &mut PairResults,
+        widest: bool,
     ) {
         let mut sink = Rounding::<R> {
             segments,
@@ -409,7 +419,11 @@ impl<'a> SweepLanes<'a> {
             found,
             rounding: std::marker::PhantomData,
         };
-        self.scan_batched(k, bound, &mut sink);
+        if widest {
+            self.scan_batched_widest(k, bound, &mut sink);
+        } else {
+            self.scan_batched(k, bound, &mut sink);
+        }
         let Rounding { a, mine, len, .. } = sink;
         for &b in &mine[..len] {
             found.push_crossing(segments, table, a.min(b), a.max(b));
@@ -786,10 +800,6 @@ pub(crate) fn intersections_on(segments: &[Segment2], pairs: &Pairs) -> Intersec
     // (Two instantiations of the scan: the grid's keeps its own code.)
     match pairs.sweep_lanes(segments) {
         Some(lanes) => scan_with(segments, pairs, &table, |k, found| {
-            #[cfg(target_arch = "x86_64")]
-            if wide::scan_from(&lanes, k, segments, &table, bound, found) {
-                return;
-            }
             lanes.scan_from(k, segments, &table, bound, found)
         }),
         None => scan_with(segments, pairs, &table, |k, found| {
@@ -840,7 +850,6 @@ fn scan_with(
 #[cfg(target_arch = "x86_64")]
 #[allow(unsafe_code)]
 mod wide {
-    use super::super::round::AlwaysFused;
     use super::*;
 
     /// Whether the processor has every feature [`scan_from`]'s body is compiled for.
@@ -849,36 +858,6 @@ mod wide {
         std::arch::is_x86_feature_detected!("avx2")
             && std::arch::is_x86_feature_detected!("fma")
             && std::arch::is_x86_feature_detected!("avx")
-    }
-
-    /// [`SweepLanes::scan_from`] with wide vectors, where [`available`]; `false` (and
-    /// nothing done) elsewhere.
-    #[inline]
-    pub(super) fn scan_from(
-        lanes: &SweepLanes<'_>,
-        k: usize,
-        segments: &[Segment2],
-        table: &[Prepared],
-        bound: f64,
-        found: &mut PairResults,
-    ) -> bool {
-        #[target_feature(enable = "avx2,fma,avx")]
-        unsafe fn wide(
-            lanes: &SweepLanes<'_>,
-            k: usize,
-            segments: &[Segment2],
-            table: &[Prepared],
-            bound: f64,
-            found: &mut PairResults,
-        ) {
-            lanes.scan_from_rounding::<AlwaysFused>(k, segments, table, bound, found)
-        }
-        if !available() {
-            return false;
-        }
-        // SAFETY: the processor has the features `wide` is compiled for.
-        unsafe { wide(lanes, k, segments, table, bound, found) };
-        true
     }
 
     /// [`SweepLanes::scan_batched`] with wide vectors, where [`available`]; `false` (and
@@ -953,8 +932,12 @@ mod tests {
             let run = |wide: bool| {
                 let mut found = PairResults::with_capacity(0);
                 for k in 0..pairs.units() {
-                    if !(wide && wide::scan_from(&lanes, k, &segs, &table, bound, &mut found)) {
-                        lanes.scan_from(k, &segs, &table, bound, &mut found);
+                    if wide {
+                        let f = &mut found;
+                        lanes.scan_from_rounding::<AlwaysFused>(k, &segs, &table, bound, f, true);
+                    } else {
+                        let f = &mut found;
+                        lanes.scan_from_rounding::<Dispatched>(k, &segs, &table, bound, f, false);
                     }
                     found.flush(&segs, &table);
                 }
