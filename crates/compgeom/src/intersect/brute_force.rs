@@ -5,6 +5,7 @@
 //!
 //! O(n² + K log K) time for K meeting pairs, O(n + K) space.
 
+use super::bins::{self, Bins};
 use super::bucket;
 use super::list::defining_second;
 use super::order::{sweep_cmp_points, EventPoint, Oriented};
@@ -127,7 +128,9 @@ pub(crate) fn check_count(segments: &[Segment2]) -> Result<()> {
 /// overlap.
 #[derive(Default)]
 pub(crate) struct PairResults {
-    records: Vec<Record>,
+    /// In one bin, or (the large parallel scans) in bins by the points' y, descending:
+    /// [`record_key`].
+    records: Bins<Record>,
     overlapping: Vec<(usize, usize)>,
     /// Proper crossings found and not yet rounded (the first `pending_len`): rounded
     /// [`LANES`] at a time, whose independent lanes overlap; the rest by
@@ -165,12 +168,12 @@ impl PairResults {
         }
         match segment_intersection(s, t) {
             SegmentIntersection::None => {}
-            SegmentIntersection::Endpoint(q) => self.records.push(Record::new(q, i, j, false)),
+            SegmentIntersection::Endpoint(q) => self.push(Record::new(q, i, j, false)),
             // (The crossing point does not depend on the order of the two segments.)
             SegmentIntersection::Crossing(_) => self.push_crossing(segments, table, i, j),
             SegmentIntersection::Overlap(a, b) => {
-                self.records.push(Record::new(a, i, j, false));
-                self.records.push(Record::new(b, i, j, false));
+                self.push(Record::new(a, i, j, false));
+                self.push(Record::new(b, i, j, false));
                 self.overlapping.push((i, j));
             }
         }
@@ -189,8 +192,9 @@ impl PairResults {
         self.pending_len += 1;
         if self.pending_len == LANES {
             let points = round_crossings_of(segments, table, &self.pending);
-            for (&p, &(i, j)) in points.iter().zip(&self.pending) {
-                self.records.push(Record::new(p, i, j, true));
+            let pending = self.pending;
+            for (&p, &(i, j)) in points.iter().zip(&pending) {
+                self.push(Record::new(p, i, j, true));
             }
             self.pending_len = 0;
         }
@@ -205,17 +209,28 @@ impl PairResults {
         a: usize,
         bs: &[usize; L],
     ) {
+        // The bins first, all lanes together (vector instructions), then the appends.
         let records: [Record; L] =
             std::array::from_fn(|k| Record::new(points[k], a.min(bs[k]), a.max(bs[k]), true));
-        self.records.extend_from_slice(&records);
+        let bins: [usize; L] =
+            std::array::from_fn(|k| self.records.bin_of(record_key(&records[k])));
+        for (&b, &r) in bins.iter().zip(&records) {
+            self.records.push_to(b, r);
+        }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, r: Record) {
+        self.records.push(record_key(&r), r);
     }
 
     /// Round and record the crossings still pending: due after the last
     /// [`PairResults::test`], before the records are read.
     pub(crate) fn flush(&mut self, segments: &[Segment2], table: &[Prepared]) {
-        for &(i, j) in &self.pending[..self.pending_len] {
+        let pending = self.pending;
+        for &(i, j) in &pending[..self.pending_len] {
             let p = round_crossing_of(segments, table, i, j);
-            self.records.push(Record::new(p, i, j, true));
+            self.push(Record::new(p, i, j, true));
         }
         self.pending_len = 0;
     }
@@ -223,14 +238,25 @@ impl PairResults {
     /// Empty results with room for `records` records.
     pub(crate) fn with_capacity(records: usize) -> PairResults {
         PairResults {
-            records: Vec::with_capacity(records),
+            records: Bins::single(records),
+            ..PairResults::default()
+        }
+    }
+
+    /// Empty results for one part of a large parallel scan: records binned by y
+    /// ([`Bins::laid_out`] over the keys of `y_range`, the input's range of y), in
+    /// `bins` bins of room `each`. All parts of a scan take the same layout.
+    pub(crate) fn binned(y_range: (f64, f64), bins: usize, each: usize) -> PairResults {
+        PairResults {
+            records: Bins::laid_out(-y_range.1, -y_range.0, bins, each),
             ..PairResults::default()
         }
     }
 
     /// [`PairResults::assemble`] of the parts of a parallel scan taken together: the
-    /// records are sorted straight from the parts ([`bucket::sort_parts`]), without
-    /// concatenating them first.
+    /// records are sorted straight from the parts ([`bucket::sort_parts`], or for many
+    /// records [`bins::sort_bins_then`] from their bins), without concatenating them
+    /// first.
     pub(crate) fn assemble_parts(parts: Vec<PairResults>, segments: &[Segment2]) -> Intersections {
         debug_assert!(
             parts.iter().all(|p| p.pending_len == 0),
@@ -240,83 +266,83 @@ impl PairResults {
             .iter()
             .flat_map(|p| p.overlapping.iter().copied())
             .collect();
-        let records: Vec<Vec<Record>> = parts.into_iter().map(|p| p.records).collect();
-        let n: usize = records.iter().map(Vec::len).sum();
+        let n: usize = parts.iter().map(|p| p.records.len()).sum();
+        let records: Vec<Bins<Record>> = parts.into_iter().map(|p| p.records).collect();
         if n < PARALLEL_ASSEMBLY_FROM {
-            return PairResults {
-                records: bucket::sort_parts(records, record_key, Record::cmp),
-                overlapping,
-                ..PairResults::default()
-            }
-            .assemble_sorted(segments);
+            let records = records.into_iter().map(Bins::into_items).collect();
+            let sorted = bucket::sort_parts(records, record_key, Record::cmp);
+            return assemble_sorted(sorted, overlapping, segments);
         }
         assemble_marked(records, overlapping, segments)
     }
 
     /// Group equal points (exactly), split their segments into U/L/C, and build the
     /// maximal overlap pieces.
-    pub(crate) fn assemble(mut self, segments: &[Segment2]) -> Intersections {
+    pub(crate) fn assemble(self, segments: &[Segment2]) -> Intersections {
         debug_assert_eq!(self.pending_len, 0, "unflushed crossings");
-        sort_records(&mut self.records);
-        self.assemble_sorted(segments)
+        let mut records = self.records.into_items();
+        sort_records(&mut records);
+        assemble_sorted(records, self.overlapping, segments)
     }
+}
 
-    /// [`PairResults::assemble`] of records already in their order ([`sort_records`]).
-    fn assemble_sorted(mut self, segments: &[Segment2]) -> Intersections {
-        let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
-        let parallel = self.records.len() >= PARALLEL_ASSEMBLY_FROM;
-        // Sorted by rounded points, which is the exact sweep order except within a run
-        // of equal rounded y that holds a crossing: there the exact y may differ. Such
-        // runs are re-sorted exactly; elsewhere equal keys mean equal points. Runs are
-        // independent: large inputs are cut into pieces at run starts, done in parallel.
-        let records = &mut self.records;
-        let pieces = if parallel { 64 } else { 1 };
-        let mut cuts: Vec<usize> = (0..pieces)
-            .map(|k| {
-                let mut at = k * records.len() / pieces;
-                while at > 0 && at < records.len() && records[at].ky == records[at - 1].ky {
-                    at += 1;
-                }
-                at
-            })
-            .collect();
-        cuts.push(records.len());
-        cuts.dedup();
-        let mut parts: Vec<(usize, &mut [Record])> = Vec::with_capacity(cuts.len());
-        let mut rest = &mut records[..];
-        for w in cuts.windows(2) {
-            let (piece, tail) = rest.split_at_mut(w[1] - w[0]);
-            rest = tail;
-            parts.push((w[0], piece));
-        }
-        let group = |(offset, piece): (usize, &mut [Record])| {
-            let mut starts = Vec::new();
-            group_starts(segments, piece, &mut starts);
-            starts.iter_mut().for_each(|s| *s += offset);
-            starts
-        };
-        let mut starts: Vec<usize> = if parallel {
-            let per: Vec<Vec<usize>> = parts.into_par_iter().map(group).collect();
-            per.concat()
-        } else {
-            parts.into_iter().flat_map(group).collect()
-        };
-        let records = &self.records;
-        starts.push(records.len());
-        let records = &self.records;
-        let point = |w: &[usize]| point_of(segments, &segs, &records[w[0]..w[1]]);
-        let points: Vec<IntersectionPoint> = if parallel {
-            starts.par_windows(2).map(point).collect()
-        } else {
-            starts.windows(2).map(point).collect()
-        };
-        let mut overlaps = overlap_pieces(&segs, &self.overlapping);
-        sort_overlaps(&mut overlaps);
-        Intersections {
-            points,
-            overlaps,
-            segments: segments.len(),
-        }
+/// [`PairResults::assemble`] of records already in their order ([`sort_records`]).
+fn assemble_sorted(
+    mut records: Vec<Record>,
+    overlapping: Vec<(usize, usize)>,
+    segments: &[Segment2],
+) -> Intersections {
+    let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
+    let parallel = records.len() >= PARALLEL_ASSEMBLY_FROM;
+    // Sorted by rounded points, which is the exact sweep order except within a run
+    // of equal rounded y that holds a crossing: there the exact y may differ. Such
+    // runs are re-sorted exactly; elsewhere equal keys mean equal points. Runs are
+    // independent: large inputs are cut into pieces at run starts, done in parallel.
+    let pieces = if parallel { 64 } else { 1 };
+    let mut cuts: Vec<usize> = (0..pieces)
+        .map(|k| {
+            let mut at = k * records.len() / pieces;
+            while at > 0 && at < records.len() && records[at].ky == records[at - 1].ky {
+                at += 1;
+            }
+            at
+        })
+        .collect();
+    cuts.push(records.len());
+    cuts.dedup();
+    let mut parts: Vec<(usize, &mut [Record])> = Vec::with_capacity(cuts.len());
+    let mut rest = &mut records[..];
+    for w in cuts.windows(2) {
+        let (piece, tail) = rest.split_at_mut(w[1] - w[0]);
+        rest = tail;
+        parts.push((w[0], piece));
+    }
+    let group = |(offset, piece): (usize, &mut [Record])| {
+        let mut starts = Vec::new();
+        group_starts(segments, piece, &mut starts);
+        starts.iter_mut().for_each(|s| *s += offset);
+        starts
+    };
+    let mut starts: Vec<usize> = if parallel {
+        let per: Vec<Vec<usize>> = parts.into_par_iter().map(group).collect();
+        per.concat()
+    } else {
+        parts.into_iter().flat_map(group).collect()
+    };
+    starts.push(records.len());
+    let records = &records;
+    let point = |w: &[usize]| point_of(segments, &segs, &records[w[0]..w[1]]);
+    let points: Vec<IntersectionPoint> = if parallel {
+        starts.par_windows(2).map(point).collect()
+    } else {
+        starts.windows(2).map(point).collect()
+    };
+    let mut overlaps = overlap_pieces(&segs, &overlapping);
+    sort_overlaps(&mut overlaps);
+    Intersections {
+        points,
+        overlaps,
+        segments: segments.len(),
     }
 }
 
@@ -373,47 +399,39 @@ fn each_group_start(
 }
 
 /// [`PairResults::assemble_parts`] for many records: the groups of equal points are
-/// found and marked inside the sort, per coarse bucket while it is in cache
-/// ([`bucket::sort_parts_then`]), and the points are built straight from the marks on
-/// the pool, each into its place in the result (no list of group starts).
+/// found and marked inside the sort, per bin while it is in cache
+/// ([`bins::sort_bins_then`]), and the points are built straight from the marks on the
+/// pool, each into its place in the result (no list of group starts).
 fn assemble_marked(
-    parts: Vec<Vec<Record>>,
+    parts: Vec<Bins<Record>>,
     overlapping: Vec<(usize, usize)>,
     segments: &[Segment2],
 ) -> Intersections {
-    // Every point lies on an input segment, so within the segments' range of y (the
-    // nearest f64 to a crossing too): no pass over the records to find the keys' range.
-    let (lo, hi) = segments
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
-            (lo.min(s.a.y).min(s.b.y), hi.max(s.a.y).max(s.b.y))
-        });
-    let range = (lo <= hi).then_some((-hi, -lo));
-    let sorted = bucket::sort_parts_then(parts, record_key, Record::cmp, range, |bucket| {
-        mark_groups(segments, bucket)
+    let sorted = bins::sort_bins_then(parts, record_key, Record::cmp, |bin| {
+        mark_groups(segments, bin)
     });
     let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
-    let marked = Marked::new(&sorted.items, &sorted.starts, &sorted.tallies);
+    let marked = Marked::new(&sorted.bins, &sorted.tallies);
     let mut points = Vec::new();
     (0..marked.groups())
         .into_par_iter()
         .with_min_len(1024)
         .map_init(
-            || (usize::MAX, 0),
-            |(next, at): &mut (usize, usize), g| {
+            || (usize::MAX, (0, 0)),
+            |(next, at): &mut (usize, (usize, usize)), g| {
                 // Within one job the groups come in order: the next group starts where
                 // this one ends. Otherwise (a job's first group) it is looked up.
-                let from = if g == *next { *at } else { marked.start_of(g) };
-                let records = marked.records;
+                let (bin, from) = if g == *next { *at } else { marked.start_of(g) };
+                let records = &marked.bins[bin][..];
                 // The common case first, without the search for the group's end: one
                 // record (the next one starts a group) of two segments crossing.
                 let single = records.get(from + 1).map_or(true, Record::starts_group);
                 let to = if single {
                     from + 1
                 } else {
-                    marked.end_of(from)
+                    marked.end_of(bin, from)
                 };
-                (*next, *at) = (g + 1, to);
+                (*next, *at) = (g + 1, marked.next_start(bin, to));
                 let first = records[from];
                 if single && first.is_crossing() {
                     return IntersectionPoint::crossing(first.point(), first.i(), first.j());
@@ -431,28 +449,22 @@ fn assemble_marked(
     }
 }
 
-/// Sorted records whose groups are marked ([`mark_groups`]), with the first group and
-/// the first record of each bucket of the sort, to find a group's records.
+/// Sorted bins of records whose groups are marked ([`mark_groups`]), with the first
+/// group of each bin, to find a group's records (a group lies within one bin).
 struct Marked<'a> {
-    records: &'a [Record],
-    /// Bucket `c` holds groups `group_base[c]..group_base[c + 1]`...
+    bins: &'a [Vec<Record>],
+    /// Bin `b` holds groups `group_base[b]..group_base[b + 1]`.
     group_base: Vec<usize>,
-    /// ... and starts at record `record_base[c]`.
-    record_base: &'a [usize],
 }
 
 impl<'a> Marked<'a> {
-    fn new(records: &'a [Record], record_base: &'a [usize], tallies: &[usize]) -> Marked<'a> {
+    fn new(bins: &'a [Vec<Record>], tallies: &[usize]) -> Marked<'a> {
         let mut group_base = Vec::with_capacity(tallies.len() + 1);
         group_base.push(0);
         for t in tallies {
             group_base.push(group_base[group_base.len() - 1] + t);
         }
-        Marked {
-            records,
-            group_base,
-            record_base,
-        }
+        Marked { bins, group_base }
     }
 
     /// The number of groups.
@@ -460,25 +472,40 @@ impl<'a> Marked<'a> {
         self.group_base[self.group_base.len() - 1]
     }
 
-    /// The first record of group `g < self.groups()`: in the bucket holding it (the last
-    /// one starting at or before it), the `g - group_base[c]`-th marked record.
-    fn start_of(&self, g: usize) -> usize {
-        let c = self.group_base.partition_point(|&b| b <= g) - 1;
-        let mut at = self.record_base[c];
-        for _ in self.group_base[c]..g {
-            at = self.end_of(at);
+    /// The bin and first record of group `g < self.groups()`: in the bin holding it (the
+    /// last one whose first group is at or before it), the `g - group_base[b]`-th
+    /// marked record.
+    fn start_of(&self, g: usize) -> (usize, usize) {
+        let b = self.group_base.partition_point(|&first| first <= g) - 1;
+        let mut at = 0;
+        for _ in self.group_base[b]..g {
+            at = self.end_of(b, at);
         }
-        at
+        (b, at)
     }
 
-    /// Where the group starting at record `from` ends: the next marked record, or the end.
-    fn end_of(&self, from: usize) -> usize {
-        let rest = &self.records[from + 1..];
+    /// Where the group starting at record `from` of bin `b` ends: the next marked
+    /// record, or the end of the bin.
+    fn end_of(&self, b: usize, from: usize) -> usize {
+        let rest = &self.bins[b][from + 1..];
         from + 1
             + rest
                 .iter()
                 .position(Record::starts_group)
                 .unwrap_or(rest.len())
+    }
+
+    /// Where the group after the one ending at record `to` of bin `b` starts: there, or
+    /// at the start of the next bin with records (past the last bin after the last group).
+    fn next_start(&self, b: usize, to: usize) -> (usize, usize) {
+        if to < self.bins[b].len() {
+            return (b, to);
+        }
+        let next = self.bins[b + 1..]
+            .iter()
+            .position(|bin| !bin.is_empty())
+            .map_or(self.bins.len(), |k| b + 1 + k);
+        (next, 0)
     }
 }
 
@@ -701,10 +728,18 @@ pub fn verify_intersections(segments: &[Segment2], found: &Intersections) -> Res
 pub(crate) mod tests {
     use super::*;
 
-    /// The records of every meeting pair of `segments`, dealt into `parts` pieces.
-    fn dealt(segments: &[Segment2], parts: usize) -> Vec<PairResults> {
+    /// The records of every meeting pair of `segments`, dealt into `parts` pieces, each
+    /// with `bins` bins over the segments' range of y (one: a plain list).
+    fn dealt(segments: &[Segment2], parts: usize, bins: usize) -> Vec<PairResults> {
         let table = Prepared::table(segments);
-        let mut out: Vec<PairResults> = (0..parts).map(|_| PairResults::default()).collect();
+        let range = segments
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |r, s| {
+                (r.0.min(s.a.y).min(s.b.y), r.1.max(s.a.y).max(s.b.y))
+            });
+        let mut out: Vec<PairResults> = (0..parts)
+            .map(|_| PairResults::binned(range, bins, 0))
+            .collect();
         for i in 0..segments.len() {
             for j in i + 1..segments.len() {
                 out[(i * 7 + j) % parts].test(segments, &table, i, j, f64::INFINITY);
@@ -744,17 +779,18 @@ pub(crate) mod tests {
             v in proptest::collection::vec((-3i32..4, -3i32..4, -3i32..4, -3i32..4), 0..40),
             how in 0u8..5,
             parts in 1usize..5,
+            bins in 1usize..70,
         ) {
             let segs = grid_segments(&v, how);
             let plain = {
                 let mut all = PairResults::default();
-                for p in dealt(&segs, 1) {
-                    all.records.extend(p.records);
+                for p in dealt(&segs, 1, 1) {
+                    p.records.into_items().into_iter().for_each(|r| all.push(r));
                     all.overlapping.extend(p.overlapping);
                 }
                 all.assemble(&segs)
             };
-            let split = dealt(&segs, parts);
+            let split = dealt(&segs, parts, bins);
             let overlapping = split.iter().flat_map(|p| p.overlapping.clone()).collect();
             let marked = assemble_marked(
                 split.into_iter().map(|p| p.records).collect(),
@@ -775,13 +811,24 @@ pub(crate) mod tests {
         let segs = [Segment2::new(p, p)];
         let n = mark_groups(&segs, &mut records);
         assert_eq!(n, 201);
-        let starts = [0, records.len()];
-        let marked = Marked::new(&records, &starts, &[n]);
+        // Split over bins, some empty.
+        let bins = vec![
+            Vec::new(),
+            records[..103].to_vec(),
+            Vec::new(),
+            Vec::new(),
+            records[103..].to_vec(),
+        ];
+        let marked = Marked::new(&bins, &[0, 101, 0, 0, 100]);
         assert_eq!(marked.groups(), 201);
-        assert_eq!((marked.start_of(0), marked.end_of(0)), (0, 3));
+        assert_eq!((marked.start_of(0), marked.end_of(1, 0)), ((1, 0), 3));
+        assert_eq!(marked.next_start(1, 3), (1, 3));
+        assert_eq!(marked.next_start(1, 103), (4, 0));
+        assert_eq!(marked.next_start(4, 100), (5, 0));
         for g in 1..201 {
-            assert_eq!(marked.start_of(g), g + 2);
-            assert_eq!(marked.end_of(g + 2), g + 3);
+            let (b, at) = if g <= 100 { (1, g + 2) } else { (4, g - 101) };
+            assert_eq!(marked.start_of(g), (b, at));
+            assert_eq!(marked.end_of(b, at), at + 1);
         }
     }
 }

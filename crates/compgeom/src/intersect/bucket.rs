@@ -122,58 +122,31 @@ pub(super) fn sort_parts<T: Copy + Send + Sync>(
         sort_by_key_then(&mut all, key, cmp);
         return all;
     }
-    sort_parts_then(parts, key, cmp, None, |_| 0).items
+    sort_parts_large(parts, key, cmp)
 }
 
-/// What [`sort_parts_then`] returns.
-pub(super) struct Buckets<T> {
-    /// All the items, sorted.
-    pub(super) items: Vec<T>,
-    /// Bucket `c` is `items[starts[c]..starts[c + 1]]`.
-    pub(super) starts: Vec<usize>,
-    /// What `then` returned for each bucket.
-    pub(super) tallies: Vec<usize>,
-}
-
-/// [`sort_parts`], then `then` on every coarse bucket while it is still in cache (a
-/// bucket holds a contiguous range of the sorted items, and items with equal keys are in
-/// the same bucket): a pass over the sorted items fused into the sort.
-///
-/// `range`: the range of the keys when the caller knows it (else a pass over the items
-/// finds it). Only the spread over the buckets depends on it, not the order: keys
-/// outside it go to the first or last bucket.
-///
-/// Every pass runs on the rayon pool: each part counts its records per coarse bucket,
-/// then scatters them straight into its own sub-range of each coarse bucket of the
-/// output (the output is cut into one slice per (bucket, part), so the parts write
-/// disjoint memory), then each coarse bucket is spread over its fine buckets through a
-/// small scratch buffer that stays in cache. Two buffers of the records in all (the
-/// parts and the output) instead of four, and no serial pass over them.
-pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
+/// [`sort_parts`] for many items, each pass on the rayon pool: each part counts its
+/// records per coarse bucket, then scatters them straight into its own sub-range of
+/// each coarse bucket of the output (the output is cut into one slice per (bucket,
+/// part), so the parts write disjoint memory), then each coarse bucket is spread over
+/// its fine buckets through a small scratch buffer that stays in cache. Two buffers of
+/// the records in all (the parts and the output) instead of four, and no serial pass
+/// over them. (Producers that know their keys' range up front bin their records as
+/// they make them instead: [`super::bins`].)
+fn sort_parts_large<T: Copy + Send + Sync>(
     parts: Vec<Vec<T>>,
     key: impl Fn(&T) -> f64 + Sync,
     cmp: impl Fn(&T, &T) -> Ordering + Copy + Sync,
-    range: Option<(f64, f64)>,
-    then: impl Fn(&mut [T]) -> usize + Sync,
-) -> Buckets<T> {
+) -> Vec<T> {
     let n: usize = parts.iter().map(Vec::len).sum();
     let Some(&filler) = parts.iter().find_map(|p| p.first()) else {
-        return Buckets {
-            items: Vec::new(),
-            starts: vec![0],
-            tallies: Vec::new(),
-        };
+        return Vec::new();
     };
-    // (Bucket offsets are u32: beyond that, one bucket and a plain sort.)
+    // (Bucket offsets are u32: beyond that, a plain sort.)
     if n >= u32::MAX as usize {
         let mut all = parts.concat();
         all.sort_unstable_by(cmp);
-        let tally = then(&mut all);
-        return Buckets {
-            items: all,
-            starts: vec![0, n],
-            tallies: vec![tally],
-        };
+        return all;
     }
     let part_range = |p: &Vec<T>| {
         p.iter()
@@ -183,12 +156,10 @@ pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
                 (a.min(v), b.max(v))
             })
     };
-    let (lo, hi) = range.unwrap_or_else(|| {
-        parts.par_iter().map(part_range).reduce(
-            || (f64::INFINITY, f64::NEG_INFINITY),
-            |a, b| (a.0.min(b.0), a.1.max(b.1)),
-        )
-    });
+    let (lo, hi) = parts.par_iter().map(part_range).reduce(
+        || (f64::INFINITY, f64::NEG_INFINITY),
+        |a, b| (a.0.min(b.0), a.1.max(b.1)),
+    );
     let scale = if hi > lo { n as f64 / (hi - lo) } else { 0.0 };
     // Monotone in the key (`as usize` saturates, NaN from an infinite scale goes to 0).
     let fine = |t: &T| (((key(t) - lo) * scale) as usize).min(n - 1);
@@ -260,23 +231,13 @@ pub(super) fn sort_parts_then<T: Copy + Send + Sync>(
         buckets.push((c, piece, piece_fines));
     }
     let width = 1usize << shift;
-    let mut tallies = vec![0usize; coarse_count];
-    buckets
-        .into_par_iter()
-        .zip(tallies.par_iter_mut())
-        .with_min_len(16)
-        .for_each_init(
-            || (Vec::new(), Vec::new()),
-            |(scratch, local): &mut (Vec<T>, Vec<u32>), ((c, bucket, fines), tally)| {
-                finish_bucket(bucket, fines, c << shift, width, cmp, scratch, local);
-                *tally = then(bucket);
-            },
-        );
-    Buckets {
-        items: out,
-        starts: start,
-        tallies,
-    }
+    buckets.into_par_iter().with_min_len(16).for_each_init(
+        || (Vec::new(), Vec::new()),
+        |(scratch, local): &mut (Vec<T>, Vec<u32>), (c, bucket, fines)| {
+            finish_bucket(bucket, fines, c << shift, width, cmp, scratch, local);
+        },
+    );
+    out
 }
 
 /// Sort one coarse bucket, whose items are in fine buckets `fines` (within
@@ -302,7 +263,7 @@ fn finish_bucket<T: Copy>(
 
 /// Spread `from`, whose items are in fine buckets `fines` (within `base..base + width`),
 /// over those buckets in `to` (a counting sort, stable), then sort each fine bucket.
-fn spread_and_sort<T: Copy>(
+pub(super) fn spread_and_sort<T: Copy>(
     from: &[T],
     fines: &[u32],
     to: &mut [T],

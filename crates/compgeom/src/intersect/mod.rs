@@ -91,6 +91,7 @@
 //! assert_eq!(p.lower(), [2]); // (1, 1) is the lower endpoint of segment 2
 //! assert_eq!(p.interior(), [0, 1]);
 //! ```
+mod bins;
 mod brute_force;
 mod bucket;
 mod count;

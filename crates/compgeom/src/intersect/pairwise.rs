@@ -24,6 +24,7 @@
 //! cells without meeting; [`super::find_intersections`] decides between the two from m
 //! and an estimate of K ([`prefer_pairwise`]).
 
+use super::bins::Bins;
 use super::brute_force::{check_count, PairResults};
 #[cfg(target_arch = "x86_64")]
 use super::round::AlwaysFused;
@@ -653,7 +654,9 @@ impl Pairs {
         make: impl Fn(u64) -> A + Sync,
         scan: impl Fn(usize, &mut A) + Sync,
     ) -> Vec<A> {
-        let chunks = (8 * rayon::current_num_threads()) as u64;
+        // (One thread: one chunk, whose parts need no merging.)
+        let threads = rayon::current_num_threads();
+        let chunks = if threads == 1 { 1 } else { 8 * threads as u64 };
         let per = (self.candidates() / chunks).max(1);
         let mut ranges = Vec::new();
         let (mut from, mut visits) = (0, 0);
@@ -827,8 +830,19 @@ fn scan_with(
         found
     } else {
         // Independent scans on the rayon pool; the grouping sorts everything, so the
-        // result does not depend on how the work was split.
-        let make = |visits| PairResults::with_capacity(reserve_for(visits));
+        // result does not depend on how the work was split. The records go straight
+        // into bins by y ([`super::bins`]), as many as about half the candidates need
+        // (long random segments: half the pairs cross).
+        let y_range = segments
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |r, s| {
+                (r.0.min(s.a.y).min(s.b.y), r.1.max(s.a.y).max(s.b.y))
+            });
+        let bins = Bins::<()>::count_for(reserve_for(candidates / 2));
+        let make = |visits: u64| {
+            let each = reserve_for(visits / 2) / bins;
+            PairResults::binned(y_range, bins, each + each / 4 + 4)
+        };
         let parts = pairs.scan_parts(make, scan);
         return PairResults::assemble_parts(parts, segments);
     };
