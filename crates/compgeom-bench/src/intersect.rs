@@ -205,6 +205,20 @@
 //! With two threads, when the second vCPU runs, find is
 //! 7.1–7.6 ms in the driver and 10.4–10.5 ms here (1.14–1.16× geo `collect()`,
 //! 1.01–1.03× the collecting loop); when it does not, it runs as one thread.
+//!
+//! Session 25, long random 1e3, one thread. The gap between this table (find 18–19 ms)
+//! and the driver (13–15 ms) is the state the call finds the machine in, not page
+//! faults (0 per call here after the first rounds) nor the rayon pool: in the driver,
+//! 30 ms of scalar arithmetic before each call (on the calling thread or on the pool's)
+//! slows every phase, while a `find` on other segments before it does not. The likely
+//! cause is writes into memory that has left the caches: the large scans now put their
+//! records straight into bins by y and sort each bin apart (`compgeom::intersect::bins`),
+//! and with 490 bins (490 write streams) such work slowed the scan 7.0 → 10.4 ms, with
+//! 61 bins only to 7.6–8.2 ms. In the driver after such work: scan 7.6–8.2 ms, sort 3.7–4.1
+//! ms (the old scan 5.7 and sort 6.1 ms at rest). This table, load ~1.1 (a helper
+//! building): find 15.8 ms against geo `collect()` 13.0 ms, 0.83× (was 0.68–0.76×), the
+//! collecting loop 0.73× (was 0.56–0.65×); two threads 0.87× with the second vCPU busy.
+//! Short 1e5 find 3.03×, grid 1e4 1.11× (unchanged).
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
