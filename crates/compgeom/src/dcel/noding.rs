@@ -335,6 +335,13 @@ impl Found {
                 None => {}
             }
         }
+        self.intersect((s, i, ei), (t, j, ej));
+    }
+
+    /// The exact intersection of `s` and `t` (each with its number and end vertices), its
+    /// cuts recorded. Out of line: the filters before it decide most pairs.
+    #[inline(never)]
+    fn intersect(&mut self, (s, i, ei): Seg, (t, j, ej): Seg) {
         match crate::kernel::segment_intersection(s, t) {
             SegmentIntersection::None => {}
             SegmentIntersection::Endpoint(q) => self.touch(q, (s, i, ei), (t, j, ej)),
