@@ -343,15 +343,11 @@ fn traced(
         out_start[v + 2] += out_start[v + 1];
     }
     let mut out = vec![0u32; m];
-    // The axis direction of each entry of `out`, beside it (the sorts below then read
-    // no per-edge record).
-    let mut out_quad = vec![AXIS_NONE; m];
     for (i, [u, v]) in flat.edges.iter().enumerate() {
         for h in [2 * i as u32, 2 * i as u32 + 1] {
             let o = if h & 1 == 0 { *u } else { *v } as usize;
             let at = &mut out_start[o + 1];
             out[*at as usize] = h;
-            out_quad[*at as usize] = quad(h);
             *at += 1;
         }
     }
@@ -366,20 +362,9 @@ fn traced(
         let list = &mut out[a..b];
         let k = list.len();
         if k > 2 {
-            // Horizontal and vertical directions (grid data) sort by their quadrant
-            // alone; any other list by the exact angle comparison.
-            let mut slot = [NONE; 4];
-            let placed = k <= 4
-                && list.iter().zip(&out_quad[a..b]).all(|(&h, &q)| {
-                    let q = q as usize;
-                    q < 4 && std::mem::replace(&mut slot[q], h) == NONE
-                });
-            if placed {
-                // Distinct quadrants: their order is the angular order.
-                for (j, h) in slot.into_iter().filter(|&h| h != NONE).enumerate() {
-                    list[j] = h;
-                }
-            } else if !sort_by_keys(list, dir) {
+            // By filtered keys (exact on the axes: grid data), else by the exact angle
+            // comparison.
+            if !sort_by_keys(list, dir) {
                 sort_by_angle(list, &mut keyed, carrier);
             }
         }
