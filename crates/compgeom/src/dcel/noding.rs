@@ -335,6 +335,13 @@ impl Found {
                 None => {}
             }
         }
+        self.intersect((s, i, ei), (t, j, ej));
+    }
+
+    /// The exact intersection of `s` and `t` (each with its number and end vertices), its
+    /// cuts recorded. Out of line: the filters before it decide most pairs.
+    #[inline(never)]
+    fn intersect(&mut self, (s, i, ei): Seg, (t, j, ej): Seg) {
         match crate::kernel::segment_intersection(s, t) {
             SegmentIntersection::None => {}
             SegmentIntersection::Endpoint(q) => self.touch(q, (s, i, ei), (t, j, ej)),
@@ -604,22 +611,24 @@ impl XSweep {
     /// The sweep order of the segments `sub` with extent `e` = `[min x, max x, min y,
     /// max y]` and box heights summing to `heights`, or `None` when it would look at more
     /// than `budget` pairs (long segments, or many separated in y only) or the x-extent
-    /// is zero or overflows. O(n + entries + pairs looked at).
-    fn new(
+    /// is zero or overflows. O(n + entries + pairs looked at). With `PICK`, only the
+    /// segments `sub[k]` for `k` in `pick` (ascending) are entries, numbered `k`.
+    fn new<const PICK: bool>(
         sub: &[Segment2],
+        pick: &[u32],
         e: &[f64; 4],
         heights: f64,
         layout: Layout,
         budget: u64,
     ) -> Option<XSweep> {
-        let n = sub.len();
+        let n = if PICK { pick.len() } else { sub.len() };
         if !(e[1] - e[0]).is_finite() || e[1] - e[0] <= 0.0 {
             return None;
         }
+        let picked = || (0..n).map(|i| &sub[if PICK { pick[i] as usize } else { i }]);
         // About one bucket per segment in one strip.
         let xs = Steps::new(e[0], e[1], n as u32);
-        let spans = sub
-            .iter()
+        let spans = picked()
             .map(|s| [0, 0, xs.of(min2(s.a.x, s.b.x)), xs.of(max2(s.a.x, s.b.x))])
             .collect();
         let mut plan = Plan::new(spans, 1, n as u32, usize::MAX)?;
@@ -636,8 +645,7 @@ impl XSweep {
             let shift = (rows / 2).max(1).ilog2();
             let cols = ((n as u32 - 1) >> shift) + 1;
             let ys = Steps::new(e[2], e[3], rows);
-            let spans = sub
-                .iter()
+            let spans = picked()
                 .zip(&plan.spans)
                 .map(|(s, sp)| {
                     let (lo, hi) = (min2(s.a.y, s.b.y), max2(s.a.y, s.b.y));
@@ -656,11 +664,12 @@ impl XSweep {
                 }
             }
         }
-        (plan.looked <= budget).then(|| XSweep::placed(sub, plan))
+        (plan.looked <= budget).then(|| XSweep::placed::<PICK>(sub, pick, plan))
     }
 
-    /// The entries of `plan`, placed by a counting sort (index order within a cell).
-    fn placed(sub: &[Segment2], plan: Plan) -> XSweep {
+    /// The entries of `plan`, placed by a counting sort (index order within a cell);
+    /// `PICK` and `pick` as in [`XSweep::new`].
+    fn placed<const PICK: bool>(sub: &[Segment2], pick: &[u32], plan: Plan) -> XSweep {
         let Plan {
             rows,
             cols,
@@ -675,6 +684,7 @@ impl XSweep {
         let mut stop = vec![0u32; entries];
         let mut lead = vec![false; if strips { entries } else { 0 }];
         for (i, &[r0, r1, c0, c1]) in spans.iter().enumerate() {
+            let i = if PICK { pick[i] as usize } else { i };
             if !strips {
                 // One strip: one entry, no loop.
                 let slot = &mut start[c0 as usize];
@@ -926,24 +936,8 @@ impl Copies {
 /// representative of a class of crossings would be chosen from: the arrangement is the
 /// one of testing every pair, numbered alike.
 fn found_by_once(sub: &[Segment2], ends: &Ends, copies: Copies, how: Candidates) -> Option<Found> {
-    let once: Vec<Segment2> = copies.first.iter().map(|&k| sub[k as usize]).collect();
-    let once_ends = Ends {
-        of: copies.first.iter().map(|&k| ends.of[k as usize]).collect(),
-        points: Vec::new(),
-        count: ends.count,
-        exact: true,
-    };
-    let mut found = found_by(&once, &once_ends, how)?;
-    let first = &copies.first;
-    for c in &mut found.contacts {
-        c.a = first[c.a as usize];
-        if c.b != NONE {
-            c.b = first[c.b as usize];
-        }
-    }
-    for (i, j) in &mut found.overlapping {
-        (*i, *j) = (first[*i as usize], first[*j as usize]);
-    }
+    // (The firsts keep their numbers in `sub`: no copy of them, no renumbering after.)
+    let mut found = found_by_picked::<true>(sub, &copies.first, ends, how)?;
     found.copies = copies.copy_of;
     Some(found)
 }
@@ -952,9 +946,22 @@ fn found_by_once(sub: &[Segment2], ends: &Ends, copies: Copies, how: Candidates)
 /// from the candidates of `how`; `None` when the grid would test too many pairs or the
 /// item ids would not fit in `u32` (the intersection sweep then does it all).
 fn found_by(sub: &[Segment2], ends: &Ends, how: Candidates) -> Option<Found> {
+    found_by_picked::<false>(sub, &[], ends, how)
+}
+
+/// [`found_by`] of the segments `sub[k]` for `k` in `pick` (ascending) when `PICK`, with
+/// the records numbered by `sub`.
+fn found_by_picked<const PICK: bool>(
+    sub: &[Segment2],
+    pick: &[u32],
+    ends: &Ends,
+    how: Candidates,
+) -> Option<Found> {
+    let n = if PICK { pick.len() } else { sub.len() };
+    let picked = || (0..n).map(|i| &sub[if PICK { pick[i] as usize } else { i }]);
     let inf = f64::INFINITY;
     let mut heights = 0.0;
-    let e = sub.iter().fold([inf, -inf, inf, -inf], |e, s| {
+    let e = picked().fold([inf, -inf, inf, -inf], |e, s| {
         let b = box_of(s);
         heights += b[3] - b[2];
         [
@@ -967,11 +974,12 @@ fn found_by(sub: &[Segment2], ends: &Ends, how: Candidates) -> Option<Found> {
     // The largest coordinate magnitude (-inf for no segments: an infinite bound).
     let m = max2(max2(-e[0], e[1]), max2(-e[2], e[3]));
     let bound = static_orient_bound(m);
-    let budget = (SWEEP_PAIRS_PER_SEGMENT * sub.len() + 1024) as u64;
+    let budget = (SWEEP_PAIRS_PER_SEGMENT * n + 1024) as u64;
+    let new = |layout, budget| XSweep::new::<PICK>(sub, pick, &e, heights, layout, budget);
     let sweep = match how {
-        Candidates::Auto => XSweep::new(sub, &e, heights, Layout::Auto, budget),
-        Candidates::Sweep => XSweep::new(sub, &e, heights, Layout::One, u64::MAX),
-        Candidates::Strips => XSweep::new(sub, &e, heights, Layout::Strips, u64::MAX),
+        Candidates::Auto => new(Layout::Auto, budget),
+        Candidates::Sweep => new(Layout::One, u64::MAX),
+        Candidates::Strips => new(Layout::Strips, u64::MAX),
         Candidates::Grid => None,
     };
     let found = if let Some(sweep) = sweep {
@@ -1002,9 +1010,16 @@ fn found_by(sub: &[Segment2], ends: &Ends, how: Candidates) -> Option<Found> {
                 .reduce(Found::default, Found::merge)
         }
     } else {
-        let grid = prefer_pairwise(sub)?;
+        // (The grid numbers the segments it is given: the picked ones in a copy.)
+        let once: Cow<[Segment2]> = if PICK {
+            Cow::Owned(picked().copied().collect())
+        } else {
+            Cow::Borrowed(sub)
+        };
+        let grid = prefer_pairwise(&once)?;
+        let num = |i: usize| if PICK { pick[i] as usize } else { i };
         let test = |f: &mut Found, i: usize, j: usize| {
-            let (s, t, i, j) = (sub[i], sub[j], i as u32, j as u32);
+            let (s, t, i, j) = (once[i], once[j], num(i) as u32, num(j) as u32);
             if ends.exact {
                 let (ei, ej) = (ends.of[i as usize], ends.of[j as usize]);
                 f.test_by_vertices(s, t, i, j, ei, ej, bound)
@@ -1465,7 +1480,7 @@ mod tests {
                 ]
             });
         let heights = segs.iter().map(|s| box_of(s)[3] - box_of(s)[2]).sum();
-        XSweep::new(segs, &e, heights, layout, budget)
+        XSweep::new::<false>(segs, &[], &e, heights, layout, budget)
     }
 
     /// Long segments spanning the x-extent make the sweep look at Θ(n²) pairs: the budget

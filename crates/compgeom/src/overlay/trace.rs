@@ -132,6 +132,78 @@ fn sort_by_angle(
     }
 }
 
+/// Two [`pseudo_angle`]s further apart than this are in the order of their exact angles.
+///
+/// Each rounded difference `b − a` of a direction has its exact sign (so the quadrant is
+/// exact) and a relative error of at most u = 2⁻⁵³; within a quadrant the key is
+/// `q + t` with `t = p / (p + r)` for the two magnitudes `p, r ≥ 0`, whose rounded value
+/// has a relative error below 4.01u (the rounded sum of two non-negative values with
+/// errors ≤ u has error ≤ u before its own rounding; one more rounding each for the sum
+/// and the quotient), so an absolute error below 4.01u as t ≤ 1; the sum `q + t` < 4
+/// rounds by at most 2⁻⁵¹ / 2. Two keys are each within 7·10⁻¹⁶ of their exact values,
+/// whose order (the key is a strictly increasing function of the angle from +x) is the
+/// angular one; their rounded difference is off by at most 2⁻⁵¹ more. 2⁻⁴⁴ leaves a
+/// margin of more than 10.
+const KEY_GAP: f64 = 1.0 / (1u64 << 44) as f64;
+
+/// A key for direction `(dx, dy)` (not zero) increasing with its angle from +x
+/// counter-clockwise in [0, 4]: quadrant + `t` in [0, 1] (`t` is 0 on the axes). NaN
+/// when `|dx| + |dy|` is not finite (an overflowed difference).
+#[inline(always)]
+fn pseudo_angle(dx: f64, dy: f64) -> f64 {
+    let (ax, ay) = (dx.abs(), dy.abs());
+    let sum = ax + ay;
+    let sum = if sum < f64::INFINITY { sum } else { f64::NAN };
+    if dy >= 0.0 {
+        if dx > 0.0 {
+            ay / sum
+        } else {
+            1.0 + ax / sum
+        }
+    } else if dx < 0.0 {
+        2.0 + ay / sum
+    } else {
+        3.0 + ax / sum
+    }
+}
+
+/// `list` (half-edges leaving one vertex, at most 8) in counter-clockwise order from +x
+/// by [`pseudo_angle`] keys, when all are finite and further apart than [`KEY_GAP`] (then
+/// this is the exact order); `false`, with `list` untouched, otherwise.
+#[inline(always)]
+fn sort_by_keys(list: &mut [u32], dir: impl Fn(u32) -> (f64, f64)) -> bool {
+    const SMALL: usize = 8;
+    if list.len() > SMALL {
+        return false;
+    }
+    let mut keys = [(0.0f64, 0u32); SMALL];
+    for (k, &h) in keys.iter_mut().zip(list.iter()) {
+        let (dx, dy) = dir(h);
+        *k = (pseudo_angle(dx, dy), h);
+    }
+    let keys = &mut keys[..list.len()];
+    for i in 1..keys.len() {
+        let x = keys[i];
+        let mut j = i;
+        while j > 0 && x.0 < keys[j - 1].0 {
+            keys[j] = keys[j - 1];
+            j -= 1;
+        }
+        keys[j] = x;
+    }
+    // (A NaN key makes its gaps NaN, which fail the test.)
+    let mut ok = true;
+    for w in keys.windows(2) {
+        ok &= w[1].0 - w[0].0 > KEY_GAP;
+    }
+    if ok {
+        for (slot, k) in list.iter_mut().zip(keys.iter()) {
+            *slot = k.1;
+        }
+    }
+    ok
+}
+
 fn find(p: &mut [u32], mut x: u32) -> u32 {
     while p[x as usize] != x {
         let up = p[p[x as usize] as usize];
@@ -228,6 +300,18 @@ fn traced(
             forward: e.fwd == (h & 1 == 0),
         }
     };
+    // The direction of half-edge h, rounded: its input segment's `b − a`, negated when
+    // running it backwards (exact signs, see [`KEY_GAP`]).
+    let dir = |h: u32| {
+        let e = &info[(h >> 1) as usize];
+        let s = &segs[e.seg as usize];
+        let (dx, dy) = (s.b.x - s.a.x, s.b.y - s.a.y);
+        if e.fwd == (h & 1 == 0) {
+            (dx, dy)
+        } else {
+            (-dx, -dy)
+        }
+    };
     // The axis direction of half-edge h (the reverse of 2i's for 2i + 1).
     let quad = |h: u32| {
         let q = info[(h >> 1) as usize].quad;
@@ -259,15 +343,11 @@ fn traced(
         out_start[v + 2] += out_start[v + 1];
     }
     let mut out = vec![0u32; m];
-    // The axis direction of each entry of `out`, beside it (the sorts below then read
-    // no per-edge record).
-    let mut out_quad = vec![AXIS_NONE; m];
     for (i, [u, v]) in flat.edges.iter().enumerate() {
         for h in [2 * i as u32, 2 * i as u32 + 1] {
             let o = if h & 1 == 0 { *u } else { *v } as usize;
             let at = &mut out_start[o + 1];
             out[*at as usize] = h;
-            out_quad[*at as usize] = quad(h);
             *at += 1;
         }
     }
@@ -282,20 +362,9 @@ fn traced(
         let list = &mut out[a..b];
         let k = list.len();
         if k > 2 {
-            // Horizontal and vertical directions (grid data) sort by their quadrant
-            // alone; any other list by the exact angle comparison.
-            let mut slot = [NONE; 4];
-            let placed = k <= 4
-                && list.iter().zip(&out_quad[a..b]).all(|(&h, &q)| {
-                    let q = q as usize;
-                    q < 4 && std::mem::replace(&mut slot[q], h) == NONE
-                });
-            if placed {
-                // Distinct quadrants: their order is the angular order.
-                for (j, h) in slot.into_iter().filter(|&h| h != NONE).enumerate() {
-                    list[j] = h;
-                }
-            } else {
+            // By filtered keys (exact on the axes: grid data), else by the exact angle
+            // comparison.
+            if !sort_by_keys(list, dir) {
                 sort_by_angle(list, &mut keyed, carrier);
             }
         }
@@ -1141,8 +1210,10 @@ impl Strips {
 mod tests {
     use super::super::boolean::{boolean_via_dcel, boolean_with, oriented_segments};
     use super::super::{BooleanOp, BooleanOptions, FillRule};
+    use super::{sort_by_angle, sort_by_keys, Carrier, Orientation};
     use crate::kernel::{MultiPolygon, Point2, Polygon, Segment2};
     use proptest::prelude::*;
+    use std::cmp::Ordering;
 
     const OPS: [BooleanOp; 4] = [
         BooleanOp::Intersection,
@@ -1360,6 +1431,54 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(300))]
+
+        /// The filtered keys give the exact angular order whenever they decide: on
+        /// directions with small integer and with huge or tiny float coordinates, nearly
+        /// collinear ones (one ulp apart) and overflowing differences.
+        #[test]
+        fn key_sort_is_the_exact_angular_sort(
+            v in proptest::collection::vec(
+                (-4i32..5, -4i32..5, -3i32..4, 0u8..4, 0u32..3), 3..9),
+        ) {
+            let mut segs: Vec<Segment2> = Vec::new();
+            for &(x, y, e, kind, ulps) in &v {
+                let scale = [1.0, 1e300, 1e-300, 1.0][kind as usize] * 2f64.powi(e);
+                let (mut bx, by) = (x as f64 * scale, y as f64 * scale);
+                if kind == 3 {
+                    for _ in 0..ulps {
+                        bx = f64::from_bits(bx.to_bits() + 1);
+                    }
+                }
+                // (Kind 1 with even x: ends far apart, some differences overflow.)
+                let s = if kind == 1 && x % 2 == 0 {
+                    let a = Point2::new(-1.7e308, 1.6e308);
+                    Segment2::new(a, Point2::new(x as f64 * 4e307, y as f64 * -4e307))
+                } else {
+                    let a = Point2::new(0.5, -0.25);
+                    Segment2::new(a, Point2::new(a.x + bx, a.y + by))
+                };
+                let dup = segs.iter().any(|t| {
+                    let c = |s: &Segment2| Carrier { seg: *s, forward: true };
+                    c(t).turn(&c(&s)) == Orientation::Collinear
+                        && c(t).angle_cmp(&c(&s)) == Ordering::Equal
+                });
+                if !s.is_degenerate() && !dup {
+                    segs.push(s);
+                }
+            }
+            proptest::prop_assume!(segs.len() > 2);
+            let carrier = |h: u32| Carrier { seg: segs[h as usize], forward: true };
+            let dir = |h: u32| {
+                let s = segs[h as usize];
+                (s.b.x - s.a.x, s.b.y - s.a.y)
+            };
+            let mut exact: Vec<u32> = (0..segs.len() as u32).collect();
+            sort_by_angle(&mut exact, &mut Vec::new(), carrier);
+            let mut keyed: Vec<u32> = (0..segs.len() as u32).rev().collect();
+            if sort_by_keys(&mut keyed, dir) {
+                proptest::prop_assert_eq!(keyed, exact);
+            }
+        }
 
         #[test]
         fn radix_sort_is_the_stable_sort(
