@@ -332,6 +332,39 @@ impl Pieces {
         self.finish_numbered(renumbered, false)
     }
 
+    /// [`Pieces::finish_numbered`] summed up as [`Flat::summed`] does, for pairs pushed
+    /// in ascending segment order within each edge (the first one pushed for an edge is
+    /// its first source), without sorting the pairs by edge.
+    pub(super) fn finish_summed(
+        self,
+        vertices: impl Into<Vertices>,
+        na: usize,
+    ) -> (Flat, Vec<(i32, i32)>) {
+        let Pieces { edges, pairs } = self;
+        let ne = edges.len();
+        let unset = Source {
+            segment: usize::MAX,
+            forward: false,
+        };
+        let mut firsts = vec![unset; ne];
+        let mut deltas = vec![(0, 0); ne];
+        for (e, src) in &pairs {
+            let e = *e as usize;
+            if firsts[e].segment == usize::MAX {
+                firsts[e] = *src;
+            }
+            deltas[e] = add_source(deltas[e], src, na);
+        }
+        debug_assert!(firsts.iter().all(|s| s.segment != usize::MAX));
+        let flat = Flat {
+            vertices: vertices.into(),
+            edges,
+            src_start: Vec::new(),
+            sources: firsts,
+        };
+        (flat, deltas)
+    }
+
     /// The flat arrangement, vertices already numbered in order of first use by the edges;
     /// `in_order` when the pairs of each edge come in ascending segment order (then the
     /// stable placement by edge below leaves them so, and they are not sorted again).
@@ -392,6 +425,63 @@ impl Flat {
     /// The arrangement by the fastest exact path for the input.
     /// Non-finite coordinates are an error naming the segment.
     pub(crate) fn of_segments(segments: &[Segment2]) -> Result<Flat> {
+        check_finite(segments)?;
+        match Flat::axis_parallel(segments) {
+            Some(f) => Ok(f),
+            None => Flat::noded(segments),
+        }
+    }
+
+    /// [`Flat::of_segments`] summed up for winding numbers ([`Flat::summed`]), the first
+    /// `na` segments from one input, the rest from the other.
+    pub(crate) fn of_segments_summed(
+        segments: &[Segment2],
+        na: usize,
+    ) -> Result<(Flat, Vec<(i32, i32)>)> {
+        check_finite(segments)?;
+        match Flat::axis_parallel(segments) {
+            Some(f) => Ok(f.summed(na)),
+            None => Flat::noded_summed(segments, na),
+        }
+    }
+
+    /// The arrangement with only the first source of each edge (`src_start` empty), and
+    /// per edge the changes `(da, db)` of the winding numbers with respect to the first
+    /// `na` segments and the rest when crossing it from right to left (edge `i` running
+    /// `edges[i][0] → edges[i][1]`; a source running the same way adds one, the other
+    /// way subtracts one): all a boolean operation needs of the sources.
+    pub(crate) fn summed(self, na: usize) -> (Flat, Vec<(i32, i32)>) {
+        let ne = self.edges.len();
+        let mut firsts = Vec::with_capacity(ne);
+        let mut deltas = Vec::with_capacity(ne);
+        for i in 0..ne {
+            let src = self.sources_of(i);
+            firsts.push(src[0]);
+            deltas.push(src.iter().fold((0, 0), |d, s| add_source(d, s, na)));
+        }
+        let flat = Flat {
+            src_start: Vec::new(),
+            sources: firsts,
+            ..self
+        };
+        (flat, deltas)
+    }
+}
+
+/// `d` with source `s` added ([`Flat::summed`]).
+#[inline(always)]
+fn add_source((da, db): (i32, i32), s: &Source, na: usize) -> (i32, i32) {
+    let w = if s.forward { 1 } else { -1 };
+    if s.segment < na {
+        (da + w, db)
+    } else {
+        (da, db + w)
+    }
+}
+
+/// `Err` naming the first segment with a non-finite coordinate.
+fn check_finite(segments: &[Segment2]) -> Result<()> {
+    {
         // x · 0 is 0 (or −0) for finite x, NaN for infinities and NaN: one sum without
         // branches tells whether all are finite; only then the segment is looked for.
         let zero = segments.iter().fold(0.0, |acc, s| {
@@ -410,12 +500,11 @@ impl Flat {
                 }
             }
         }
-        match Flat::axis_parallel(segments) {
-            Some(f) => Ok(f),
-            None => Flat::noded(segments),
-        }
     }
+    Ok(())
+}
 
+impl Flat {
     /// The number of edges.
     pub(crate) fn edge_count(&self) -> usize {
         self.edges.len()
@@ -1005,6 +1094,12 @@ mod tests {
         let auto = Flat::noded(segs).unwrap();
         for how in [Candidates::Sweep, Candidates::Strips, Candidates::Grid] {
             prop_assert_eq!(&Flat::noded_by(segs, how).unwrap(), &auto, "{:?}", how);
+        }
+        // Summed up straight from the pieces as from the sorted sources, for inputs split
+        // anywhere into A and B.
+        for na in [0, segs.len() / 3, segs.len()] {
+            let summed = Flat::noded_summed(segs, na).unwrap();
+            prop_assert_eq!(&summed, &auto.clone().summed(na), "na {}", na);
         }
         Ok(auto)
     }

@@ -846,6 +846,37 @@ impl Flat {
     /// [`Flat::noded`] with the candidate pairs from `how`; every choice gives the same
     /// arrangement, numbered alike.
     pub(crate) fn noded_by(segments: &[Segment2], how: Candidates) -> Result<Flat> {
+        Flat::noded_then(
+            segments,
+            how,
+            |pieces, vertices| pieces.finish_numbered(vertices, true),
+            Flat::general,
+        )
+    }
+
+    /// [`Flat::noded`] summed up for the winding numbers: [`Flat::summed`] (the first
+    /// source of each edge and its winding changes), without sorting every source to its
+    /// edge first.
+    pub(crate) fn noded_summed(
+        segments: &[Segment2],
+        na: usize,
+    ) -> Result<(Flat, Vec<(i32, i32)>)> {
+        Flat::noded_then(
+            segments,
+            Candidates::Auto,
+            |pieces, vertices| pieces.finish_summed(vertices, na),
+            |segments| Flat::general(segments).map(|f| f.summed(na)),
+        )
+    }
+
+    /// The noding of [`Flat::noded_by`], its pieces made into the result by `finish`, or
+    /// `general` when the lean noding does not apply.
+    fn noded_then<T>(
+        segments: &[Segment2],
+        how: Candidates,
+        finish: impl FnOnce(Pieces, Vertices) -> T,
+        general: impl FnOnce(&[Segment2]) -> Result<T>,
+    ) -> Result<T> {
         // The segments that are not points, and their input numbers (`None`: all of
         // them, the usual case, with no copy).
         let (sub, kept): (Cow<[Segment2]>, Option<Vec<usize>>) =
@@ -860,22 +891,24 @@ impl Flat {
             };
         // Item ids below are u32: 2 per segment plus the contacts.
         if sub.len() >= 1 << 29 {
-            return Flat::general(segments);
+            return general(segments);
         }
         let ends = Ends::of(&sub);
         // With exact ends, an edge given more than once (neighbouring rings share their
         // common edges) is tested once: its copies take its pieces.
-        if let Some(copies) = ends.exact.then(|| Copies::of(&ends.of)).flatten() {
-            return Ok(match found_by_once(&sub, &ends, copies, how) {
-                Some(found) => assemble::<true>(&sub, kept.as_deref(), &ends, found),
-                None => return Flat::general(segments),
-            });
-        }
-        match found_by(&sub, &ends, how) {
-            Some(found) if ends.exact => Ok(assemble::<true>(&sub, kept.as_deref(), &ends, found)),
-            Some(found) => Ok(assemble::<false>(&sub, kept.as_deref(), &ends, found)),
-            None => Flat::general(segments),
-        }
+        let found = match ends.exact.then(|| Copies::of(&ends.of)).flatten() {
+            Some(copies) => found_by_once(&sub, &ends, copies, how),
+            None => found_by(&sub, &ends, how),
+        };
+        let Some(found) = found else {
+            return general(segments);
+        };
+        let (pieces, vertices) = if ends.exact {
+            assemble::<true>(&sub, kept.as_deref(), &ends, found)
+        } else {
+            assemble::<false>(&sub, kept.as_deref(), &ends, found)
+        };
+        Ok(finish(pieces, vertices))
     }
 }
 
@@ -1072,13 +1105,14 @@ fn union(parent: &mut [u32], a: u32, b: u32) {
 /// Work over all segments is a few plain passes; everything that depends on the contacts
 /// (exact points, cut order, representatives) is O(K log K) for K contacts. Vertices are
 /// numbered in order of first use by the edges, as they are made.
-/// `EXACT`: `ends.exact`.
+/// `EXACT`: `ends.exact`. The pieces come with their sources pushed segment by segment
+/// (ascending within each edge), the vertices numbered in order of first use.
 fn assemble<const EXACT: bool>(
     sub: &[Segment2],
     kept: Option<&[usize]>,
     ends: &Ends,
     found: Found,
-) -> Flat {
+) -> (Pieces, Vertices) {
     // The input number of segment k of `sub`.
     let input = |k: usize| kept.map_or(k, |kept| kept[k]);
     let m = sub.len();
@@ -1322,8 +1356,7 @@ fn assemble<const EXACT: bool>(
             ));
         }
     }
-    // (Sources were pushed segment by segment: ascending within each edge.)
-    pieces.finish_numbered(Vertices::rounded_exact(vertices, approx), true)
+    (pieces, Vertices::rounded_exact(vertices, approx))
 }
 
 #[cfg(test)]
@@ -1390,11 +1423,12 @@ mod tests {
             Ends::by_segments(segs.len())
         };
         let found = found_by(segs, &ends, Candidates::Auto).unwrap();
-        if exact {
+        let (pieces, vertices) = if exact {
             assemble::<true>(segs, None, &ends, found)
         } else {
             assemble::<false>(segs, None, &ends, found)
-        }
+        };
+        pieces.finish_numbered(vertices, true)
     }
 
     /// Small rings on a coarse grid, many meeting at their vertices and sharing edges

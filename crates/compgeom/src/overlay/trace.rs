@@ -234,7 +234,9 @@ fn traced(
     keep_collinear: bool,
     strips: bool,
 ) -> Result<MultiPolygon> {
-    let flat = Flat::of_segments(segs)?;
+    // Per edge its first source and the winding changes across it (crossing a ring
+    // edge a → b from its right to its left adds one).
+    let (flat, deltas) = Flat::of_segments_summed(segs, na)?;
     let nv = flat.vertices.len();
     let ne = flat.edge_count();
     let m = 2 * ne;
@@ -244,16 +246,7 @@ fn traced(
     let info: Vec<EdgeInfo> = (0..ne)
         .map(|i| {
             let src = flat.sources_of(i);
-            let (mut da, mut db) = (0, 0);
-            for s in src {
-                // Crossing a ring edge a → b from its right to its left adds one.
-                let w = if s.forward { 1 } else { -1 };
-                if s.segment < na {
-                    da += w;
-                } else {
-                    db += w;
-                }
-            }
+            let (da, db) = deltas[i];
             // The axis direction of the segment a → b (a ≠ b: the arrangement has no
             // zero-length segments), turned for a half-edge running it backwards.
             let (a, b) = (segs[src[0].segment].a, segs[src[0].segment].b);
@@ -288,6 +281,7 @@ fn traced(
         .collect();
     // The sources are summed up in `info`: freed now, so that the arrays below reuse
     // their memory (fresh pages are a large part of the cost on big inputs).
+    drop(deltas);
     let flat = Flat {
         src_start: Vec::new(),
         sources: Vec::new(),
