@@ -273,6 +273,9 @@ impl PairResults {
             let sorted = bucket::sort_parts(records, record_key, Record::cmp);
             return assemble_sorted(sorted, overlapping, segments);
         }
+        if rayon::current_num_threads() == 1 {
+            return assemble_fused(records, overlapping, segments);
+        }
         assemble_marked(records, overlapping, segments)
     }
 
@@ -391,6 +394,75 @@ fn each_group_start(
             for m in k..end {
                 if m == k || records[m].kx != records[m - 1].kx {
                     start(records, m);
+                }
+            }
+        }
+        k = end;
+    }
+}
+
+/// [`PairResults::assemble_parts`] for many records on one thread: each bin is sorted
+/// ([`bins::each_sorted_bin`]), its groups found and its points built and appended to
+/// the result while its records are in cache, bin after bin (a group lies within one
+/// bin). The result is reserved for one point per record, a bound, and filled in place:
+/// no list of group starts, no lookup of a group from its number, no second read of
+/// the records from memory. Long random 1e3 (251k records), one thread, session 26,
+/// against [`assemble_marked`]: callgrind per `find` 139.1M → 117.9M instructions,
+/// driver best of 20 10.8–11.0 → 10.1–10.6 ms (interleaved runs, shared machine).
+fn assemble_fused(
+    parts: Vec<Bins<Record>>,
+    overlapping: Vec<(usize, usize)>,
+    segments: &[Segment2],
+) -> Intersections {
+    let segs: Vec<Oriented> = segments.iter().map(|&s| Oriented::of(s)).collect();
+    let n: usize = parts.iter().map(Bins::len).sum();
+    let mut points = Vec::with_capacity(n);
+    bins::each_sorted_bin(parts, record_key, Record::cmp, |bin| {
+        each_group(segments, bin, |group| {
+            points.push(point_of(segments, &segs, group));
+        });
+    });
+    // (Many records per point, as where many segments meet: give the room back.)
+    if points.len() < points.capacity() / 2 {
+        points.shrink_to_fit();
+    }
+    let mut overlaps = overlap_pieces(&segs, &overlapping);
+    sort_overlaps(&mut overlaps);
+    Intersections {
+        points,
+        overlaps,
+        segments: segments.len(),
+    }
+}
+
+/// Call `group(records)` for every group of equal points of sorted `records`, in order,
+/// after re-sorting runs of equal rounded y that hold a crossing exactly (the groups
+/// [`each_group_start`] starts).
+#[inline]
+fn each_group(segments: &[Segment2], records: &mut [Record], mut group: impl FnMut(&[Record])) {
+    let mut k = 0;
+    while k < records.len() {
+        let ky = records[k].ky;
+        let mut end = k + 1;
+        while end < records.len() && records[end].ky == ky {
+            end += 1;
+        }
+        let run = &mut records[k..end];
+        if end == k + 1 {
+            // Most runs are one record (dense crossings): a group of its own.
+            group(run);
+        } else if run.iter().any(Record::is_crossing) {
+            let mut starts = exact_groups(segments, run);
+            starts.push(run.len());
+            for w in starts.windows(2) {
+                group(&run[w[0]..w[1]]);
+            }
+        } else {
+            let mut from = 0;
+            for m in 1..=run.len() {
+                if m == run.len() || run[m].kx != run[m - 1].kx {
+                    group(&run[from..m]);
+                    from = m;
                 }
             }
         }
@@ -773,7 +845,8 @@ pub(crate) mod tests {
         /// degenerate input: integer grids (shared endpoints, many segments through one
         /// point, overlaps, duplicates, zero-length segments, -0.0) and the same grids
         /// divided by 3, where distinct crossings round to the same point; with huge and
-        /// tiny magnitudes.
+        /// tiny magnitudes. The fused assembly too. (Up to 70 bins for at most 40
+        /// segments: many empty bins; one bin: a plain list.)
         #[test]
         fn the_marked_assembly_is_the_plain_one(
             v in proptest::collection::vec((-3i32..4, -3i32..4, -3i32..4, -3i32..4), 0..40),
@@ -791,13 +864,15 @@ pub(crate) mod tests {
                 all.assemble(&segs)
             };
             let split = dealt(&segs, parts, bins);
-            let overlapping = split.iter().flat_map(|p| p.overlapping.clone()).collect();
-            let marked = assemble_marked(
-                split.into_iter().map(|p| p.records).collect(),
-                overlapping,
-                &segs,
-            );
-            proptest::prop_assert_eq!(marked, plain);
+            let overlapping: Vec<(usize, usize)> =
+                split.iter().flat_map(|p| p.overlapping.clone()).collect();
+            let records = || split.iter().map(|p| p.records.clone()).collect();
+            let marked = assemble_marked(records(), overlapping.clone(), &segs);
+            proptest::prop_assert_eq!(&marked, &plain);
+            // The fused assembly (one thread: groups found and points built per bin as
+            // it is sorted) as well.
+            let fused = assemble_fused(records(), overlapping, &segs);
+            proptest::prop_assert_eq!(&fused, &plain);
         }
     }
 
@@ -819,6 +894,16 @@ pub(crate) mod tests {
             Vec::new(),
             records[103..].to_vec(),
         ];
+        // The groups as [`each_group`] finds them: the same.
+        let mut groups = Vec::new();
+        let mut again = records.clone();
+        each_group(&segs, &mut again, |g| groups.push(g.to_vec()));
+        assert_eq!(groups.len(), 201);
+        assert_eq!(groups.concat(), records);
+        assert!(groups.iter().all(|g| g[0].starts_group()));
+        assert!(groups
+            .iter()
+            .all(|g| g[1..].iter().all(|r| !r.starts_group())));
         let marked = Marked::new(&bins, &[0, 101, 0, 0, 100]);
         assert_eq!(marked.groups(), 201);
         assert_eq!((marked.start_of(0), marked.end_of(1, 0)), ((1, 0), 3));
