@@ -61,8 +61,13 @@ impl<T: Copy> Bins<T> {
         (expected / RECORDS_PER_BIN).clamp(1, MAX_BINS)
     }
 
-    /// `count` empty bins over the keys `lo..=hi`, each with room for `each` items.
-    pub(super) fn laid_out(lo: f64, hi: f64, count: usize, each: usize) -> Bins<T> {
+    /// `count` empty bins over the keys `lo..=hi`, bin `b` with room for `room(b)` items.
+    pub(super) fn laid_out(
+        lo: f64,
+        hi: f64,
+        count: usize,
+        room: impl Fn(usize) -> usize,
+    ) -> Bins<T> {
         let count = count.max(1);
         let scale = if hi > lo && count > 1 {
             count as f64 / (hi - lo)
@@ -72,7 +77,7 @@ impl<T: Copy> Bins<T> {
         Bins {
             lo,
             scale,
-            bins: (0..count).map(|_| Vec::with_capacity(each)).collect(),
+            bins: (0..count).map(|b| Vec::with_capacity(room(b))).collect(),
         }
     }
 
@@ -339,7 +344,7 @@ mod tests {
                 for parts in [1, 3] {
                     let count = Bins::<(f64, u64)>::count_for(n);
                     let mut bins: Vec<Bins<(f64, u64)>> = (0..parts)
-                        .map(|_| Bins::laid_out(0.0, 1.0, count, 4))
+                        .map(|_| Bins::laid_out(0.0, 1.0, count, |_| 4))
                         .collect();
                     for (k, t) in v.iter().enumerate() {
                         bins[(k * k) % parts].push(t.0, *t);

@@ -245,10 +245,15 @@ impl PairResults {
 
     /// Empty results for one part of a large parallel scan: records binned by y
     /// ([`Bins::laid_out`] over the keys of `y_range`, the input's range of y), in
-    /// `bins` bins of room `each`. All parts of a scan take the same layout.
-    pub(crate) fn binned(y_range: (f64, f64), bins: usize, each: usize) -> PairResults {
+    /// `bins` bins, bin `b` with room `room(b)` (bins in y descending). All parts of a
+    /// scan take the same layout.
+    pub(crate) fn binned(
+        y_range: (f64, f64),
+        bins: usize,
+        room: impl Fn(usize) -> usize,
+    ) -> PairResults {
         PairResults {
-            records: Bins::laid_out(-y_range.1, -y_range.0, bins, each),
+            records: Bins::laid_out(-y_range.1, -y_range.0, bins, room),
             ..PairResults::default()
         }
     }
@@ -844,7 +849,7 @@ pub(crate) mod tests {
                 (r.0.min(s.a.y).min(s.b.y), r.1.max(s.a.y).max(s.b.y))
             });
         let mut out: Vec<PairResults> = (0..parts)
-            .map(|_| PairResults::binned(range, bins, 0))
+            .map(|_| PairResults::binned(range, bins, |_| 0))
             .collect();
         for i in 0..segments.len() {
             for j in i + 1..segments.len() {
