@@ -10,7 +10,9 @@
 //! session 25 (`examples/intersect_profile`-like driver, phases timed apart): the scan
 //! with its rounding 5.7 → 7.0–7.8 ms, the sort 6.1 → 3.1–4.1 ms; the whole `find`
 //! 3–8% faster in paired runs, more when the call follows other work (see
-//! [`RECORDS_PER_BIN`]).
+//! [`RECORDS_PER_BIN`]). On one thread, [`each_sorted_bin`] sorts each bin into a
+//! scratch buffer and hands it on from there, for the caller to consume while it is in
+//! cache (session 26: the points built bin by bin, see `brute_force::assemble_fused`).
 
 use super::bucket::spread_and_sort;
 use rayon::prelude::*;

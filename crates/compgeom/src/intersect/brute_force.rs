@@ -142,7 +142,8 @@ pub(crate) struct PairResults {
 /// How many crossings are rounded together.
 const LANES: usize = 8;
 
-/// From this many records on, sorting and building the points run on the rayon pool.
+/// From this many records on, sorting and building the points run on the rayon pool
+/// (on a pool of one thread: bin by bin, [`assemble_fused`]).
 const PARALLEL_ASSEMBLY_FROM: usize = 50_000;
 
 impl PairResults {
@@ -260,8 +261,9 @@ impl PairResults {
 
     /// [`PairResults::assemble`] of the parts of a parallel scan taken together: the
     /// records are sorted straight from the parts ([`bucket::sort_parts`], or for many
-    /// records [`bins::sort_bins_then`] from their bins), without concatenating them
-    /// first.
+    /// records [`bins::sort_bins_then`] from their bins, or on one thread
+    /// [`bins::each_sorted_bin`] with the points built bin by bin), without
+    /// concatenating them first.
     pub(crate) fn assemble_parts(parts: Vec<PairResults>, segments: &[Segment2]) -> Intersections {
         debug_assert!(
             parts.iter().all(|p| p.pending_len == 0),
