@@ -10,7 +10,9 @@
 //! session 25 (`examples/intersect_profile`-like driver, phases timed apart): the scan
 //! with its rounding 5.7 → 7.0–7.8 ms, the sort 6.1 → 3.1–4.1 ms; the whole `find`
 //! 3–8% faster in paired runs, more when the call follows other work (see
-//! [`RECORDS_PER_BIN`]).
+//! [`RECORDS_PER_BIN`]). On one thread, [`each_sorted_bin`] sorts each bin into a
+//! scratch buffer and hands it on from there, for the caller to consume while it is in
+//! cache (session 26: the points built bin by bin, see `brute_force::assemble_fused`).
 
 use super::bucket::spread_and_sort;
 use rayon::prelude::*;
@@ -32,6 +34,7 @@ const RECORDS_PER_BIN: usize = 4096;
 /// scale)`, the first and the last also those below and above (the map from key to bin
 /// is monotone, so the bins in order hold the items in key order up to the order within
 /// each bin).
+#[derive(Clone)]
 pub(super) struct Bins<T> {
     lo: f64,
     scale: f64,
@@ -60,8 +63,13 @@ impl<T: Copy> Bins<T> {
         (expected / RECORDS_PER_BIN).clamp(1, MAX_BINS)
     }
 
-    /// `count` empty bins over the keys `lo..=hi`, each with room for `each` items.
-    pub(super) fn laid_out(lo: f64, hi: f64, count: usize, each: usize) -> Bins<T> {
+    /// `count` empty bins over the keys `lo..=hi`, bin `b` with room for `room(b)` items.
+    pub(super) fn laid_out(
+        lo: f64,
+        hi: f64,
+        count: usize,
+        room: impl Fn(usize) -> usize,
+    ) -> Bins<T> {
         let count = count.max(1);
         let scale = if hi > lo && count > 1 {
             count as f64 / (hi - lo)
@@ -71,7 +79,7 @@ impl<T: Copy> Bins<T> {
         Bins {
             lo,
             scale,
-            bins: (0..count).map(|_| Vec::with_capacity(each)).collect(),
+            bins: (0..count).map(|b| Vec::with_capacity(room(b))).collect(),
         }
     }
 
@@ -182,6 +190,49 @@ pub(super) fn sort_bins_then<T: Copy + Send + Sync>(
     SortedBins { bins, tallies }
 }
 
+/// [`sort_bins_then`] on this thread, for a `then` that consumes the sorted items:
+/// `then` is called on every bin in order, sorted, while it is in cache. Each bin is
+/// spread from its own memory straight into one scratch buffer, sorted there and handed
+/// over from there (no copy back into the bin); the bin's memory is freed as it is done.
+pub(super) fn each_sorted_bin<T: Copy>(
+    parts: Vec<Bins<T>>,
+    key: impl Fn(&T) -> f64,
+    cmp: impl Fn(&T, &T) -> Ordering + Copy,
+    mut then: impl FnMut(&mut [T]),
+) {
+    let Some(first) = parts.first() else {
+        return;
+    };
+    let (lo, scale, count) = (first.lo, first.scale, first.bins.len());
+    debug_assert!(parts
+        .iter()
+        .all(|p| (p.lo, p.scale, p.bins.len()) == (lo, scale, count)));
+    let mut parts: Vec<std::vec::IntoIter<Vec<T>>> =
+        parts.into_iter().map(|p| p.bins.into_iter()).collect();
+    let (mut scratch, mut fines, mut local) = (Vec::new(), Vec::new(), Vec::new());
+    for b in 0..count {
+        let bin = gather(parts.iter_mut().filter_map(Iterator::next).collect());
+        let n = bin.len();
+        if n == 0 {
+            continue;
+        }
+        if scratch.len() < n {
+            scratch.resize(n, bin[0]);
+        }
+        let (bin_lo, fine_scale) = if scale > 0.0 {
+            (lo + b as f64 / scale, n as f64 * scale)
+        } else {
+            (lo, 0.0)
+        };
+        let to = &mut scratch[..n];
+        sort_bin_into(
+            &bin, &key, cmp, bin_lo, fine_scale, to, &mut fines, &mut local,
+        );
+        drop(bin);
+        then(to);
+    }
+}
+
 /// One bin's pieces as one list (the first piece grown to hold the others).
 fn gather<T: Copy>(pieces: Vec<Vec<T>>) -> Vec<T> {
     let total: usize = pieces.iter().map(Vec::len).sum();
@@ -194,9 +245,7 @@ fn gather<T: Copy>(pieces: Vec<Vec<T>>) -> Vec<T> {
     bin
 }
 
-/// Sort `bin` by `cmp`: small bins directly; the others spread over `bin.len()` fine
-/// buckets by `((key - lo) * scale)` (or, with `scale` 0, by the bin's own range of
-/// keys) through `scratch`, then each sorted ([`spread_and_sort`]).
+/// Sort `bin` by `cmp` in place ([`sort_bin_into`] through `scratch`).
 #[allow(clippy::too_many_arguments)]
 fn sort_bin<T: Copy>(
     bin: &mut [T],
@@ -208,9 +257,35 @@ fn sort_bin<T: Copy>(
     fines: &mut Vec<u32>,
     local: &mut Vec<u32>,
 ) {
-    let n = bin.len();
-    if n <= 16 {
+    if bin.len() <= 16 {
         bin.sort_unstable_by(cmp);
+        return;
+    }
+    scratch.clear();
+    scratch.extend_from_slice(bin);
+    sort_bin_into(scratch, key, cmp, lo, scale, bin, fines, local);
+}
+
+/// `bin` sorted by `cmp` into `to` (of the same length): small bins copied and sorted
+/// directly; the others spread over `bin.len()` fine buckets by `((key - lo) * scale)`
+/// (or, with `scale` 0, by the bin's own range of keys), then each sorted
+/// ([`spread_and_sort`]).
+#[allow(clippy::too_many_arguments)]
+fn sort_bin_into<T: Copy>(
+    bin: &[T],
+    key: impl Fn(&T) -> f64,
+    cmp: impl Fn(&T, &T) -> Ordering + Copy,
+    lo: f64,
+    scale: f64,
+    to: &mut [T],
+    fines: &mut Vec<u32>,
+    local: &mut Vec<u32>,
+) {
+    let n = bin.len();
+    debug_assert_eq!(to.len(), n);
+    if n <= 16 {
+        to.copy_from_slice(bin);
+        to.sort_unstable_by(cmp);
         return;
     }
     let (lo, scale) = if scale > 0.0 {
@@ -232,9 +307,7 @@ fn sort_bin<T: Copy>(
         bin.iter()
             .map(|t| (((key(t) - lo) * scale) as usize).min(n - 1) as u32),
     );
-    scratch.clear();
-    scratch.extend_from_slice(bin);
-    spread_and_sort(scratch, fines, bin, 0, n, cmp, local);
+    spread_and_sort(bin, fines, to, 0, n, cmp, local);
 }
 
 #[cfg(test)]
@@ -273,16 +346,21 @@ mod tests {
                 for parts in [1, 3] {
                     let count = Bins::<(f64, u64)>::count_for(n);
                     let mut bins: Vec<Bins<(f64, u64)>> = (0..parts)
-                        .map(|_| Bins::laid_out(0.0, 1.0, count, 4))
+                        .map(|_| Bins::laid_out(0.0, 1.0, count, |_| 4))
                         .collect();
                     for (k, t) in v.iter().enumerate() {
                         bins[(k * k) % parts].push(t.0, *t);
                     }
                     assert_eq!(bins.iter().map(Bins::len).sum::<usize>(), n);
+                    let bins_again = bins.clone();
                     let sorted = sort_bins_then(bins, |t| t.0, cmp, |b| b.len());
                     assert_eq!(sorted.tallies.iter().sum::<usize>(), n);
                     let got: Vec<(f64, u64)> = sorted.bins.concat();
                     assert_eq!(got.len(), n);
+                    // The same from the serial pass, bin after bin.
+                    let mut serial = Vec::new();
+                    each_sorted_bin(bins_again, |t| t.0, cmp, |b| serial.extend_from_slice(b));
+                    assert_eq!(serial, got, "n {n} kind {kind} parts {parts}");
                     assert!(
                         got.iter()
                             .zip(&want)
@@ -293,7 +371,15 @@ mod tests {
                 // One bin: its range comes from its keys.
                 let mut one = Bins::single(0);
                 v.iter().for_each(|t| one.push(t.0, *t));
+                let mut serial = Vec::new();
+                each_sorted_bin(
+                    vec![one.clone()],
+                    |t| t.0,
+                    cmp,
+                    |b| serial.extend_from_slice(b),
+                );
                 let got = sort_bins_then(vec![one], |t| t.0, cmp, |_| 0).bins.concat();
+                assert_eq!(serial, got);
                 assert!(got
                     .iter()
                     .zip(&want)

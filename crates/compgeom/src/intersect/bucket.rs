@@ -283,8 +283,12 @@ pub(super) fn spread_and_sort<T: Copy>(
         *count += 1;
         largest = largest.max(*count);
     }
-    for f in 0..width {
-        local[f + 1] += local[f];
+    // (A running sum in a register: `local[f + 1] += local[f]` waited on the store of
+    // the step before, a store-forwarding latency per fine bucket.)
+    let mut sum = 0;
+    for c in local.iter_mut() {
+        sum += *c;
+        *c = sum;
     }
     let mut at = local.clone();
     for (t, &f) in from.iter().zip(fines) {
