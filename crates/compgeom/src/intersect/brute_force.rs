@@ -143,8 +143,16 @@ pub(crate) struct PairResults {
 const LANES: usize = 8;
 
 /// From this many records on, sorting and building the points run on the rayon pool
-/// (on a pool of one thread: bin by bin, [`assemble_fused`]).
+/// (on a pool of at most [`FUSED_UP_TO_THREADS`] threads: bin by bin, [`assemble_fused`]).
 const PARALLEL_ASSEMBLY_FROM: usize = 50_000;
+
+/// On a pool of at most this many threads the large assembly runs bin by bin on the
+/// calling thread ([`assemble_fused`]) after the parallel scan, rather than on the pool
+/// ([`assemble_marked`]). Session 26, long random 1e3 in `compgeom-bench intersect`, two
+/// threads, six alternated runs each: `find` 7.0–7.9 ms fused against 8.8–10.2 ms on
+/// the pool (the pool's assembly reads every record twice and builds each point apart).
+/// Larger pools keep the pool's assembly (not measured: the machines here have 2 cores).
+const FUSED_UP_TO_THREADS: usize = 2;
 
 impl PairResults {
     /// Test segments `i < j` exactly and record how they meet (`bound`: a static
@@ -280,7 +288,7 @@ impl PairResults {
             let sorted = bucket::sort_parts(records, record_key, Record::cmp);
             return assemble_sorted(sorted, overlapping, segments);
         }
-        if rayon::current_num_threads() == 1 {
+        if rayon::current_num_threads() <= FUSED_UP_TO_THREADS {
             return assemble_fused(records, overlapping, segments);
         }
         assemble_marked(records, overlapping, segments)
@@ -408,7 +416,8 @@ fn each_group_start(
     }
 }
 
-/// [`PairResults::assemble_parts`] for many records on one thread: each bin is sorted
+/// [`PairResults::assemble_parts`] for many records on the calling thread (pools of at
+/// most [`FUSED_UP_TO_THREADS`]): each bin is sorted
 /// ([`bins::each_sorted_bin`]), its groups found and its points built and appended to
 /// the result while its records are in cache, bin after bin (a group lies within one
 /// bin). The result is reserved for one point per record, a bound, and filled in place:
