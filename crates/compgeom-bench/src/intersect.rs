@@ -219,6 +219,31 @@
 //! building): find 15.8 ms against geo `collect()` 13.0 ms, 0.83× (was 0.68–0.76×), the
 //! collecting loop 0.73× (was 0.56–0.65×); two threads 0.87× with the second vCPU busy.
 //! Short 1e5 find 3.03×, grid 1e4 1.11× (unchanged).
+//!
+//! Session 26 (quiet machine, load ~1.2). On a pool of at most two threads the large
+//! results are now assembled bin by bin on the calling thread after the scan
+//! (`assemble_fused`: each bin sorted into a scratch buffer, its points appended to the
+//! result while it is in cache, stretches of lone crossings appended by one `extend`;
+//! the bins sized by an estimate of their share of the crossings; two fine buckets per
+//! record). Long random 1e3, one thread: callgrind per `find` 139.1M → 102.8M; the
+//! driver (`examples/intersect_profile find 1000 20`) 10.8–11.2 → 8.2–8.4 ms. Before,
+//! with two threads the pool's assembly was slower than one thread's fused one. This
+//! table, three full runs each way, ratio = geo / compgeom:
+//!
+//! | input | threads | count vs geo count() | find vs geo collect() | count vs O(n²) count | find vs O(n²) collect |
+//! |---|---:|---|---|---|---|
+//! | short random 1e5 | 1 | 5.47–5.71× | 3.49–3.65× | 458–477× | 284–313× |
+//! | long random 1e3 | 1 | 1.38× | 1.14–1.19× (9.5–10.1 ms) | 1.15–1.17× | 0.99–1.01× |
+//! | 100×100 grid 1e4 | 1 | 1.10–1.13× | 1.14–1.16× | 8.3–8.5× | 8.3–8.6× |
+//! | short random 1e5 | 2 | 5.80–7.09× | 3.74–4.79× | 494–584× | 312–402× |
+//! | long random 1e3 | 2 | 2.30–2.58× | 1.13–1.40× (7.7–9.7 ms) | 1.92–2.17× | 1.01–1.21× |
+//! | 100×100 grid 1e4 | 2 | 1.13–1.37× | 1.49–1.53× | 8.3–10.1× | 10.7–11.0× |
+//!
+//! Before this session, same machine state (earlier the same evening), one thread: long
+//! find 12.0 ms, 0.85× geo `collect()`, 0.75× the collecting loop. What is left: on one
+//! thread the long row's `find` ties the collecting O(n²) loop (which neither rounds
+//! correctly, merges coincident points nor sorts). Its time (perf, the driver) is now
+//! the scan with its rounding (55%), the bin sort (25%) and the points (8%).
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
