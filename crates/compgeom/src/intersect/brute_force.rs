@@ -355,12 +355,22 @@ fn assemble_sorted(
     } else {
         starts.windows(2).map(point).collect()
     };
-    let mut overlaps = overlap_pieces(&segs, &overlapping);
+    with_overlaps(points, &segs, &overlapping)
+}
+
+/// The answer from its points: the maximal overlap pieces of the `overlapping` pairs
+/// added, in their order.
+fn with_overlaps(
+    points: Vec<IntersectionPoint>,
+    segs: &[Oriented],
+    overlapping: &[(usize, usize)],
+) -> Intersections {
+    let mut overlaps = overlap_pieces(segs, overlapping);
     sort_overlaps(&mut overlaps);
     Intersections {
         points,
         overlaps,
-        segments: segments.len(),
+        segments: segs.len(),
     }
 }
 
@@ -456,13 +466,7 @@ fn assemble_fused(
     if points.len() < points.capacity() / 2 {
         points.shrink_to_fit();
     }
-    let mut overlaps = overlap_pieces(&segs, &overlapping);
-    sort_overlaps(&mut overlaps);
-    Intersections {
-        points,
-        overlaps,
-        segments: segments.len(),
-    }
+    with_overlaps(points, &segs, &overlapping)
 }
 
 /// Call `found(groups, lone)` for the groups of equal points of sorted `records`, in
@@ -562,13 +566,7 @@ fn assemble_marked(
             },
         )
         .collect_into_vec(&mut points);
-    let mut overlaps = overlap_pieces(&segs, &overlapping);
-    sort_overlaps(&mut overlaps);
-    Intersections {
-        points,
-        overlaps,
-        segments: segments.len(),
-    }
+    with_overlaps(points, &segs, &overlapping)
 }
 
 /// Sorted bins of records whose groups are marked ([`mark_groups`]), with the first
