@@ -40,6 +40,7 @@
 //! assert_eq!((d.vertex_count(), d.edge_count(), d.face_count()), (5, 8, 5));
 //! ```
 mod build;
+mod cancel;
 mod export;
 mod flat;
 mod holes;
@@ -48,6 +49,7 @@ mod validate;
 
 pub(crate) use build::push_ring_segments;
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
+pub(crate) use cancel::without_cancelling;
 pub use export::exact_coords;
 pub(crate) use flat::Flat;
 pub(crate) use holes::{compare_xy_filtered, compare_y_filtered, faces_left_of, side, Rounded};

@@ -107,21 +107,28 @@ const HASH_RINGS_BELOW: usize = 16;
 /// The ring starts are counted among this many segments spread evenly over the input.
 const RING_SAMPLE: usize = 32;
 
+/// Whether `sub` looks like many short rings (fewer than [`HASH_RINGS_BELOW`] edges on
+/// average among [`RING_SAMPLE`] segments spread evenly over it): maps and dissolves,
+/// whose rings share vertices and sides.
+pub(super) fn short_rings(sub: &[Segment2]) -> bool {
+    let n = sub.len();
+    // Segments k > 0 at about even steps; a start is one not joined to the one before.
+    let step = (n / RING_SAMPLE).max(1);
+    let (mut looked, mut starts, mut k) = (0, 0, step);
+    while k < n {
+        looked += 1;
+        starts += usize::from(sub[k - 1].b != sub[k].a);
+        k += step;
+    }
+    looked > 0 && looked < HASH_RINGS_BELOW * starts
+}
+
 impl Ends {
     fn of(sub: &[Segment2]) -> Ends {
-        let n = sub.len();
-        // Segments k > 0 at about even steps; a start is one not joined to the one before.
-        let step = (n / RING_SAMPLE).max(1);
-        let (mut looked, mut starts, mut k) = (0, 0, step);
-        while k < n {
-            looked += 1;
-            starts += usize::from(sub[k - 1].b != sub[k].a);
-            k += step;
-        }
-        if looked > 0 && looked < HASH_RINGS_BELOW * starts {
+        if short_rings(sub) {
             Ends::hashed(sub)
         } else {
-            Ends::by_segments(n)
+            Ends::by_segments(sub.len())
         }
     }
 
