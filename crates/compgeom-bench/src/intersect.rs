@@ -244,6 +244,19 @@
 //! thread the long row's `find` ties the collecting O(n²) loop (which neither rounds
 //! correctly, merges coincident points nor sorts). Its time (perf, the driver) is now
 //! the scan with its rounding (55%), the bin sort (25%) and the points (8%).
+//!
+//! Session 27, long random 1e3, one thread. The driver now takes this table's input
+//! (`examples/intersect_profile find 1000 20 bench-long`): 9.1–9.9 ms there against
+//! 10.8–11.3 ms for `find` in this table the same minutes, with 0 page faults per call
+//! here. Timed here alone in a loop `find` takes 9.1–9.4 ms; after each of count, geo
+//! `count()`, geo `collect()` or a 26 MB vector written and freed it drifts up to 10–11
+//! ms. Sampled (perf, 40 calls each, one geo `collect()` before each call here): the scan
+//! +7%, the bin sort +40%, the assembly of the points +86% against the driver: writes
+//! into memory no cache holds (the 10 MB result above all), which the driver's loop
+//! finds warm (it reuses the memory its last result freed, just read by the drop).
+//! Tried and not kept: `e_t`'s division in the rounding replaced by a power-of-two bound
+//! (`vdivpd` count 22 → 19; driver task-clock +0.8%, no gain: the divisions are not
+//! the bottleneck).
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
