@@ -2,7 +2,9 @@
 //! arrangement of both inputs' rings straight to the result's rings, on compact arrays.
 //!
 //! 1. *Arrangement*: [`Flat::of_segments`] (exact noding: vertices, edges, the ring edges
-//!    carrying each edge).
+//!    carrying each edge), of the ring edges left once those whose contributions to the
+//!    winding numbers cancel are dropped (sides neighbouring polygons of one input share,
+//!    run both ways: `dcel/cancel.rs`; not when every boundary vertex is to be kept).
 //! 2. *Links*: the outgoing half-edges of each vertex; only at vertices of degree > 2 are
 //!    they sorted by exact angle (from the directions of the input segments carrying them,
 //!    as in [`crate::dcel`]); `next(e)` is the half-edge just clockwise of `twin(e)`.
