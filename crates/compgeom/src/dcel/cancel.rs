@@ -39,10 +39,7 @@ pub(crate) fn without_cancelling(segs: &[Segment2], na: usize) -> Option<(Vec<Se
 /// cancels. (Segments of zero length count as running one way: they never cancel, and
 /// add nothing to any winding number anyway.) An open-addressing hash of the segments'
 /// end points (exact equality, -0 = 0), O(n) expected.
-pub(super) fn left_after_cancelling(
-    segs: &[Segment2],
-    in_a: impl Fn(usize) -> bool,
-) -> Option<Vec<usize>> {
+fn left_after_cancelling(segs: &[Segment2], in_a: impl Fn(usize) -> bool) -> Option<Vec<usize>> {
     let n = segs.len();
     // A table at most half full.
     let bits = (2 * n).max(16).next_power_of_two().trailing_zeros();
@@ -64,8 +61,7 @@ pub(super) fn left_after_cancelling(
                 slots[at] = k as u32;
                 break k;
             }
-            let t = segs[f as usize];
-            if (t.a == lo && t.b == hi) || (t.a == hi && t.b == lo) {
+            if ends(&segs[f as usize]) == (lo, hi) {
                 shared = true;
                 break f as usize;
             }
@@ -101,20 +97,17 @@ fn sides_shared(segs: &[Segment2]) -> bool {
     const BITS: u32 = 10; // 1024 slots for 256 samples
     let mut slots = [NONE; 1 << BITS];
     let step = n / SAMPLE;
-    let slot_of = |s: &Segment2| {
-        let (lo, hi) = ends(s);
-        (hash(lo, hi) >> (64 - BITS)) as usize
-    };
+    let slot_of = |(lo, hi): (Point2, Point2)| (hash(lo, hi) >> (64 - BITS)) as usize;
     for k in (0..n).step_by(step).take(SAMPLE) {
-        let mut at = slot_of(&segs[k]);
+        let mut at = slot_of(ends(&segs[k]));
         while slots[at] != NONE {
             at = (at + 1) & ((1 << BITS) - 1);
         }
         slots[at] = k as u32;
     }
     segs.iter().enumerate().any(|(k, s)| {
-        let mut at = slot_of(s);
         let (lo, hi) = ends(s);
+        let mut at = slot_of((lo, hi));
         while slots[at] != NONE {
             let f = slots[at] as usize;
             if f != k && ends(&segs[f]) == (lo, hi) {
