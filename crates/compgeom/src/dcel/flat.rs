@@ -176,21 +176,6 @@ fn sweep_first(a: Point2, b: Point2) -> bool {
     a.y > b.y || (a.y == b.y && a.x < b.x)
 }
 
-/// The first index `i >= from` with `sorted[i] >= key` (`sorted.len()` if none), by
-/// doubling steps from `from` then a binary search: O(log(i - from)).
-fn gallop(sorted: &[u64], from: usize, key: u64) -> usize {
-    let mut lo = from; // sorted[..lo] < key
-    let mut step = 1;
-    let mut hi = from; // candidate end of the bracket
-    while hi < sorted.len() && sorted[hi] < key {
-        lo = hi + 1;
-        hi = from + step;
-        step *= 2;
-    }
-    let hi = hi.min(sorted.len());
-    lo + sorted[lo..hi].partition_point(|&v| v < key)
-}
-
 /// A set of numbers below a bound, as bits, with one summary bit per word of bits
 /// (set iff the word is not zero), so that listing the members in a range skips empty
 /// stretches 4096 numbers at a time: O(range / 4096 + words touched + members).
@@ -761,8 +746,8 @@ impl Flat {
         };
         // Cuts: the positions (keys) along each line of its segments' endpoints and
         // contacts, one array cut into per-line runs by a counting sort on the line (the
-        // line is implied by the run, so a cut is one key), then each run sorted and
-        // deduplicated in place (a line holds few cuts).
+        // line is implied by the run, so a cut is one key), each run then sorted and
+        // deduplicated (a line holds few cuts), and each cut given its vertex.
         let mut cut_start = vec![0usize; line_count + 1];
         for &l in &line_of {
             cut_start[l as usize + 1] += 2;
@@ -774,44 +759,6 @@ impl Flat {
         for l in 0..line_count {
             cut_start[l + 1] += cut_start[l];
         }
-        let mut cuts = vec![0u64; cut_start[line_count]];
-        {
-            let mut fill: Vec<usize> = cut_start[..line_count].to_vec();
-            let mut put = |l: u32, key: u64| {
-                cuts[fill[l as usize]] = key;
-                fill[l as usize] += 1;
-            };
-            for (s, &l) in segs.iter().zip(&line_of) {
-                put(l, okey(s.lo));
-                put(l, okey(s.hi));
-            }
-            for &(h, v) in &contacts {
-                let (sh, sv) = (&segs[h as usize], &segs[v as usize]);
-                put(line_of[h as usize], okey(sv.across));
-                put(line_of[v as usize], okey(sh.across));
-            }
-        }
-        drop(contacts);
-        let mut kept = 0;
-        for l in 0..line_count {
-            let (a, b) = (cut_start[l], cut_start[l + 1]);
-            cuts[a..b].sort_unstable();
-            cut_start[l] = kept;
-            for c in a..b {
-                if c == a || cuts[c] != cuts[c - 1] {
-                    cuts[kept] = cuts[c];
-                    kept += 1;
-                }
-            }
-        }
-        cut_start[line_count] = kept;
-        cuts.truncate(kept);
-        // Vertices: every cut as a point, each point once. A point lies on at most one
-        // horizontal and one vertical line, so the cuts of the vertical lines are distinct
-        // points; a cut of a horizontal line at (x, y) is the same point as the cut at
-        // y of the vertical line through x, if there is one (a galloping search over the
-        // vertical lines, a binary search in that line's cuts: lines are sorted by axis
-        // then position, cuts by line then position).
         let unkey = |k: u64| {
             if k >> 63 == 1 {
                 f64::from_bits(k & !(1 << 63))
@@ -819,53 +766,118 @@ impl Flat {
                 f64::from_bits(!k)
             }
         };
-        let line_axis = |l: usize| segs[lines[l]].axis;
-        let line_across = |l: usize| segs[lines[l]].across;
         let first_vertical = line_of
             .get(first_vertical_seg)
             .map_or(line_count, |&l| l as usize);
+        let mut cuts = vec![0u64; cut_start[line_count]];
+        let mut cut_vertex = vec![0u32; cut_start[line_count]];
+        // Each line's fill cursor; once its run is deduplicated, the run's end.
+        let mut cut_end: Vec<usize> = cut_start[..line_count].to_vec();
         let mut vertices: Vec<Point2> = Vec::with_capacity(cuts.len());
-        let mut cut_vertex = vec![0u32; cuts.len()];
+        // The vertical lines first: their endpoints and contacts, each distinct cut a
+        // vertex (a point lies on at most one vertical line).
+        for (s, &l) in segs.iter().zip(&line_of).skip(first_vertical_seg) {
+            for key in [okey(s.lo), okey(s.hi)] {
+                cuts[cut_end[l as usize]] = key;
+                cut_end[l as usize] += 1;
+            }
+        }
+        for &(h, v) in &contacts {
+            let l = line_of[v as usize] as usize;
+            cuts[cut_end[l]] = okey(segs[h as usize].across);
+            cut_end[l] += 1;
+        }
         for l in first_vertical..line_count {
-            let x = line_across(l);
-            for c in cut_start[l]..cut_start[l + 1] {
-                cut_vertex[c] = vertices.len() as u32;
-                vertices.push(point(1, x, unkey(cuts[c])));
+            let a = cut_start[l];
+            cuts[a..cut_end[l]].sort_unstable();
+            let x = segs[lines[l]].across;
+            let mut kept = a;
+            for c in a..cut_end[l] {
+                if c == a || cuts[c] != cuts[kept - 1] {
+                    cuts[kept] = cuts[c];
+                    cut_vertex[kept] = vertices.len() as u32;
+                    vertices.push(point(1, x, unkey(cuts[c])));
+                    kept += 1;
+                }
+            }
+            cut_end[l] = kept;
+        }
+        // Then the horizontal lines: a cut at (x, y) is a vertex of the vertical line
+        // through x exactly when it is a contact (a vertical segment's cut at y lies on
+        // that segment, which then touches the horizontal one there), so contacts carry
+        // their vertex over and only endpoints touching no vertical segment are new
+        // points. The contacts come by vertical segment, then ascending y (the sweep
+        // lists them so): each segment's vertices are found in one forward walk along
+        // its line's run, reading the vertical lines' cuts front to back.
+        const NO_VERTEX: u32 = u32::MAX;
+        let mut walk = (u32::MAX, 0usize); // (vertical segment, position in its line)
+        for &(h, v) in &contacts {
+            let (sh, sv) = (&segs[h as usize], &segs[v as usize]);
+            let lv = line_of[v as usize] as usize;
+            let run = &cuts[cut_start[lv]..cut_end[lv]];
+            if walk.0 != v {
+                walk = (v, run.partition_point(|&k| k < okey(sv.lo)));
+            }
+            let ky = okey(sh.across);
+            while walk.1 < run.len() && run[walk.1] < ky {
+                walk.1 += 1;
+            }
+            if run.get(walk.1) != Some(&ky) {
+                // (Not in ascending y after all: a search, still exact.)
+                walk.1 = run.partition_point(|&k| k < ky);
+            }
+            debug_assert_eq!(run[walk.1], ky);
+            let lh = line_of[h as usize] as usize;
+            cuts[cut_end[lh]] = okey(sv.across);
+            cut_vertex[cut_end[lh]] = cut_vertex[cut_start[lv] + walk.1];
+            cut_end[lh] += 1;
+        }
+        drop(contacts);
+        for (s, &l) in segs[..first_vertical_seg].iter().zip(&line_of) {
+            for key in [okey(s.lo), okey(s.hi)] {
+                cuts[cut_end[l as usize]] = key;
+                cut_vertex[cut_end[l as usize]] = NO_VERTEX;
+                cut_end[l as usize] += 1;
             }
         }
-        // The vertical lines' positions, contiguous for the binary searches.
-        let verticals: Vec<u64> = (first_vertical..line_count)
-            .map(|l| okey(line_across(l)))
-            .collect();
+        // (Sorted by key, then vertex: a contact's vertex comes before NO_VERTEX.)
+        let mut run: Vec<(u64, u32)> = Vec::new();
         for l in 0..first_vertical {
-            debug_assert_eq!(line_axis(l), 0);
-            let y = line_across(l);
-            let ky = okey(y);
-            // The line's cuts ascend in x: the search in `verticals` resumes where the
-            // previous cut's ended (galloping), O(log gap) instead of O(log V) per cut.
-            let mut from = 0;
-            for c in cut_start[l]..cut_start[l + 1] {
-                let kx = cuts[c];
-                from = gallop(&verticals, from, kx);
-                let at = (verticals.get(from) == Some(&kx))
-                    .then_some(first_vertical + from)
-                    .and_then(|v| {
-                        let range = cut_start[v]..cut_start[v + 1];
-                        cuts[range.clone()]
-                            .binary_search(&ky)
-                            .ok()
-                            .map(|j| range.start + j)
-                    });
-                cut_vertex[c] = match at {
-                    Some(vc) => cut_vertex[vc],
-                    None => {
-                        vertices.push(point(0, y, unkey(kx)));
-                        vertices.len() as u32 - 1
-                    }
+            let a = cut_start[l];
+            run.clear();
+            run.extend((a..cut_end[l]).map(|c| (cuts[c], cut_vertex[c])));
+            run.sort_unstable();
+            let y = segs[lines[l]].across;
+            let mut kept = a;
+            for (i, &(key, vertex)) in run.iter().enumerate() {
+                if i > 0 && key == run[i - 1].0 {
+                    continue;
+                }
+                cuts[kept] = key;
+                cut_vertex[kept] = if vertex == NO_VERTEX {
+                    vertices.push(point(0, y, unkey(key)));
+                    vertices.len() as u32 - 1
+                } else {
+                    vertex
                 };
+                kept += 1;
             }
+            cut_end[l] = kept;
         }
-        drop(verticals);
+        drop(run);
+        // The runs closed up: line l's cuts are cut_start[l]..cut_start[l + 1] again.
+        let mut kept = 0;
+        for l in 0..line_count {
+            let (a, b) = (cut_start[l], cut_end[l]);
+            cut_start[l] = kept;
+            cuts.copy_within(a..b, kept);
+            cut_vertex.copy_within(a..b, kept);
+            kept += b - a;
+        }
+        cut_start[line_count] = kept;
+        cuts.truncate(kept);
+        cut_vertex.truncate(kept);
+        drop(cut_end);
         // Pieces, line by line: between consecutive cuts, the segments covering them.
         // Each edge keeps its first source beside it; only collinear overlaps (a second
         // segment over the same piece) go to a list of further sources, so without
@@ -1147,7 +1159,7 @@ mod tests {
 
         /// Rings of axis-parallel squares on a small grid (shared edges, duplicate
         /// squares, touching corners, T-junctions), zeros sometimes `-0.0`, in many lines:
-        /// the counting-sort edge order and the galloping vertex look-up give the
+        /// the counting-sort edge order and the contacts' vertex walk give the
         /// general path's arrangement, and the ring order of the pieces is kept.
         #[test]
         fn axis_parallel_path_agrees_on_square_rings(
@@ -1239,18 +1251,6 @@ mod tests {
             prop_assert_eq!(got, want);
         }
 
-        /// The galloping search is the partition point from any start at or before it,
-        /// and the start itself after it.
-        #[test]
-        fn gallop_is_the_partition_point(
-            mut v in prop::collection::vec(0..40u64, 0..64), key in 0..42u64, from in 0..70usize
-        ) {
-            v.sort_unstable();
-            let pp = v.partition_point(|&x| x < key);
-            let from = from.min(v.len());
-            let want = if from <= pp { pp } else { from };
-            prop_assert_eq!(gallop(&v, from, key), want);
-        }
 
         #[test]
         fn general_path_is_the_arrangement_on_grids(
