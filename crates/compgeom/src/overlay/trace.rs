@@ -208,6 +208,57 @@ fn sort_by_keys(list: &mut [u32], dir: impl Fn(u32) -> (f64, f64)) -> bool {
     ok
 }
 
+/// The half-edges leaving each vertex (half-edge `2i` runs `edges[i][0] → edges[i][1]`,
+/// `2i + 1` back) as `(starts, lists)`: vertex `v`'s are `lists[starts[v]..starts[v + 1]]`,
+/// in the order of the edges.
+fn outgoing(edges: &[[u32; 2]], nv: usize) -> (Vec<u32>, Vec<u32>) {
+    // Counted one place up, so that starts[v + 1] is v's fill cursor and, once filled,
+    // v's end, i.e. the start of v + 1 (no copy of the starts to fill with).
+    let mut starts = vec![0u32; nv + 2];
+    for [u, v] in edges {
+        starts[*u as usize + 2] += 1;
+        starts[*v as usize + 2] += 1;
+    }
+    for v in 0..nv {
+        starts[v + 2] += starts[v + 1];
+    }
+    let mut lists = vec![0u32; 2 * edges.len()];
+    for (i, [u, v]) in edges.iter().enumerate() {
+        for h in [2 * i as u32, 2 * i as u32 + 1] {
+            let o = if h & 1 == 0 { *u } else { *v } as usize;
+            let at = &mut starts[o + 1];
+            lists[*at as usize] = h;
+            *at += 1;
+        }
+    }
+    starts.pop();
+    (starts, lists)
+}
+
+/// [`outgoing`] for an arrangement of axis-parallel edges (`info[i].quad` not
+/// [`AXIS_NONE`]), each list in counter-clockwise order from +x: the half-edges go
+/// into four slots per vertex, one per direction (two edges leaving a vertex the same
+/// way would overlap, and the arrangement has none), read out vertex by vertex.
+fn outgoing_by_axis(edges: &[[u32; 2]], info: &[EdgeInfo], nv: usize) -> (Vec<u32>, Vec<u32>) {
+    let mut slots = vec![NONE; 4 * nv];
+    for (i, ([u, v], e)) in edges.iter().zip(info).enumerate() {
+        let q = e.quad as usize;
+        debug_assert!(q < 4);
+        debug_assert_eq!(slots[4 * *u as usize + q], NONE);
+        debug_assert_eq!(slots[4 * *v as usize + (q ^ 2)], NONE);
+        slots[4 * *u as usize + q] = 2 * i as u32;
+        slots[4 * *v as usize + (q ^ 2)] = 2 * i as u32 + 1;
+    }
+    let mut starts = Vec::with_capacity(nv + 1);
+    let mut lists = Vec::with_capacity(2 * edges.len());
+    starts.push(0);
+    for four in slots.chunks_exact(4) {
+        lists.extend(four.iter().copied().filter(|&h| h != NONE));
+        starts.push(lists.len() as u32);
+    }
+    (starts, lists)
+}
+
 fn find(p: &mut [u32], mut x: u32) -> u32 {
     while p[x as usize] != x {
         let up = p[p[x as usize] as usize];
@@ -340,27 +391,16 @@ fn traced(
         }
     };
     let origin = |h: u32| flat.edges[(h >> 1) as usize][(h & 1) as usize];
-    // Outgoing half-edges per vertex (one array cut into slices).
-    // Counted one place up, so that out_start[v + 1] is v's fill cursor and, once
-    // filled, v's end, i.e. the start of v + 1 (no copy of the starts to fill with).
-    let mut out_start = vec![0u32; nv + 2];
-    for [u, v] in &flat.edges {
-        out_start[*u as usize + 2] += 1;
-        out_start[*v as usize + 2] += 1;
-    }
-    for v in 0..nv {
-        out_start[v + 2] += out_start[v + 1];
-    }
-    let mut out = vec![0u32; m];
-    for (i, [u, v]) in flat.edges.iter().enumerate() {
-        for h in [2 * i as u32, 2 * i as u32 + 1] {
-            let o = if h & 1 == 0 { *u } else { *v } as usize;
-            let at = &mut out_start[o + 1];
-            out[*at as usize] = h;
-            *at += 1;
-        }
-    }
-    out_start.pop();
+    // Outgoing half-edges per vertex (one array cut into slices). When every edge is
+    // axis-parallel, each vertex has at most one per axis direction, so the lists come
+    // already in counter-clockwise order from a table of four slots per vertex, without
+    // a sort (which would look up every half-edge's segment for its direction).
+    let axis_only = info.iter().all(|e| e.quad != AXIS_NONE);
+    let (out_start, mut out) = if axis_only {
+        outgoing_by_axis(&flat.edges, &info, nv)
+    } else {
+        outgoing(&flat.edges, nv)
+    };
     let slice = |v: usize| (out_start[v] as usize, out_start[v + 1] as usize);
     let mut next = vec![0u32; m];
     // One list's entries with their half-plane and carrier, each made once (the sort
@@ -370,7 +410,7 @@ fn traced(
         let (a, b) = slice(v);
         let list = &mut out[a..b];
         let k = list.len();
-        if k > 2 {
+        if k > 2 && !axis_only {
             // By filtered keys (exact on the axes: grid data), else by the exact angle
             // comparison.
             if !sort_by_keys(list, dir) {
