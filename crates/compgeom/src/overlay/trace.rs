@@ -970,8 +970,9 @@ fn windings_left_of_by(
 /// by the rounded points the arrangement keeps.
 ///
 /// Cost: O(V + E) for the strips plus the edges of each query's strip (the same budget
-/// as [`windings_left_of`]), instead of a sweep over every vertex; O(E) per query for at
-/// most [`DIRECT_FACE_QUERIES`] queries, without the strips.
+/// as [`windings_left_of`]), instead of a sweep over every vertex; for at most
+/// [`DIRECT_FACE_QUERIES`] queries Q, O(E log Q) plus the queries in each edge's y range,
+/// without the strips.
 fn faces_left_by_strips(
     flat: &Flat,
     seg_of: impl Fn(usize) -> Segment2,
@@ -1069,25 +1070,34 @@ fn faces_left_by(
         })
     };
     if queries.len() <= direct_up_to {
-        // Few queries: every edge is looked at for each, by its carrier's box first.
-        return Some(
-            queries
-                .iter()
-                .map(|&q| {
-                    let Point2 { x, y } = flat.vertices.approx(q as usize);
-                    let (mut best, mut bound) = (None, f64::NEG_INFINITY);
-                    for (i, &(x_min, x_max)) in xr.iter().enumerate() {
-                        // Wholly east of q's rounded point (so of q: rounding is
-                        // monotone), or wholly west of the best edge found: not nearer.
-                        if x_min > x || x_max < bound {
-                            continue;
-                        }
-                        consider(q, y, i, &mut best, &mut bound);
-                    }
-                    half_edge(best)
-                })
-                .collect(),
-        );
+        // Few queries: every edge is looked at once, against the queries in its
+        // carrier's y range (a binary search among them sorted by y), each by its
+        // carrier's box first.
+        let mut by_y: Vec<(Point2, usize)> = queries
+            .iter()
+            .enumerate()
+            .map(|(k, &q)| (flat.vertices.approx(q as usize), k))
+            .collect();
+        by_y.sort_unstable_by(|s, t| s.0.y.total_cmp(&t.0.y));
+        let mut found = vec![(None, f64::NEG_INFINITY); queries.len()];
+        for (i, (&(lo, hi), &(x_min, x_max))) in ranges.iter().zip(&xr).enumerate() {
+            // (total_cmp orders as < does here: only -0 and 0 differ, on which `<`
+            // agrees, so the predicate is monotone along `by_y`.)
+            let from = by_y.partition_point(|t| t.0.y < lo);
+            for &(Point2 { x, y }, k) in &by_y[from..] {
+                if y >= hi {
+                    break;
+                }
+                let (best, bound) = &mut found[k];
+                // Wholly east of q's rounded point (so of q: rounding is monotone), or
+                // wholly west of the best edge found: not nearer.
+                if x_min > x || x_max < *bound {
+                    continue;
+                }
+                consider(queries[k], y, i, best, bound);
+            }
+        }
+        return Some(found.into_iter().map(|(best, _)| half_edge(best)).collect());
     }
     // The queries scan only a few entries each (below), so the scan budget is not the
     // limit: pass no queries to it.
