@@ -66,7 +66,7 @@ fn boolean_wkt_output_and_svg() {
         .assert()
         .success();
     let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
-    assert_eq!(text.trim(), "MULTIPOLYGON (((4 2, 4 4, 2 4, 2 2, 4 2)))");
+    assert_eq!(text.trim(), "MULTIPOLYGON (((2 2, 4 2, 4 4, 2 4, 2 2)))");
     assert!(fs::read_to_string(svg).unwrap().contains("<svg"));
 }
 

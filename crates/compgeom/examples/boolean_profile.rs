@@ -1,5 +1,7 @@
 //! Profiling driver for the boolean pipeline (the inputs of `compgeom-bench boolean`):
-//! `cargo run --release -p compgeom --example boolean_profile -- star|squares [n] [reps]`.
+//! `cargo run --release -p compgeom --example boolean_profile -- star|squares|cells [n] [reps]`.
+//! `cells` is a raster-like coverage: about 70% of the cells of an n × n grid, each a
+//! unit square of its own, dissolved by `union_all` (axis-parallel, shared sides).
 use compgeom::overlay::{boolean, union_all, BooleanOp};
 use compgeom::{MultiPolygon, Point2, Polygon};
 use std::time::Instant;
@@ -35,6 +37,24 @@ fn main() {
             for _ in 0..reps {
                 let t = Instant::now();
                 let r = boolean(&a, &b, BooleanOp::Union).unwrap();
+                best = best.min(t.elapsed().as_secs_f64());
+                std::hint::black_box(r);
+            }
+        }
+        "cells" => {
+            let p = |x: usize, y: usize| Point2::new(x as f64, y as f64);
+            let mut cells = MultiPolygon::default();
+            for y in 0..n {
+                for x in 0..n {
+                    if rng.unit() < 0.7 {
+                        let ring = vec![p(x, y), p(x + 1, y), p(x + 1, y + 1), p(x, y + 1)];
+                        cells.0.push(Polygon::new(ring, vec![]));
+                    }
+                }
+            }
+            for _ in 0..reps {
+                let t = Instant::now();
+                let r = union_all(&cells).unwrap();
                 best = best.min(t.elapsed().as_secs_f64());
                 std::hint::black_box(r);
             }
