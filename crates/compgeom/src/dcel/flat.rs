@@ -393,6 +393,16 @@ impl Flat {
     /// way subtracts one): all a boolean operation needs of the sources.
     pub(crate) fn summed(self, na: usize) -> (Flat, Vec<(i32, i32)>) {
         let ne = self.edges.len();
+        if self.src_start.is_empty() {
+            // One source per edge already: kept as it is (on big input a copy is as
+            // many fresh pages).
+            let deltas = self
+                .sources
+                .iter()
+                .map(|s| add_source((0, 0), s, na))
+                .collect();
+            return (self, deltas);
+        }
         let mut firsts = Vec::with_capacity(ne);
         let mut deltas = Vec::with_capacity(ne);
         for i in 0..ne {
@@ -840,8 +850,9 @@ impl Flat {
         // overlaps the sources need no sort and no (edge, source) list.
         let pieces_bound = cuts.len();
         let mut edges: Vec<[u32; 2]> = Vec::with_capacity(pieces_bound);
-        // (segment, forward) of each edge's first source: half the bytes of a `Source`.
-        let mut first: Vec<(u32, bool)> = Vec::with_capacity(pieces_bound);
+        // Each edge's first source (the sources of the arrangement when there are no
+        // overlaps: made once, in place, not copied from a narrower list).
+        let mut first: Vec<Source> = Vec::with_capacity(pieces_bound);
         let mut further: Vec<(u32, Source)> = Vec::new();
         // Per cut gap of the line: its edge or NONE.
         let mut first_edge: Vec<u32> = Vec::new();
@@ -861,7 +872,7 @@ impl Flat {
                     if first_edge[g] == u32::MAX {
                         first_edge[g] = edges.len() as u32;
                         edges.push([cut_vertex[c0 + g], cut_vertex[c0 + g + 1]]);
-                        first.push((s.index, s.increasing));
+                        first.push(src);
                     } else {
                         further.push((first_edge[g], src));
                     }
@@ -878,22 +889,17 @@ impl Flat {
         // input segments instead, the records of one small face of many overlapping
         // squares lay far apart: union of 1e5 random squares 20% slower.)
         let vertices = Vertices::Input(vertices);
-        let as_source = |(segment, forward): (u32, bool)| Source {
-            segment: segment as usize,
-            forward,
-        };
         if further.is_empty() {
-            let sources: Vec<Source> = first.into_iter().map(as_source).collect();
             return Some(Flat {
                 vertices,
                 edges,
                 src_start: Vec::new(),
-                sources,
+                sources: first,
             });
         }
         // Overlaps: all sources as (edge, source) pairs, sorted by segment per edge.
         let mut pairs: Vec<(u32, Source)> = Vec::with_capacity(first.len() + further.len());
-        pairs.extend((0..).zip(first.into_iter().map(as_source)));
+        pairs.extend((0..).zip(first));
         pairs.append(&mut further);
         Some(Pieces { edges, pairs }.finish_numbered(vertices, false))
     }

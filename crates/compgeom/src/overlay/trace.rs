@@ -57,19 +57,6 @@ const AXIS_NONE: u8 = 4;
 /// A region of the result: its shell (once found) and its holes.
 type Region = (Option<Vec<Point2>>, Vec<Vec<Point2>>);
 
-/// Per edge: the input segment of its first source and whether half-edge `2i` runs that
-/// segment's way, and the winding changes `(da, db)` across half-edge `2i`.
-#[derive(Clone, Copy)]
-struct EdgeInfo {
-    seg: u32,
-    fwd: bool,
-    /// The direction of half-edge `2i` when axis-parallel: 0 = +x, 1 = +y, 2 = −x,
-    /// 3 = −y (counter-clockwise order from +x), else [`AXIS_NONE`].
-    quad: u8,
-    da: i32,
-    db: i32,
-}
-
 /// 0 for directions in [0°, 180°), 1 for [180°, 360°) (as [`Carrier::angle_cmp`]).
 fn half(c: &Carrier) -> u8 {
     let (a, b) = if c.forward {
@@ -235,14 +222,15 @@ fn outgoing(edges: &[[u32; 2]], nv: usize) -> (Vec<u32>, Vec<u32>) {
     (starts, lists)
 }
 
-/// [`outgoing`] for an arrangement of axis-parallel edges (`info[i].quad` not
+/// [`outgoing`] for an arrangement of axis-parallel edges (`quads[i]`, the direction of
+/// half-edge `2i`, not
 /// [`AXIS_NONE`]), each list in counter-clockwise order from +x: the half-edges go
 /// into four slots per vertex, one per direction (two edges leaving a vertex the same
 /// way would overlap, and the arrangement has none), read out vertex by vertex.
-fn outgoing_by_axis(edges: &[[u32; 2]], info: &[EdgeInfo], nv: usize) -> (Vec<u32>, Vec<u32>) {
+fn outgoing_by_axis(edges: &[[u32; 2]], quads: &[u8], nv: usize) -> (Vec<u32>, Vec<u32>) {
     let mut slots = vec![NONE; 4 * nv];
-    for (i, ([u, v], e)) in edges.iter().zip(info).enumerate() {
-        let q = e.quad as usize;
+    for (i, ([u, v], &q)) in edges.iter().zip(quads).enumerate() {
+        let q = q as usize;
         debug_assert!(q < 4);
         debug_assert_eq!(slots[4 * *u as usize + q], NONE);
         debug_assert_eq!(slots[4 * *v as usize + (q ^ 2)], NONE);
@@ -309,13 +297,17 @@ fn traced(
     if ne == 0 {
         return Ok(MultiPolygon::default());
     }
-    let info: Vec<EdgeInfo> = (0..ne)
-        .map(|i| {
-            let src = flat.sources_of(i);
-            let (da, db) = deltas[i];
+    // Per edge its first source (the arrangement's, kept: on big input a copy is as
+    // many fresh pages) and the axis direction of half-edge 2i: 0 = +x, 1 = +y, 2 = −x,
+    // 3 = −y (counter-clockwise order from +x), else AXIS_NONE.
+    let sources: &[crate::dcel::Source] = &flat.sources;
+    debug_assert!(flat.src_start.is_empty());
+    let quads: Vec<u8> = sources
+        .iter()
+        .map(|src| {
             // The axis direction of the segment a → b (a ≠ b: the arrangement has no
             // zero-length segments), turned for a half-edge running it backwards.
-            let (a, b) = (segs[src[0].segment].a, segs[src[0].segment].b);
+            let (a, b) = (segs[src.segment].a, segs[src.segment].b);
             let quad = if a.y == b.y {
                 if b.x > a.x {
                     0
@@ -331,42 +323,27 @@ fn traced(
             } else {
                 AXIS_NONE
             };
-            let quad = if quad == AXIS_NONE || src[0].forward {
+            if quad == AXIS_NONE || src.forward {
                 quad
             } else {
                 quad ^ 2
-            };
-            EdgeInfo {
-                seg: src[0].segment as u32,
-                fwd: src[0].forward,
-                quad,
-                da,
-                db,
             }
         })
         .collect();
-    // The sources are summed up in `info`: freed now, so that the arrays below reuse
-    // their memory (fresh pages are a large part of the cost on big inputs).
-    drop(deltas);
-    let flat = Flat {
-        src_start: Vec::new(),
-        sources: Vec::new(),
-        ..flat
-    };
     let carrier = |h: u32| {
-        let e = &info[(h >> 1) as usize];
+        let e = &sources[(h >> 1) as usize];
         Carrier {
-            seg: segs[e.seg as usize],
-            forward: e.fwd == (h & 1 == 0),
+            seg: segs[e.segment],
+            forward: e.forward == (h & 1 == 0),
         }
     };
     // The direction of half-edge h, rounded: its input segment's `b − a`, negated when
     // running it backwards (exact signs, see [`KEY_GAP`]).
     let dir = |h: u32| {
-        let e = &info[(h >> 1) as usize];
-        let s = &segs[e.seg as usize];
+        let e = &sources[(h >> 1) as usize];
+        let s = &segs[e.segment];
         let (dx, dy) = (s.b.x - s.a.x, s.b.y - s.a.y);
-        if e.fwd == (h & 1 == 0) {
+        if e.forward == (h & 1 == 0) {
             (dx, dy)
         } else {
             (-dx, -dy)
@@ -374,7 +351,7 @@ fn traced(
     };
     // The axis direction of half-edge h (the reverse of 2i's for 2i + 1).
     let quad = |h: u32| {
-        let q = info[(h >> 1) as usize].quad;
+        let q = quads[(h >> 1) as usize];
         if q == AXIS_NONE || h & 1 == 0 {
             q
         } else {
@@ -383,11 +360,11 @@ fn traced(
     };
     // Winding change crossing half-edge h from its right to its left.
     let delta = |h: u32| {
-        let e = &info[(h >> 1) as usize];
+        let (da, db) = deltas[(h >> 1) as usize];
         if h & 1 == 0 {
-            (e.da, e.db)
+            (da, db)
         } else {
-            (-e.da, -e.db)
+            (-da, -db)
         }
     };
     let origin = |h: u32| flat.edges[(h >> 1) as usize][(h & 1) as usize];
@@ -395,9 +372,9 @@ fn traced(
     // axis-parallel, each vertex has at most one per axis direction, so the lists come
     // already in counter-clockwise order from a table of four slots per vertex, without
     // a sort (which would look up every half-edge's segment for its direction).
-    let axis_only = info.iter().all(|e| e.quad != AXIS_NONE);
+    let axis_only = quads.iter().all(|&q| q != AXIS_NONE);
     let (out_start, mut out) = if axis_only {
-        outgoing_by_axis(&flat.edges, &info, nv)
+        outgoing_by_axis(&flat.edges, &quads, nv)
     } else {
         outgoing(&flat.edges, nv)
     };
@@ -548,7 +525,7 @@ fn traced(
     // nearest edge west of that vertex (over x-sorted strips for many queries), or,
     // where the strips would be too large, from the sweep.
     let faces_around = |queries: &[u32]| -> Vec<u32> {
-        let seg_of = |i: usize| segs[info[i].seg as usize];
+        let seg_of = |i: usize| segs[sources[i].segment];
         match faces_left_by_strips(&flat, seg_of, queries).filter(|_| strips) {
             Some(found) => found
                 .into_iter()
