@@ -226,8 +226,10 @@ fn outgoing(edges: &[[u32; 2]], nv: usize) -> (Vec<u32>, Vec<u32>) {
 /// half-edge `2i`, not
 /// [`AXIS_NONE`]), each list in counter-clockwise order from +x: the half-edges go
 /// into four slots per vertex, one per direction (two edges leaving a vertex the same
-/// way would overlap, and the arrangement has none), read out vertex by vertex.
-fn outgoing_by_axis(edges: &[[u32; 2]], quads: &[u8], nv: usize) -> (Vec<u32>, Vec<u32>) {
+/// way would overlap, and the arrangement has none), read out vertex by vertex. The
+/// slots' buffer is returned too, for the caller's next array of numbers (on big input
+/// fresh pages cost as much as the work).
+fn outgoing_by_axis(edges: &[[u32; 2]], quads: &[u8], nv: usize) -> (Vec<u32>, Vec<u32>, Vec<u32>) {
     let mut slots = vec![NONE; 4 * nv];
     for (i, ([u, v], &q)) in edges.iter().zip(quads).enumerate() {
         let q = q as usize;
@@ -244,7 +246,7 @@ fn outgoing_by_axis(edges: &[[u32; 2]], quads: &[u8], nv: usize) -> (Vec<u32>, V
         lists.extend(four.iter().copied().filter(|&h| h != NONE));
         starts.push(lists.len() as u32);
     }
-    (starts, lists)
+    (starts, lists, slots)
 }
 
 fn find(p: &mut [u32], mut x: u32) -> u32 {
@@ -373,13 +375,21 @@ fn traced(
     // already in counter-clockwise order from a table of four slots per vertex, without
     // a sort (which would look up every half-edge's segment for its direction).
     let axis_only = quads.iter().all(|&q| q != AXIS_NONE);
-    let (out_start, mut out) = if axis_only {
+    let (out_start, mut out, spare) = if axis_only {
         outgoing_by_axis(&flat.edges, &quads, nv)
     } else {
-        outgoing(&flat.edges, nv)
+        let (starts, lists) = outgoing(&flat.edges, nv);
+        (starts, lists, Vec::new())
     };
     let slice = |v: usize| (out_start[v] as usize, out_start[v + 1] as usize);
-    let mut next = vec![0u32; m];
+    let mut next = if spare.capacity() >= m {
+        let mut reused = spare;
+        reused.clear();
+        reused.resize(m, 0);
+        reused
+    } else {
+        vec![0u32; m]
+    };
     // One list's entries with their half-plane and carrier, each made once (the sort
     // compares them O(k log k) times).
     let mut keyed: Vec<(u8, Carrier, u32)> = Vec::new();
