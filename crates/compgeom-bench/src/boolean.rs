@@ -210,6 +210,37 @@
 //! 3.8–3.9 s (i_overlay 3.8–4.3 s). The system time is clearing fresh pages
 //! (`clear_page_erms`, a third of the samples): 533 k faults against geo's 466 k, and on
 //! this VM the cost of a fresh page varies two- to threefold between runs.
+//!
+//! Session 29, GEOS-837 dissolve: why the table's row (one call per contender per round)
+//! is slower for compgeom than a loop of its calls. Three full runs: 0.43–0.44 ms
+//! against geo's 0.42–0.44 (1.01–1.02 × geo, medians 0.99–1.00; session 28 measured
+//! 0.92–0.93 on the same code). `BOOLEAN_ONE=<contenders> BOOLEAN_INPUT=dissolve`
+//! ([`disturbed_rounds`], 1000 rounds, medians):
+//!
+//! | rounds of | compgeom | i_overlay | geo |
+//! |---|---:|---:|---:|
+//! | itself alone | 0.27–0.29 | 0.29–0.30 | 0.35 |
+//! | ours,io,geo (the table's order) | 0.50–0.51 | 0.35–0.36 | 0.39–0.40 |
+//! | the same, heap never trimmed (`GLIBC_TUNABLES=glibc.malloc.trim_threshold=100000000`) | 0.42–0.43 | 0.35 | 0.39–0.40 |
+//! | ours,ours | 0.27 | | |
+//! | alone, 300 k coin-toss branches before each call (`BOOLEAN_BRANCHY`) | 0.38 | 0.35–0.36 | 0.41 |
+//! | alone, 64 MiB written before each call (`BOOLEAN_THRASH_KB`) | 0.35–0.37 | 0.35–0.36 | 0.43–0.44 |
+//!
+//! Two causes. (1) The heap: in this process glibc trims the heap top when compgeom's
+//! temporaries are freed and grows it again in the next call (six `brk` a round, 40
+//! page faults, all in compgeom's call); not in the table, whose earlier rows free
+//! blocks large enough to raise the trim threshold (0 faults there, session 26), and it
+//! costs ~0.08 ms here. (2) The branch predictor: a call repeated on the same input runs
+//! with the predictor trained on that input, and compgeom's branchy exact code gains
+//! most from it (+32–50% when anything else runs in between, against +10–20% for the
+//! peers); a cold cache alone costs it little. Cachegrind's branch simulation (no
+//! training across calls): 35.6 k mispredicts a call (4.0% of 890 k branches), spread
+//! out: `traced` 7.9 k, the noding's sweep scan 2.5 k and pair tests 2.3 k, the
+//! cancellation hash 2.0 k, the assembly 1.6 k, `Ends::of` 1.5 k, the rest under 1 k
+//! each. Tried, not kept: `Point2 ==` without a branch per coordinate and the
+//! cancellation's end order by a select (−1.5 k simulated mispredicts, no change in the
+//! rounds: 0.426 against 0.426 ms). So the row is a tie with geo until a third or so of
+//! those mispredicts go, and the table's single rounds are the fair figure here.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
@@ -220,7 +251,7 @@ use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
 use i_overlay::float::single::SingleFloatOverlay;
 use std::hint::black_box;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 fn star(rng: &mut Rng, n: usize, cx: f64, cy: f64) -> Vec<Point2> {
     let mut angles: Vec<f64> = (0..n).map(|_| std::f64::consts::TAU * rng.unit()).collect();
@@ -547,6 +578,55 @@ fn real_map_rows(runs: usize) -> Result<(), String> {
     Ok(())
 }
 
+/// `rounds` rounds of the `calls` (one each, in turn), each call timed on its own after
+/// what `BOOLEAN_BRANCHY` and `BOOLEAN_THRASH_KB` ask for (unpredictable branches on a
+/// few registers, which only disturb the branch predictor; a write to every cache line
+/// of a buffer that size, which evicts data from the caches); prints each call's
+/// median and best time. A call repeated alone on the same input runs with a branch
+/// predictor trained on that very input: these show how far that flatters it.
+fn disturbed_rounds(rounds: usize, calls: &[(&str, &dyn Fn())]) {
+    let var = |name: &str| -> usize {
+        std::env::var(name)
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(0)
+    };
+    let branches = var("BOOLEAN_BRANCHY");
+    let mut buffer = vec![0u8; var("BOOLEAN_THRASH_KB") << 10];
+    let mut times = vec![Vec::with_capacity(rounds); calls.len()];
+    let mut x = 0x9E37_79B9_7F4A_7C15u64;
+    for round in 0..rounds {
+        for (k, (_, call)) in calls.iter().enumerate() {
+            for b in buffer.iter_mut().step_by(64) {
+                *b = b.wrapping_add(round as u8);
+            }
+            let mut acc = 0u64;
+            for _ in 0..branches {
+                // xorshift64: a branch on its low bits is a coin toss.
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                if x & 1 == 0 {
+                    acc += x & 0xff;
+                } else if x & 2 == 0 {
+                    acc ^= x;
+                } else {
+                    acc = acc.rotate_left(3);
+                }
+            }
+            black_box(acc);
+            let start = Instant::now();
+            call();
+            times[k].push(ms(start.elapsed()));
+        }
+    }
+    black_box(&buffer);
+    for ((name, _), t) in calls.iter().zip(times) {
+        let best = t.iter().copied().fold(f64::INFINITY, f64::min);
+        println!("{name}: median {:.4} ms, best {best:.4} ms", median(t));
+    }
+}
+
 fn perimeter(m: &MultiPolygon) -> f64 {
     m.0.iter()
         .flat_map(|p| p.rings())
@@ -586,7 +666,9 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 /// `BOOLEAN_INPUT=star|squares|water|jts|dissolve`, `BOOLEAN_REPS` calls except for the
 /// squares): run one contender on the star union, the squares input, the water map
 /// union, the unions of the 52 JTS pairs or the GEOS-837 dissolve (`union_all`), for
-/// instruction counts (`valgrind --tool=callgrind`).
+/// instruction counts (`valgrind --tool=callgrind`). The dissolve also takes
+/// `BOOLEAN_ONE=all` (the three alternated, one call each per round, as the table
+/// does) and prints each contender's median and best call ([`disturbed_rounds`]).
 fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     let n: usize = std::env::var("BOOLEAN_N")
         .ok()
@@ -620,17 +702,27 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         let pa = io_paths_oriented(&d.a);
         let empty: Vec<Vec<[f64; 2]>> = Vec::new();
         let gs = geo_poly(&d.a).0;
-        for _ in 0..reps {
-            match who {
-                "ours" => drop(black_box(union_all(&d.a).map_err(|e| e.to_string())?)),
-                "io" => drop(black_box(pa.overlay(
-                    &empty,
-                    OverlayRule::Subject,
-                    FillRule::NonZero,
-                ))),
-                _ => drop(black_box(geo::unary_union(gs.iter()))),
-            }
-        }
+        let ours = || drop(black_box(union_all(&d.a).unwrap()));
+        let io = || {
+            drop(black_box(pa.overlay(
+                &empty,
+                OverlayRule::Subject,
+                FillRule::NonZero,
+            )))
+        };
+        let geo = || drop(black_box(geo::unary_union(gs.iter())));
+        let who = if who == "all" { "ours,io,geo" } else { who };
+        let calls: Vec<(&str, &dyn Fn())> = who
+            .split(',')
+            .map(|name| -> (&str, &dyn Fn()) {
+                match name {
+                    "ours" => ("ours", &ours),
+                    "io" => ("io", &io),
+                    _ => ("geo", &geo),
+                }
+            })
+            .collect();
+        disturbed_rounds(reps, &calls);
         return Ok(());
     }
     if std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "jts") {
