@@ -330,8 +330,51 @@ fn rect_union_input(v: &[(i32, i32, i32, i32)]) -> MultiPolygon {
         .collect())
 }
 
+/// `m` with its polygons in reverse order and every ring started `turn` vertices later.
+fn reordered(m: &MultiPolygon, turn: usize) -> MultiPolygon {
+    let turned = |r: &Vec<Point2>| {
+        let mut r = r.clone();
+        let k = turn % r.len();
+        r.rotate_left(k);
+        r
+    };
+    MultiPolygon(
+        m.0.iter()
+            .rev()
+            .map(|p| Polygon::new(turned(&p.exterior), p.holes.iter().map(turned).collect()))
+            .collect(),
+    )
+}
+
+/// Whether every ring starts at its smallest point (by x, then y), the holes of each
+/// polygon and the polygons by their shells in increasing order of their points.
+fn in_canonical_order(m: &MultiPolygon) -> bool {
+    let xy = |p: &Point2| (p.x, p.y);
+    let starts_lowest = |r: &Vec<Point2>| r.iter().all(|p| xy(&r[0]) <= xy(p));
+    let key = |r: &Vec<Point2>| r.iter().map(xy).collect::<Vec<_>>();
+    let sorted = |rs: Vec<&Vec<Point2>>| rs.windows(2).all(|w| key(w[0]) < key(w[1]));
+    m.0.iter().all(|p| {
+        starts_lowest(&p.exterior)
+            && p.holes.iter().all(starts_lowest)
+            && sorted(p.holes.iter().collect())
+    }) && sorted(m.0.iter().map(|p| &p.exterior).collect())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(150))]
+
+    /// The output does not depend on the order of the input's polygons or where its
+    /// rings start (they change how the arrangement numbers vertices and edges), and it
+    /// comes in the canonical order.
+    #[test]
+    fn output_is_in_canonical_order(a in grid_set(7), b in rect_set(), turn in 0..6usize) {
+        for op in OPS {
+            let r = boolean(&a, &b, op).unwrap();
+            prop_assert!(in_canonical_order(&r), "{:?}: {:?}", op, r);
+            prop_assert_eq!(&r, &boolean(&reordered(&a, turn), &reordered(&b, turn + 1), op).unwrap());
+        }
+    }
+
     #[test]
     fn random_grid_polygons(a in grid_set(7), b in grid_set(7)) {
         check(&a, &b, &grid_samples(-0.5, 7.0, 0.5));

@@ -28,6 +28,14 @@
 //! a ring below three distinct points (such a ring is dropped). Snap rounding would cure
 //! this and is not implemented. Vertices from the input are never moved.
 //!
+//! ## Order of the output
+//!
+//! Canonical, so that the same region gives the same output whatever the order of the
+//! input's polygons, where its rings start, or the library's internal numbering: every
+//! ring starts at its smallest vertex (by x, then y), and a polygon's holes, and the
+//! polygons by their shells, come in increasing order of their points' coordinates
+//! (compared lexicographically).
+//!
 //! Cost: O((n + k) log n) for n input edges and k intersection points, plus the
 //! hole-linking sweep (see [`crate::dcel`]).
 #[cfg(test)]

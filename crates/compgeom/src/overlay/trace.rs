@@ -733,8 +733,20 @@ fn traced(
             let ccw =
                 carrier(ring[before]).turn(&carrier(ring[lowest])) == Orientation::CounterClockwise;
             let mut pts: Vec<Point2> = Vec::with_capacity(n);
+            // Where the lowest vertex lands in `pts`: the ring starts there (it turns
+            // there, so it is never dropped as straight).
+            let mut first = 0;
             for j in 0..n {
                 let h = ring[j];
+                if j == lowest {
+                    // (Its rounded point may equal the one before, which then stands for it.)
+                    let q = ring_r[j].point();
+                    first = if pts.last() == Some(&q) {
+                        pts.len() - 1
+                    } else {
+                        pts.len()
+                    };
+                }
                 let v = origin(h) as usize;
                 if !keep_collinear && degree[v] <= 2 {
                     let prev = ring[if j == 0 { n - 1 } else { j - 1 }];
@@ -760,6 +772,9 @@ fn traced(
             if pts.len() < 3 {
                 continue;
             }
+            // (A popped last point equals the first.)
+            let first = if first < pts.len() { first } else { 0 };
+            pts.rotate_left(first);
             if ccw && regions[k].0.is_none() {
                 regions[k].0 = Some(pts);
             } else {
@@ -767,12 +782,33 @@ fn traced(
             }
         }
     }
-    Ok(MultiPolygon(
+    Ok(canonical_order(
         regions
             .into_iter()
             .filter_map(|(shell, holes)| shell.map(|s| Polygon::new(s, holes)))
             .collect(),
     ))
+}
+
+/// The polygons in a canonical order, independent of how the arrangement numbered its
+/// vertices and edges: every ring already starts at its lowest vertex (smallest x, then
+/// smallest y); the holes of each polygon, and the polygons by their shells, are sorted
+/// by their points' coordinates, lexicographically (rings of a valid result are
+/// distinct, so this is a total order on them). The same region gives the same output
+/// whatever the input's order or the library's internals.
+fn canonical_order(mut polygons: Vec<Polygon>) -> MultiPolygon {
+    fn by_points(a: &[Point2], b: &[Point2]) -> Ordering {
+        a.iter()
+            .zip(b)
+            .map(|(p, q)| p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y)))
+            .find(|o| o.is_ne())
+            .unwrap_or_else(|| a.len().cmp(&b.len()))
+    }
+    for p in &mut polygons {
+        p.holes.sort_by(|a, b| by_points(a, b));
+    }
+    polygons.sort_by(|a, b| by_points(&a.exterior, &b.exterior));
+    MultiPolygon(polygons)
 }
 
 /// The winding numbers `(w_A, w_B)` of the rings `segs` (the first `na` from A) at the
@@ -1336,11 +1372,15 @@ mod tests {
         ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
     }
 
-    /// A ring up to its start vertex (orientation kept: it is part of the answer).
+    /// A ring up to its start vertex (orientation kept: it is part of the answer): its
+    /// least rotation, so that a ring through one rounded point twice (two exact
+    /// vertices rounded alike) has one key whatever its start.
     fn ring_key(r: &[Point2]) -> Vec<Key> {
         let k: Vec<Key> = r.iter().map(|&p| key(p)).collect();
-        let s = (0..k.len()).min_by_key(|&i| k[i]).unwrap_or(0);
-        k[s..].iter().chain(&k[..s]).copied().collect()
+        (0..k.len())
+            .map(|s| k[s..].iter().chain(&k[..s]).copied().collect::<Vec<Key>>())
+            .min()
+            .unwrap_or_default()
     }
 
     /// A polygon set up to ring start, hole order and polygon order.
