@@ -11,7 +11,7 @@
 //! parabolas meet in two points `x1 < x2`; the one of the site nearer to `ℓ` (narrower) is
 //! lower between them, and the focus of the narrower one lies between them. Hence
 //! "`q` is left of the breakpoint of the arcs (`pi`, `pj`)" is decided by `F` and one
-//! coordinate comparison ([`left_of_breakpoint`]); sites on the sweep line (degenerate
+//! coordinate comparison (`left_of_breakpoint`); sites on the sweep line (degenerate
 //! arcs, vertical rays) are handled as the limit case.
 //!
 //! ## Circle events (one or two square roots)
@@ -22,18 +22,18 @@
 //! `a + (N_x, N_y)/D` and `r = √(N_x² + N_y²)/|D|`. Comparing such a value with a site's
 //! `y`, or two of them, is the sign of `P − √Q` or of `X + √B − √A` with polynomial
 //! `P, Q, X, A, B`; these are decided by squaring with sign analysis (every step exact),
-//! see [`cmp_event_site`] and [`cmp_events`].
+//! see `cmp_event_site` and `cmp_events`.
 //!
 //! ## Evaluation stages
 //!
 //! 1. **Cheap filters** in plain `f64` with error bounds derived once (proofs at
-//!    [`lower_sign`] and [`circle_event`]): the breakpoint sign `F`, and each circle
+//!    `lower_sign` and `circle_event`): the breakpoint sign `F`, and each circle
 //!    event's enclosures of its `y` and centre `x`. Two events (or an event and a site)
 //!    whose enclosures are disjoint are ordered without further work — nearly always on
 //!    random input.
-//! 2. **Small-integer input** ([`IntFrame`]: all sites integers in a `2¹¹` box, e.g. the
+//! 2. **Small-integer input** (`IntFrame`: all sites integers in a `2¹¹` box, e.g. the
 //!    1000 × 1000 grid, where every square gives exact ties): `F` is exact in `f64`, and
-//!    events carry an exact integer form ([`IntCircle`]) compared in `i128` (one 256-bit
+//!    events carry an exact integer form (`IntCircle`) compared in `i128` (one 256-bit
 //!    product in the rarest branch), with the bounds proved where they are used.
 //! 3. Otherwise every polynomial, written once generically over the kernel's arithmetic
 //!    interface, is evaluated with a rigorous running error bound (the kernel's filter),
