@@ -805,9 +805,9 @@ fn canonical_order(mut polygons: Vec<Polygon>) -> MultiPolygon {
             .unwrap_or_else(|| a.len().cmp(&b.len()))
     }
     for p in &mut polygons {
-        p.holes.sort_by(|a, b| by_points(a, b));
+        p.holes.sort_unstable_by(|a, b| by_points(a, b));
     }
-    polygons.sort_by(|a, b| by_points(&a.exterior, &b.exterior));
+    polygons.sort_unstable_by(|a, b| by_points(&a.exterior, &b.exterior));
     MultiPolygon(polygons)
 }
 
