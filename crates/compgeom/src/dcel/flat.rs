@@ -1157,6 +1157,48 @@ mod tests {
             prop_assert_eq!(canonical(&fast), canonical(&Flat::general(&segs).unwrap()));
         }
 
+        /// Axis-parallel segments on a small grid whose zero coordinates are sometimes
+        /// -0.0 (either end, either axis): the axis path agrees with the general
+        /// arrangement, and so do the summed sources and winding deltas of every edge.
+        #[test]
+        fn axis_segments_with_negative_zeros_agree_with_the_general_path(
+            v in prop::collection::vec((-3..4i32, -3..4i32, -3..4i32, any::<bool>(), 0..16u8), 0..30),
+            na in 0..30usize,
+        ) {
+            let c = |k: i32, neg: bool| if k == 0 && neg { -0.0 } else { k as f64 };
+            let segs: Vec<Segment2> = v.iter().map(|&(x, y, len, vertical, n)| {
+                let (a, b) = if vertical {
+                    (Point2::new(c(x, n & 1 != 0), c(y, n & 2 != 0)), Point2::new(c(x, n & 4 != 0), c(y + len, n & 8 != 0)))
+                } else {
+                    (Point2::new(c(x, n & 1 != 0), c(y, n & 2 != 0)), Point2::new(c(x + len, n & 4 != 0), c(y, n & 8 != 0)))
+                };
+                Segment2::new(a, b)
+            }).collect();
+            let fast = Flat::axis_parallel(&segs).expect("all axis-parallel");
+            check(&segs, &fast)?;
+            let general = Flat::general(&segs).unwrap();
+            prop_assert_eq!(canonical(&fast), canonical(&general));
+            // Summed: the same single source and delta per edge, edges keyed by their ends
+            // in exact order (a delta read against the edge's direction is negated).
+            let na = na.min(segs.len());
+            let (fs, fd) = Flat::of_segments_summed(&segs, na).unwrap();
+            let (gs, gd) = general.summed(na);
+            let by_ends = |f: &Flat, d: &[(i32, i32)]| {
+                let vx = f.vertices.exact();
+                let mut out: Vec<_> = (0..f.edge_count()).map(|i| {
+                    let [u, w] = f.edges[i];
+                    let (pu, pw) = (ExactPointKey::of(&vx[u as usize]), ExactPointKey::of(&vx[w as usize]));
+                    let s = f.sources_of(i);
+                    prop_assert_eq!(s.len(), 1);
+                    if pu < pw { Ok((pu, pw, s[0].segment, s[0].forward, d[i])) }
+                    else { Ok((pw, pu, s[0].segment, !s[0].forward, (-d[i].0, -d[i].1))) }
+                }).collect::<Result<Vec<_>, TestCaseError>>()?;
+                out.sort();
+                Ok::<_, TestCaseError>(out)
+            };
+            prop_assert_eq!(by_ends(&fs, &fd)?, by_ends(&gs, &gd)?);
+        }
+
         /// The bit set lists exactly the members of a range (a sorted set as oracle),
         /// across word and summary boundaries.
         #[test]
