@@ -250,6 +250,22 @@
 //! runs after it: dissolve 1.16–1.17 / 1.03–1.04 (medians 1.16 / 1.03–1.04); stars
 //! 0.53–0.82 / 0.53–0.81, squares 0.62–0.65 / 0.68, water union 0.71–0.72 / 0.67–0.68,
 //! JTS×52 0.93–0.94 / 0.91–0.93 (intersection and union rows).
+//!
+//! Session 30, GEOS-837 dissolve. The maps rows at the start: water 0.72–0.94 /
+//! 0.66–0.91, JTS×52 0.94–0.95 / 0.90–0.95, dissolve 1.16 / 1.02 (0.44 ms against
+//! 0.38 and 0.43). Is the cold cache part of the cost? Rounds of ours,io,geo with the
+//! heap never trimmed (as in the table), medians: 0.420 / 0.348 / 0.390 ms; with 1 MiB
+//! written before each call 0.424 / 0.348 / 0.391, with 4 MiB 0.426 / 0.354 / 0.396.
+//! Alone: 0.280 ms, 0.281 with 1 MiB written before each call, 0.387 with 300 k
+//! coin-toss branches. So cold data costs compgeom nothing measurable here (its ~1.1 MB
+//! of temporaries a call, against i_overlay's 0.42 MB and geo's 0.54 MB by dhat, are
+//! not what it waits for): the loss is the branch predictor (0.280 → 0.387) and, for the
+//! rest, what the peers' code does to the predictor's tables and the instruction cache
+//! (0.387 → 0.420; the hot code is some 60 KB: `traced` alone 27 KB, its closure 12 KB).
+//! Shrinking the temporaries would not move this row; fewer unpredictable branches
+//! would, and they are spread thin (cachegrind, per call: the winding and face searches'
+//! y-range loops in `trace.rs` ~2.8 k, the noding's pair tests and sweep ~5 k, the
+//! cancellation's hash ~1.5 k, the vertex classes ~1.3 k; no line above 1.2 k).
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};

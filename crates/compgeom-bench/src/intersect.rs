@@ -257,6 +257,17 @@
 //! Tried and not kept: `e_t`'s division in the rounding replaced by a power-of-two bound
 //! (`vdivpd` count 22 → 19; driver task-clock +0.8%, no gain: the divisions are not
 //! the bottleneck).
+//!
+//! Session 30, one thread (`RAYON_NUM_THREADS=1`), seven runs of the table on a quiet
+//! machine: long random 1e3 find 7.1–7.7 ms against the collecting O(n²) loop's
+//! 7.6–8.3 ms (1.03–1.14×) and geo `collect()` 9.2–9.8 ms (1.30–1.37×); count 1.68–1.72×
+//! geo `count()`; short 1e5 5.3–5.7× / 6.1–6.6×; grid 1.46–1.48× / 1.35×. Sessions 28
+//! and 29 measured 0.86× and 0.99× against the collecting loop on the same code: this
+//! row moves ±15% with the machine. Where `find` goes (perf, the driver): the pair
+//! scan with its rounding 66%, the bin sort 19%, the points 6%. Tried and not kept: the
+//! three divisions of the rounding (`t_hi`, `t_lo`, `e_t`'s bound) as products with one
+//! reciprocal of the denominator (timing only, the error bound not redone): 7.2–7.7 ms
+//! against 7.1–7.4, no gain, so that lead is closed.
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
