@@ -1585,7 +1585,7 @@ mod tests {
         #[test]
         fn key_sort_is_the_exact_angular_sort(
             v in proptest::collection::vec(
-                (-4i32..5, -4i32..5, -3i32..4, 0u8..4, 0u32..3), 3..9),
+                (-4i32..5, -4i32..5, -3i32..4, 0u8..4, 0u32..3), 5..12),
         ) {
             let mut segs: Vec<Segment2> = Vec::new();
             for &(x, y, e, kind, ulps) in &v {
