@@ -247,3 +247,35 @@ proptest! {
         check_holes(&d)?;
     }
 }
+
+/// A component whose smallest vertex has, before it on its horizontal line, a vertex
+/// with edges up-left, up-right and down (a "Y" splitting a square in three faces of
+/// different areas) and between them a zero-length segment: that segment leaves no
+/// vertex (so the search for the face around a component never meets an isolated
+/// vertex), and the component is a hole of the face east of the Y, which holds the
+/// points just left of it.
+#[test]
+fn hole_found_east_of_a_vertex_on_its_line_past_a_zero_length_segment() {
+    let square = [(-10.0, -10.0), (10.0, -10.0), (10.0, 10.0), (-10.0, 10.0)];
+    let mut segs: Vec<Segment2> = (0..4).map(|i| s(square[i], square[(i + 1) % 4])).collect();
+    for end in [(-10.0, 10.0), (10.0, 10.0), (-5.0, -10.0)] {
+        segs.push(s((0.0, 0.0), end));
+    }
+    segs.push(s((2.0, 0.0), (2.0, 0.0)));
+    let unit = [(3.0, 0.0), (4.0, 0.0), (4.0, 1.0), (3.0, 1.0)];
+    segs.extend((0..4).map(|i| s(unit[i], unit[(i + 1) % 4])));
+    let d = Dcel::from_segments(&segs).unwrap();
+    d.validate().unwrap();
+    // The square's corners, the Y's centre and its foot on the bottom side, the unit square's.
+    assert_eq!(d.vertex_count(), 10);
+    let mut areas: Vec<BigRational> = d.face_ids().skip(1).map(|f| d.face_area_exact(f)).collect();
+    areas.sort();
+    let want: Vec<BigRational> = [1, 100, 125, 174]
+        .into_iter()
+        .map(|a| BigRational::from_integer(a.into()))
+        .collect();
+    assert_eq!(
+        areas, want,
+        "east face 175 - 1, west 125, top 100, the unit square"
+    );
+}

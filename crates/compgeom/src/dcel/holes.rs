@@ -103,6 +103,9 @@ pub(crate) fn faces_left_of(
             answer[v] = match (a, same_line) {
                 // The status edge wins when it passes strictly between w and v.
                 (Some(e), Some(w)) if west(w, e) => Some(e as usize),
+                // (Every vertex of an arrangement has an edge: zero-length segments
+                // leave no vertex. The guard only keeps an isolated vertex, were one
+                // ever passed, from being read as a wedge.)
                 (_, Some(w)) if out_start[w] < out_start[w + 1] => {
                     // The wedge at w holding direction +x lies left of its last
                     // (counter-clockwise) outgoing half-edge.
