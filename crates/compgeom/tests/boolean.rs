@@ -300,11 +300,19 @@ fn grid_ring(max: i32) -> impl Strategy<Value = Vec<Point2>> {
     prop::collection::vec((0..max, 0..max), 3..7)
         .prop_map(|v| v.into_iter().map(|(x, y)| pt(x as f64, y as f64)).collect())
         .prop_filter("3 distinct points", |r: &Vec<Point2>| {
-            let mut k: Vec<_> = r.iter().map(|p| (p.x.to_bits(), p.y.to_bits())).collect();
-            k.sort_unstable();
-            k.dedup();
-            k.len() >= 3
+            distinct_points(r) >= 3
         })
+}
+
+/// How many distinct points `r` has (-0 and 0 alike).
+fn distinct_points(r: &[Point2]) -> usize {
+    let mut k: Vec<_> = r
+        .iter()
+        .map(|p| ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits()))
+        .collect();
+    k.sort_unstable();
+    k.dedup();
+    k.len()
 }
 
 fn grid_set(max: i32) -> impl Strategy<Value = MultiPolygon> {
@@ -465,13 +473,7 @@ fn rect_walk() -> impl Strategy<Value = Vec<Point2>> {
             r
         })
         .prop_filter("3 distinct points", |r: &Vec<Point2>| {
-            let mut k: Vec<_> = r
-                .iter()
-                .map(|p| ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits()))
-                .collect();
-            k.sort_unstable();
-            k.dedup();
-            k.len() >= 3
+            distinct_points(r) >= 3
         })
 }
 
