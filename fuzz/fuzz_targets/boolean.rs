@@ -111,10 +111,8 @@ fuzz_target!(|data: &[u8]| {
     };
     let points = || a.0.iter().chain(&b.0).flat_map(|p| p.rings()).flatten();
     let finite = points().all(|p| p.is_finite());
-    let result = boolean_with(&a, &b, op, &options);
-    let Ok(out) = result else {
-        // (Too few distinct points in a ring is an error too.)
-        assert!(!finite || result.is_err());
+    // (Finite input can be an error too: a ring of fewer than three distinct points.)
+    let Ok(out) = boolean_with(&a, &b, op, &options) else {
         return;
     };
     assert!(finite, "non-finite input accepted");
