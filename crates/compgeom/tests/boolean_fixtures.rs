@@ -851,17 +851,10 @@ fn turf_suite() {
     }
     println!("turf: {run} cases");
     assert!(run >= 9, "only {run} turf cases ran");
-    // Known: these two outputs are the right point set but fail the validity check on
-    // their f64 coordinates (an edge crossing; a ring orientation), most likely from
-    // rounding constructed crossings on thin parts (no snap rounding yet; see
-    // compgeom::overlay) — not yet confirmed case by case. Any other invalid output,
-    // or these becoming valid, fails here.
-    assert_eq!(
-        invalid,
-        [
-            "intersect/issue-412.geojson",
-            "difference/issue-#721-inverse.geojson"
-        ]
-    );
+    // Every output valid. (intersect/issue-412 and difference/issue-#721-inverse were
+    // not until results were checked after rounding and repaired: an edge crossing and
+    // a ring orientation, from rounded crossings on thin parts; see
+    // compgeom::overlay's "Validity of the output".)
+    assert_eq!(invalid, Vec::<String>::new());
     assert!(failures.is_empty(), "{failures:#?}");
 }

@@ -32,7 +32,7 @@ use super::build::Source;
 use super::holes::{compare_xy_filtered, Rounded};
 use crate::intersect::find_intersections;
 use crate::kernel::arith::ordered_key as okey;
-use crate::kernel::{ExactPoint, Point2, Segment2};
+use crate::kernel::{orient2d, ExactPoint, Orientation, Point2, Segment2};
 use crate::{Error, Result};
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -139,6 +139,25 @@ impl Vertices {
                 Rounded::of(p, approx.get(i).copied().unwrap_or_else(|| p.approx()))
             }
             Vertices::Input(v) => Rounded::of(&ExactPoint::Input(v[i]), v[i]),
+        }
+    }
+
+    /// Whether vertex `i`'s rounded point `r` (from [`Vertices::rounded`]) differs from
+    /// its exact point, exactly: a crossing is `r` iff `r` lies on both its lines.
+    pub(crate) fn moved(&self, i: usize, r: &Rounded) -> bool {
+        if r.surely_exact() {
+            return false;
+        }
+        match self {
+            Vertices::Exact { points, .. } => match &points[i] {
+                ExactPoint::Input(_) => false,
+                ExactPoint::Crossing(c) => {
+                    let q = r.point();
+                    orient2d(c.s.a, c.s.b, q) != Orientation::Collinear
+                        || orient2d(c.t.a, c.t.b, q) != Orientation::Collinear
+                }
+            },
+            Vertices::Input(_) => false,
         }
     }
 

@@ -169,6 +169,12 @@ impl Rounded {
         self.p
     }
 
+    /// Whether the point is known to be exact without a test (an input point, or a
+    /// crossing with an axis-parallel segment along each axis).
+    pub(crate) fn surely_exact(&self) -> bool {
+        self.x_exact && self.y_exact
+    }
+
     /// The rounded point of `e` (`approx` is its nearest `f64` point).
     pub(crate) fn of(e: &ExactPoint, approx: Point2) -> Rounded {
         match e {

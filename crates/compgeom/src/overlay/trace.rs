@@ -42,6 +42,8 @@
 //! against it on degenerate input). Cost: that of the noding plus O(V + E) and the angular
 //! sorts at vertices of degree > 2, plus, with several components, the strips (O(V + E)
 //! and a few tests per component on map-like data) or the hole sweep.
+use super::boolean::{oriented_segments, FillRule};
+use super::rounding::{topology_kept, RoundedRings, REPAIRS};
 use crate::dcel::{
     compare_y_filtered, faces_left_of, side, without_cancelling, Carrier, Flat, Rounded,
 };
@@ -267,7 +269,17 @@ pub(super) fn traced_boolean(
     inside: impl Fn(i32, i32) -> bool,
     keep_collinear: bool,
 ) -> Result<MultiPolygon> {
-    traced(segs, na, inside, keep_collinear, true)
+    let (mut result, mut kept) = traced(segs, na, inside, keep_collinear, true)?;
+    // Rounding may have broken the result (see `rounding`): unite its rounded polygons
+    // again, each its shell minus its holes.
+    for _ in 0..REPAIRS {
+        if kept {
+            break;
+        }
+        let (segs, na) = oriented_segments(&result, &MultiPolygon::default(), FillRule::Positive)?;
+        (result, kept) = traced(&segs, na, |w, _| w > 0, keep_collinear, true)?;
+    }
+    Ok(result)
 }
 
 /// [`traced_boolean`]; with `strips` false the labels of components always come from the
@@ -278,7 +290,7 @@ fn traced(
     inside: impl Fn(i32, i32) -> bool,
     keep_collinear: bool,
     strips: bool,
-) -> Result<MultiPolygon> {
+) -> Result<(MultiPolygon, bool)> {
     // Segments whose contributions to the winding numbers cancel (the sides neighbouring
     // polygons of one input share) go first, unless every vertex on the boundary is to
     // be kept: the faces' winding numbers stay the same, from fewer edges.
@@ -297,7 +309,7 @@ fn traced(
     let ne = flat.edge_count();
     let m = 2 * ne;
     if ne == 0 {
-        return Ok(MultiPolygon::default());
+        return Ok((MultiPolygon::default(), true));
     }
     // Per edge its first source (the arrangement's, kept: on big input a copy is as
     // many fresh pages) and the axis direction of half-edge 2i: 0 = +x, 1 = +y, 2 = −x,
@@ -620,7 +632,7 @@ fn traced(
         }
     }
     if !any {
-        return Ok(MultiPolygon::default());
+        return Ok((MultiPolygon::default(), true));
     }
     // A component inside a chosen face with boundary edges gives a hole of the region
     // around it: only then are the cycles around components needed, and only around
@@ -655,6 +667,16 @@ fn traced(
     // The rounded points (and exactness flags) of one ring's vertices, computed once per
     // ring: a vertex is on few rings, so no cache over all vertices is needed.
     let mut ring_r: Vec<Rounded> = Vec::new();
+    // Each kept point's vertex and whether rounding moved it; all rings' points, for
+    // the check that rounding kept the result valid.
+    let mut ids: Vec<(u32, bool)> = Vec::new();
+    // Whether rounding made two vertices of a ring one (the check below sees the kept
+    // points only; such a result is always united again).
+    let mut collapsed = false;
+    let mut rounded = RoundedRings {
+        starts: vec![0],
+        ..RoundedRings::default()
+    };
     for start in 0..m as u32 {
         if state[start as usize] != BOUNDARY {
             continue;
@@ -733,6 +755,7 @@ fn traced(
             let ccw =
                 carrier(ring[before]).turn(&carrier(ring[lowest])) == Orientation::CounterClockwise;
             let mut pts: Vec<Point2> = Vec::with_capacity(n);
+            ids.clear();
             // Where the lowest vertex lands in `pts`: the ring starts there (it turns
             // there, so it is never dropped as straight).
             let mut first = 0;
@@ -764,17 +787,29 @@ fn traced(
                 let q = ring_r[j].point();
                 if pts.last() != Some(&q) {
                     pts.push(q);
+                    ids.push((v as u32, flat.vertices.moved(v, &ring_r[j])));
+                } else {
+                    // Two vertices rounded onto one point: an edge collapsed.
+                    collapsed = true;
                 }
             }
             while pts.len() > 1 && pts.first() == pts.last() {
                 pts.pop();
+                ids.pop();
+                collapsed = true;
             }
             if pts.len() < 3 {
+                collapsed = true;
                 continue;
             }
             // (A popped last point equals the first.)
             let first = if first < pts.len() { first } else { 0 };
             pts.rotate_left(first);
+            ids.rotate_left(first);
+            rounded.points.extend_from_slice(&pts);
+            rounded.ids.extend(ids.iter().map(|&(v, _)| v));
+            rounded.moved.extend(ids.iter().map(|&(_, m)| m));
+            rounded.starts.push(rounded.points.len());
             if ccw && regions[k].0.is_none() {
                 regions[k].0 = Some(pts);
             } else {
@@ -782,12 +817,14 @@ fn traced(
             }
         }
     }
-    Ok(canonical_order(
+    let kept = !collapsed && topology_kept(&rounded);
+    let polygons = canonical_order(
         regions
             .into_iter()
             .filter_map(|(shell, holes)| shell.map(|s| Polygon::new(s, holes)))
             .collect(),
-    ))
+    );
+    Ok((polygons, kept))
 }
 
 /// The polygons in a canonical order, independent of how the arrangement numbered its
@@ -1409,16 +1446,28 @@ mod tests {
                     let slow = boolean_via_dcel(a, b, op, &opts).unwrap();
                     let (segs, na) = oriented_segments(a, b, rule).unwrap();
                     let inside = |wa, wb| op.apply(rule.inside(wa), rule.inside(wb));
-                    let swept = super::traced(&segs, na, inside, keep_collinear, false).unwrap();
+                    let swept = super::traced(&segs, na, inside, keep_collinear, false)
+                        .unwrap()
+                        .0;
+                    let (traced, kept) =
+                        super::traced(&segs, na, inside, keep_collinear, true).unwrap();
                     prop_assert_eq!(canonical(&swept), canonical(&slow));
                     prop_assert_eq!(
-                        canonical(&fast),
+                        canonical(&traced),
                         canonical(&slow),
                         "{:?} {:?} keep {}",
                         op,
                         rule,
                         keep_collinear
                     );
+                    // Unless rounding may have broken it (then it was united again, and
+                    // must be valid), the result is the traced one.
+                    if kept {
+                        prop_assert_eq!(canonical(&fast), canonical(&traced));
+                    } else {
+                        let problems = crate::overlay::validity_problems(&fast).unwrap();
+                        prop_assert!(problems.is_empty(), "{:?}", problems);
+                    }
                 }
             }
         }
