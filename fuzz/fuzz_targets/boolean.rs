@@ -2,13 +2,16 @@
 //! infinities, subnormals, huge values) or of points snapped to a half-integer grid
 //! (shared edges, touching vertices, spikes, repeated points, self-crossings), every
 //! operation, fill rule and `keep_collinear` setting. Finite input must give a result,
-//! non-finite input an error, never a panic. On the grid the result's area must match
+//! non-finite input an error, never a panic, and the result must be valid
+//! (`validity_problems`, its rounded crossings included). On the grid the result's area must match
 //! the exact area of the faces the fill rule and the operation select in the labelled
 //! arrangement (`boolean_dcel`), whose labels must also sum to the rings' exact signed
 //! areas.
 #![no_main]
 
-use compgeom::overlay::{boolean_dcel, boolean_with, BooleanOp, BooleanOptions, FillRule};
+use compgeom::overlay::{
+    boolean_dcel, boolean_with, validity_problems, BooleanOp, BooleanOptions, FillRule,
+};
 use compgeom::{MultiPolygon, Point2, Polygon};
 use libfuzzer_sys::fuzz_target;
 use num_rational::BigRational;
@@ -116,14 +119,19 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     assert!(finite, "non-finite input accepted");
+    let problems = validity_problems(&out).expect("finite output");
+    assert!(problems.is_empty(), "{op:?} {rule:?}: {problems:?}");
     if !reader.snap {
         return;
     }
     // The labelled arrangement: Σ_f w(f)·area(f) is each input's signed ring area, and
     // the faces selected by the rule and the operation make up the result's area.
     let d = boolean_dcel(&a, &b, rule).expect("the operation succeeded");
-    let (mut wa, mut wb, mut selected) =
-        (BigRational::zero(), BigRational::zero(), BigRational::zero());
+    let (mut wa, mut wb, mut selected) = (
+        BigRational::zero(),
+        BigRational::zero(),
+        BigRational::zero(),
+    );
     for f in d.face_ids().skip(1) {
         let face_area = d.face_area_exact(f);
         let (x, y) = d.face(f).data;

@@ -24,7 +24,9 @@ fuzz_target!(|data: &[u8]| {
     let Some(c) = Crossing::new(s, t) else {
         return;
     };
-    let (x, y) = c.exact().expect("a constructed crossing has exact coordinates");
+    let (x, y) = c
+        .exact()
+        .expect("a constructed crossing has exact coordinates");
     let px = num_rational::BigRational::from_float(p.x).unwrap();
     let py = num_rational::BigRational::from_float(p.y).unwrap();
     let expected = x.cmp(&px).then(y.cmp(&py));

@@ -30,7 +30,11 @@ fuzz_target!(|data: &[u8]| {
         .collect();
     let finite = points.iter().all(|p| p.is_finite());
     let mut first: Option<Vec<Point2>> = None;
-    for algorithm in [HullAlgorithm::Default, HullAlgorithm::Andrew, HullAlgorithm::Slow] {
+    for algorithm in [
+        HullAlgorithm::Default,
+        HullAlgorithm::Andrew,
+        HullAlgorithm::Slow,
+    ] {
         let options = HullOptions::new()
             .with_algorithm(algorithm)
             .with_keep_collinear(keep_collinear);

@@ -26,7 +26,8 @@ A and B are each read as one polygon set (all features of the file together), wi
 fill rule: evenodd (default; an odd number of ring crossings is inside), nonzero
 (winding number not zero, rings as given), positive (each polygon its shell
 minus its holes, the polygons united). With only A, `union` unites all of A's polygons.
-Coordinates of constructed crossings are the nearest f64 to the exact point.
+Coordinates of constructed crossings are the nearest f64 to the exact point; where that
+rounding could make the result invalid, the rounded result is united again.
 
 Examples:
   compgeom boolean intersection a.geojson b.geojson --format geojson -o out.geojson
