@@ -142,6 +142,14 @@ impl Vertices {
         }
     }
 
+    /// Vertex `i` as an exact point.
+    pub(crate) fn exact_point(&self, i: usize) -> ExactPoint {
+        match self {
+            Vertices::Exact { points, .. } => points[i],
+            Vertices::Input(v) => ExactPoint::Input(v[i]),
+        }
+    }
+
     /// Whether vertex `i`'s rounded point `r` (from [`Vertices::rounded`]) differs from
     /// its exact point, exactly: a crossing is `r` iff `r` lies on both its lines.
     pub(crate) fn moved(&self, i: usize, r: &Rounded) -> bool {

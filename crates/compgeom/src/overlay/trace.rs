@@ -43,12 +43,14 @@
 //! sorts at vertices of degree > 2, plus, with several components, the strips (O(V + E)
 //! and a few tests per component on map-like data) or the hole sweep.
 use super::boolean::{oriented_segments, FillRule};
-use super::rounding::{topology_kept, RoundedRings, REPAIRS};
+use super::rounding::{topology_kept, PointIds, RoundedRings, REPAIRS};
 use crate::dcel::{
     compare_y_filtered, faces_left_of, side, without_cancelling, Carrier, Flat, Rounded,
 };
 use crate::kernel::arith::ordered_key as okey;
-use crate::kernel::{orient2d, ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2};
+use crate::kernel::{
+    orient2d, orient_exact, ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2,
+};
 use crate::Result;
 use std::cmp::Ordering;
 
@@ -667,11 +669,12 @@ fn traced(
     // The rounded points (and exactness flags) of one ring's vertices, computed once per
     // ring: a vertex is on few rings, so no cache over all vertices is needed.
     let mut ring_r: Vec<Rounded> = Vec::new();
-    // Each kept point's vertex and whether rounding moved it; all rings' points, for
-    // the check that rounding kept the result valid.
-    let mut ids: Vec<(u32, bool)> = Vec::new();
-    // Whether rounding made two vertices of a ring one (the check below sees the kept
-    // points only; such a result is always united again).
+    // What the check that rounding kept the result valid needs of each kept point (its
+    // vertices, whether it moved), and all rings' points.
+    let mut ids: Vec<PointIds> = Vec::new();
+    // Whether rounding made three vertices of a ring one point, or left a ring fewer
+    // than three points (the check does not follow these: such a result is always
+    // united again).
     let mut collapsed = false;
     let mut rounded = RoundedRings {
         starts: vec![0],
@@ -785,18 +788,23 @@ fn traced(
                     }
                 }
                 let q = ring_r[j].point();
-                if pts.last() != Some(&q) {
-                    pts.push(q);
-                    ids.push((v as u32, flat.vertices.moved(v, &ring_r[j])));
-                } else {
-                    // Two vertices rounded onto one point: an edge collapsed.
-                    collapsed = true;
+                let id = PointIds::of(v as u32, flat.vertices.moved(v, &ring_r[j]));
+                match ids.last_mut() {
+                    // Two vertices rounded onto one point: the edge between them
+                    // collapsed.
+                    Some(last) if pts.last() == Some(&q) => collapsed |= !last.merge(id),
+                    _ => {
+                        pts.push(q);
+                        ids.push(id);
+                    }
                 }
             }
             while pts.len() > 1 && pts.first() == pts.last() {
                 pts.pop();
-                ids.pop();
-                collapsed = true;
+                // (The ring's last point is its first: entered at the last's vertex.)
+                let mut last = ids.pop().expect("one per point");
+                collapsed |= !last.merge(ids[0]);
+                ids[0] = last;
             }
             if pts.len() < 3 {
                 collapsed = true;
@@ -807,8 +815,7 @@ fn traced(
             pts.rotate_left(first);
             ids.rotate_left(first);
             rounded.points.extend_from_slice(&pts);
-            rounded.ids.extend(ids.iter().map(|&(v, _)| v));
-            rounded.moved.extend(ids.iter().map(|&(_, m)| m));
+            rounded.ids.extend_from_slice(&ids);
             rounded.starts.push(rounded.points.len());
             if ccw && regions[k].0.is_none() {
                 regions[k].0 = Some(pts);
@@ -817,7 +824,11 @@ fn traced(
             }
         }
     }
-    let kept = !collapsed && topology_kept(&rounded);
+    let kept = !collapsed
+        && topology_kept(&rounded, |a, b, c| {
+            let v = |i: u32| flat.vertices.exact_point(i as usize);
+            orient_exact(&v(a), &v(b), &v(c))
+        });
     let polygons = canonical_order(
         regions
             .into_iter()
