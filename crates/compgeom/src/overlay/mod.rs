@@ -55,9 +55,10 @@
 //! the rounded result is checked, exactly and conservatively: when no vertex and edge
 //! not incident to it, one of them moved, come within a float gap of each other, the
 //! rounded result is the exact one deformed, hence valid (O(n) after the crossings,
-//! and nothing at all when no vertex moved). Otherwise its rounded polygons are united
-//! again (the [`FillRule::Positive`] rule: each shell minus its holes), which makes
-//! the new crossings vertices, and that result is checked the same way. The region
+//! and nothing at all when no vertex moved). Otherwise the rounded polygons where it may
+//! not have are united again (the [`FillRule::Positive`] rule: each shell minus its
+//! holes), which makes the new crossings vertices, and checked the same way among the
+//! others. The region
 //! then differs from the exact one by slivers within rounding. Vertices from the input
 //! are never moved. (The faces of an overlay, [`faces_to_polygons`], are rounded
 //! without this check.)

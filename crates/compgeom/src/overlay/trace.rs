@@ -43,7 +43,7 @@
 //! sorts at vertices of degree > 2, plus, with several components, the strips (O(V + E)
 //! and a few tests per component on map-like data) or the hole sweep.
 use super::boolean::{oriented_segments, FillRule};
-use super::rounding::{topology_kept, PointIds, RoundedRings, REPAIRS};
+use super::rounding::{failing_rings, PointIds, RoundedRings, REPAIRS};
 use crate::dcel::{
     compare_y_filtered, faces_left_of, side, without_cancelling, Carrier, Flat, Rounded,
 };
@@ -271,18 +271,39 @@ pub(super) fn traced_boolean(
     inside: impl Fn(i32, i32) -> bool,
     keep_collinear: bool,
 ) -> Result<MultiPolygon> {
-    let (mut result, mut kept) = traced(segs, na, inside, keep_collinear, true)?;
-    // Rounding may have broken the result (see `rounding`): unite its rounded polygons
-    // again, each its shell minus its holes.
+    let (mut fresh, mut flags) = traced(segs, na, inside, keep_collinear, true, &[])?;
+    // Rounding may have broken the result near some polygons (see `rounding`): unite
+    // those again, each its shell minus its holes, and check the new ones among the
+    // others (which can be found near them in turn).
+    let mut settled: Vec<Polygon> = Vec::new();
     for _ in 0..REPAIRS {
-        if kept {
+        let (mut again, mut kept) = (Vec::new(), Vec::new());
+        let flagged = fresh
+            .drain(..)
+            .chain(settled.drain(..).zip(flags.drain(..)));
+        for (polygon, suspect) in flagged {
+            if suspect {
+                again.push(polygon);
+            } else {
+                kept.push(polygon);
+            }
+        }
+        settled = kept;
+        if again.is_empty() {
             break;
         }
-        let (segs, na) = oriented_segments(&result, &MultiPolygon::default(), FillRule::Positive)?;
-        (result, kept) = traced(&segs, na, |w, _| w > 0, keep_collinear, true)?;
+        let again = MultiPolygon(again);
+        let (segs, na) = oriented_segments(&again, &MultiPolygon::default(), FillRule::Positive)?;
+        (fresh, flags) = traced(&segs, na, |w, _| w > 0, keep_collinear, true, &settled)?;
     }
-    Ok(result)
+    settled.extend(fresh.into_iter().map(|(polygon, _)| polygon));
+    Ok(canonical_order(settled))
 }
+
+/// The polygons [`traced_boolean`] finds before any repair, each with whether rounding
+/// may have broken the result near it, and the same for each polygon of `context`
+/// (polygons of the result found before, which are checked with these as they are).
+type TracedPolygons = (Vec<(Polygon, bool)>, Vec<bool>);
 
 /// [`traced_boolean`]; with `strips` false the labels of components always come from the
 /// hole sweep (tests check both ways agree).
@@ -292,7 +313,8 @@ fn traced(
     inside: impl Fn(i32, i32) -> bool,
     keep_collinear: bool,
     strips: bool,
-) -> Result<(MultiPolygon, bool)> {
+    context: &[Polygon],
+) -> Result<TracedPolygons> {
     // Segments whose contributions to the winding numbers cancel (the sides neighbouring
     // polygons of one input share) go first, unless every vertex on the boundary is to
     // be kept: the faces' winding numbers stay the same, from fewer edges.
@@ -311,7 +333,7 @@ fn traced(
     let ne = flat.edge_count();
     let m = 2 * ne;
     if ne == 0 {
-        return Ok((MultiPolygon::default(), true));
+        return Ok((Vec::new(), vec![false; context.len()]));
     }
     // Per edge its first source (the arrangement's, kept: on big input a copy is as
     // many fresh pages) and the axis direction of half-edge 2i: 0 = +x, 1 = +y, 2 = −x,
@@ -634,7 +656,7 @@ fn traced(
         }
     }
     if !any {
-        return Ok((MultiPolygon::default(), true));
+        return Ok((Vec::new(), vec![false; context.len()]));
     }
     // A component inside a chosen face with boundary edges gives a hole of the region
     // around it: only then are the cycles around components needed, and only around
@@ -672,10 +694,19 @@ fn traced(
     // What the check that rounding kept the result valid needs of each kept point (its
     // vertices, whether it moved), and all rings' points.
     let mut ids: Vec<PointIds> = Vec::new();
-    // Whether rounding made three vertices of a ring one point, or left a ring fewer
-    // than three points (the check does not follow these: such a result is always
-    // united again).
-    let mut collapsed = false;
+    // The regions where rounding made three vertices of a ring one point, or left a ring
+    // fewer than three points (the check does not follow these: they are always united
+    // again).
+    let mut collapsed: Vec<usize> = Vec::new();
+    // Per ring checked, its region (then the context's polygons).
+    let mut owner: Vec<usize> = Vec::new();
+    // The context's points: where its polygons touch this result's rings.
+    let context_points: std::collections::HashSet<(u64, u64)> = context
+        .iter()
+        .flat_map(|p| p.rings())
+        .flatten()
+        .map(|q| (q.x.to_bits(), q.y.to_bits()))
+        .collect();
     let mut rounded = RoundedRings {
         starts: vec![0],
         ..RoundedRings::default()
@@ -783,7 +814,11 @@ fn traced(
                         let (p, c) = (carrier(prev), carrier(h));
                         p.turn(&c) == Orientation::Collinear && p.angle_cmp(&c) == Ordering::Equal
                     };
-                    if straight {
+                    // (A point of the context stays: a polygon there touches this ring.)
+                    let q = ring_r[j].point();
+                    let touched = !context.is_empty()
+                        && context_points.contains(&(q.x.to_bits(), q.y.to_bits()));
+                    if straight && !touched {
                         continue;
                     }
                 }
@@ -792,7 +827,11 @@ fn traced(
                 match ids.last_mut() {
                     // Two vertices rounded onto one point: the edge between them
                     // collapsed.
-                    Some(last) if pts.last() == Some(&q) => collapsed |= !last.merge(id),
+                    Some(last) if pts.last() == Some(&q) => {
+                        if !last.merge(id) {
+                            collapsed.push(k);
+                        }
+                    }
                     _ => {
                         pts.push(q);
                         ids.push(id);
@@ -803,11 +842,13 @@ fn traced(
                 pts.pop();
                 // (The ring's last point is its first: entered at the last's vertex.)
                 let mut last = ids.pop().expect("one per point");
-                collapsed |= !last.merge(ids[0]);
+                if !last.merge(ids[0]) {
+                    collapsed.push(k);
+                }
                 ids[0] = last;
             }
             if pts.len() < 3 {
-                collapsed = true;
+                collapsed.push(k);
                 continue;
             }
             // (A popped last point equals the first.)
@@ -817,6 +858,7 @@ fn traced(
             rounded.points.extend_from_slice(&pts);
             rounded.ids.extend_from_slice(&ids);
             rounded.starts.push(rounded.points.len());
+            owner.push(k);
             if ccw && regions[k].0.is_none() {
                 regions[k].0 = Some(pts);
             } else {
@@ -824,18 +866,46 @@ fn traced(
             }
         }
     }
-    let kept = !collapsed
-        && topology_kept(&rounded, |a, b, c| {
-            let v = |i: u32| flat.vertices.exact_point(i as usize);
-            orient_exact(&v(a), &v(b), &v(c))
-        });
-    let polygons = canonical_order(
-        regions
-            .into_iter()
-            .filter_map(|(shell, holes)| shell.map(|s| Polygon::new(s, holes)))
-            .collect(),
-    );
-    Ok((polygons, kept))
+    // The context's rings, as they are (their points are exact and do not move), after
+    // this result's, with vertex numbers from nv on.
+    let own_rings = owner.len();
+    let mut context_at = Vec::new();
+    for (c, polygon) in context.iter().enumerate() {
+        for ring in polygon.rings() {
+            for &q in ring {
+                let id = (nv + context_at.len()) as u32;
+                context_at.push(q);
+                rounded.points.push(q);
+                rounded.ids.push(PointIds::of(id, false));
+            }
+            rounded.starts.push(rounded.points.len());
+            owner.push(c);
+        }
+    }
+    let exact = |i: u32| match (i as usize).checked_sub(nv) {
+        Some(c) => ExactPoint::Input(context_at[c]),
+        None => flat.vertices.exact_point(i as usize),
+    };
+    let mut suspect = vec![false; regions.len()];
+    let mut context_suspect = vec![false; context.len()];
+    for k in collapsed {
+        suspect[k] = true;
+    }
+    for ring in failing_rings(&rounded, |a, b, c| {
+        orient_exact(&exact(a), &exact(b), &exact(c))
+    }) {
+        if ring < own_rings {
+            suspect[owner[ring]] = true;
+        } else {
+            context_suspect[owner[ring]] = true;
+        }
+    }
+    let polygons = regions
+        .into_iter()
+        .zip(suspect)
+        .filter_map(|((shell, holes), suspect)| shell.map(|s| (Polygon::new(s, holes), suspect)))
+        .collect();
+    Ok((polygons, context_suspect))
 }
 
 /// The polygons in a canonical order, independent of how the arrangement numbered its
@@ -1457,11 +1527,20 @@ mod tests {
                     let slow = boolean_via_dcel(a, b, op, &opts).unwrap();
                     let (segs, na) = oriented_segments(a, b, rule).unwrap();
                     let inside = |wa, wb| op.apply(rule.inside(wa), rule.inside(wb));
-                    let swept = super::traced(&segs, na, inside, keep_collinear, false)
-                        .unwrap()
-                        .0;
-                    let (traced, kept) =
-                        super::traced(&segs, na, inside, keep_collinear, true).unwrap();
+                    let unflagged = |(found, _): super::TracedPolygons| {
+                        let kept = found.iter().all(|(_, suspect)| !suspect);
+                        (
+                            MultiPolygon(found.into_iter().map(|(p, _)| p).collect()),
+                            kept,
+                        )
+                    };
+                    let swept = unflagged(
+                        super::traced(&segs, na, inside, keep_collinear, false, &[]).unwrap(),
+                    )
+                    .0;
+                    let (traced, kept) = unflagged(
+                        super::traced(&segs, na, inside, keep_collinear, true, &[]).unwrap(),
+                    );
                     prop_assert_eq!(canonical(&swept), canonical(&slow));
                     prop_assert_eq!(
                         canonical(&traced),
