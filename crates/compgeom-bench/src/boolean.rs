@@ -266,6 +266,27 @@
 //! would, and they are spread thin (cachegrind, per call: the winding and face searches'
 //! y-range loops in `trace.rs` ~2.8 k, the noding's pair tests and sweep ~5 k, the
 //! cancellation's hash ~1.5 k, the vertex classes ~1.3 k; no line above 1.2 k).
+//!
+//! Session 31: the results were not all valid, and now are (`overlay::rounding`: the
+//! rounded result is checked, and the polygons where rounding may have broken it are
+//! united again). The GEOS-837 dissolve timed above was invalid (a vertex rounded onto
+//! the far side of a 200 m edge: edges crossing and overlapping), as were most of the
+//! JTS×52 results and the water xor: so the earlier figures for these rows were for
+//! wrong answers, and they are now slower. Maps rows, one run (ratio compgeom / peer,
+//! i_overlay then geo; earlier code in brackets, same run of the machine): water
+//! intersection 0.84 / 0.77 (0.79 / 0.69), union 0.88 / 0.85 (0.92 / 0.78), difference
+//! 0.82 / 0.85 (0.87 / 0.80), xor 1.02 / 0.97 (0.70 / 0.64); JTS×52 intersection 1.38 /
+//! 1.35 (0.92 / 0.91), union 1.64 / 1.61 (0.96 / 0.93), difference 1.67 / 1.64 (0.94 /
+//! 0.90), xor 3.03 / 2.93 (0.93 / 0.88); dissolve 1.75 / 1.59 (0.69 ms against 0.39 and
+//! 0.43; was 1.16 / 1.04). Alone, the dissolve takes 0.62 ms (0.29): its result is one
+//! large polygon, so uniting "only the polygons near a failing pair" is uniting nearly
+//! all of it. Stars 1e3 0.92–1.10 / 0.87–1.05 (0.79–0.84 / 0.76–0.81: the check costs
+//! ~15% at this size, and the xor is repaired); 1e4 and 1e5 0.57–0.85 / 0.57–0.92, the
+//! squares 0.69 / 0.67 (no point moves on axis-parallel input: no check at all).
+//! Tried and not kept: accepting a vertex that changed sides when it sits beside an end
+//! of the edge (JTS union 1.64 → 1.42, the rest unchanged; weaker argument). What
+//! would help: a repair local to the failing pair (re-node only the edges within reach
+//! of it, keep the labels of everything else), instead of a union of whole polygons.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
