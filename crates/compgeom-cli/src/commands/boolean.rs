@@ -27,7 +27,9 @@ fill rule: evenodd (default; an odd number of ring crossings is inside), nonzero
 (winding number not zero, rings as given), positive (each polygon its shell
 minus its holes, the polygons united). With only A, `union` unites all of A's polygons.
 Coordinates of constructed crossings are the nearest f64 to the exact point; where that
-rounding could make the result invalid, the rounded result is united again.
+rounding could make the result invalid, the crossing takes another float around its exact
+point (one float away per axis) that keeps it valid, or else the rounded result is united
+again.
 
 Examples:
   compgeom boolean intersection a.geojson b.geojson --format geojson -o out.geojson

@@ -29,12 +29,15 @@
 //! the rounded result is checked, exactly and conservatively: when no vertex and edge
 //! not incident to it, one of them moved, come within a float gap of each other, the
 //! rounded result is the exact one deformed, hence valid (O(n) after the crossings,
-//! and nothing at all when no vertex moved). Otherwise the rounded polygons where it may
-//! not have are united again (the [`FillRule::Positive`] rule: each shell minus its
-//! holes), which makes the new crossings vertices, and checked the same way among the
-//! others. The region
-//! then differs from the exact one by slivers within rounding. Vertices from the input
-//! are never moved.
+//! and nothing at all when no vertex moved); a vertex near such an edge must be on its
+//! exact side of it. Where it is not, the crossings involved are moved to another of
+//! the (at most four) floats around their exact points where that puts every near
+//! vertex on its side: such a crossing is one float, not the nearest, from its exact
+//! point per axis. Where no such float does, the rounded polygons there are united
+//! again (the [`FillRule::Positive`] rule: each shell minus its holes), which makes the
+//! new crossings vertices, and checked the same way among the others. The region then
+//! differs from the exact one by slivers within rounding. Vertices from the input are
+//! never moved.
 //!
 //! ## Order of the output
 //!
