@@ -714,8 +714,8 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
 /// `BOOLEAN_INPUT=star|squares|water|jts|dissolve`, `BOOLEAN_REPS` calls except for the
 /// squares): run one contender on the star union, the squares input, the water map
-/// union, the unions of the 52 JTS pairs or the GEOS-837 dissolve (`union_all`), for
-/// instruction counts (`valgrind --tool=callgrind`). The dissolve also takes
+/// union, the unions of the 52 JTS pairs (or another `BOOLEAN_OP`) or the GEOS-837
+/// dissolve (`union_all`), for instruction counts (`valgrind --tool=callgrind`). The dissolve also takes
 /// `BOOLEAN_ONE=all` (the three alternated, one call each per round, as the table
 /// does) and prints each contender's median and best call ([`disturbed_rounds`]).
 fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
@@ -778,20 +778,24 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
         let jts = real_maps::jts_robust_pairs(&dir);
         let (io, geo) = (io_pairs(&jts), geo_pairs(&jts));
+        // `BOOLEAN_OP=intersection|difference|xor` for another operation than the union.
+        let name = std::env::var("BOOLEAN_OP").unwrap_or_else(|_| "union".into());
+        let (_, op, io_op, geo_op) = *OPS
+            .iter()
+            .find(|o| o.0 == name)
+            .ok_or("BOOLEAN_OP: intersection, union, difference or xor")?;
         for _ in 0..reps {
             for (k, p) in jts.iter().enumerate() {
                 match who {
                     "ours" => drop(black_box(
-                        boolean(&p.a, &p.b, BooleanOp::Union).map_err(|e| e.to_string())?,
+                        boolean(&p.a, &p.b, op).map_err(|e| e.to_string())?,
                     )),
                     "io" => drop(black_box(io[k].0.overlay(
                         &io[k].1,
-                        OverlayRule::Union,
+                        io_op,
                         FillRule::EvenOdd,
                     ))),
-                    _ => drop(black_box(
-                        geo[k].0.boolean_op(&geo[k].1, geo::OpType::Union),
-                    )),
+                    _ => drop(black_box(geo[k].0.boolean_op(&geo[k].1, geo_op))),
                 }
             }
         }
