@@ -285,37 +285,36 @@ pub(super) fn failing_rings(
     if !r.ids.iter().any(|p| p.moved) {
         return Vec::new();
     }
-    let edges: Vec<Edge> = r.edges().collect();
-    let pairs = near_pairs(r, &edges);
+    let pairs = near_pairs(r);
     let mut sides = ExactSides {
         side: exact_side,
         known: vec![[None; 2]; pairs.len()],
     };
     let mut failing: Vec<usize> = (0..pairs.len())
-        .filter(|&k| !passes(r, &pairs, k, &edges, &mut sides))
+        .filter(|&k| !passes(r, &pairs, k, &mut sides))
         .collect();
     if !failing.is_empty() {
-        nudge(r, &edges, &pairs, &mut failing, &mut sides, &toward);
+        nudge(r, &pairs, &mut failing, &mut sides, &toward);
     }
     let ring_of = |i: usize| r.starts.partition_point(|&s| s <= i) - 1;
     failing
         .iter()
         .flat_map(|&k| {
             let (x, e) = pairs[k];
-            [ring_of(x as usize), ring_of(edges[e as usize].i)]
+            [ring_of(x as usize), ring_of(e.i)]
         })
         .collect()
 }
 
-/// A point and an edge (indices into the rings' points and the edges) that may come
-/// near each other as rounding moves them, or as [`nudge`] moves their points further
-/// (by at most one float per axis: the boxes below hold that too).
-type Pair = (u32, u32);
+/// A point (its index in the rings' points) and an edge that may come near each other
+/// as rounding moves them, or as [`nudge`] moves their points further (by at most one
+/// float per axis: the boxes below hold that too).
+type Pair = (u32, Edge);
 
 /// The pairs [`passes`] has to decide: every point against the moved edges near it,
 /// every edge whose ends did not move against the moved points near it (a moved edge
 /// against a point is in the first), each pair once, with boxes that overlap.
-fn near_pairs(r: &RoundedRings, edges: &[Edge]) -> Vec<Pair> {
+fn near_pairs(r: &RoundedRings) -> Vec<Pair> {
     // Boxes twice the sizes `passes` tests, and a point's box two gaps of its own
     // coordinates wider (more than the outward rounding of the box `meets` tests).
     let point_box = |i: usize| {
@@ -328,41 +327,61 @@ fn near_pairs(r: &RoundedRings, edges: &[Edge]) -> Vec<Pair> {
         Box2::around(r.points[e.i], r.points[e.j], (4.0 * hx, 4.0 * hy))
     };
     let moves = |e: &Edge| r.moved(e.i) || r.moved(e.j);
-    let moved_edges: Vec<usize> = (0..edges.len()).filter(|&k| moves(&edges[k])).collect();
+    let moved_edges: Vec<Edge> = r.edges().filter(moves).collect();
     let moved_points: Vec<usize> = (0..r.points.len()).filter(|&i| r.moved(i)).collect();
     let boxes: Vec<Box2> = moved_edges
         .iter()
-        .map(|&k| edge_box(&edges[k]))
+        .map(edge_box)
         .chain(moved_points.iter().map(|&i| point_box(i)))
         .collect();
     let grid = Grid::new(&boxes);
     let mut pairs = Vec::new();
     let mut stamp = vec![usize::MAX; boxes.len()];
     for x in 0..r.points.len() {
+        if !grid.may_meet(&rough_box(r.points[x])) {
+            continue;
+        }
         let b = point_box(x);
         grid.visit(&b, x, &mut stamp, |item| {
             if item < moved_edges.len() && boxes[item].overlaps(&b) {
                 // (Not against its own edges.)
                 let e = moved_edges[item];
-                if edges[e].i != x && edges[e].j != x {
-                    pairs.push((x as u32, e as u32));
+                if e.i != x && e.j != x {
+                    pairs.push((x as u32, e));
                 }
             }
         });
     }
     let query_base = r.points.len();
-    for (k, e) in edges.iter().enumerate() {
-        if moves(e) {
+    for (k, e) in r.edges().enumerate() {
+        if moves(&e) {
             continue;
         }
-        let b = edge_box(e);
+        let b = edge_box(&e);
         grid.visit(&b, query_base + k, &mut stamp, |item| {
             if item >= moved_edges.len() && boxes[item].overlaps(&b) {
-                pairs.push((moved_points[item - moved_edges.len()] as u32, k as u32));
+                pairs.push((moved_points[item - moved_edges.len()] as u32, e));
             }
         });
     }
     pairs
+}
+
+/// A box around `c` holding its `point_box` in `near_pairs` (half sizes 4·reach + 2
+/// gaps, reach at most a gap, rounded outward by a float: at most 7 gaps per axis,
+/// and a gap is at most 2⁻⁵² |v|, or 2⁻¹⁰⁷⁴ below the normal range), from a few float
+/// operations: half sizes 2⁻⁴⁸ |v| + 2⁻¹⁰⁶⁸, whose own rounding is far below the
+/// margin.
+fn rough_box(c: Point2) -> Box2 {
+    const REL: f64 = 1.0 / (1u64 << 48) as f64;
+    const ABS: f64 = f64::MIN_POSITIVE / (1u64 << 46) as f64;
+    let (hx, hy) = (c.x.abs() * REL + ABS, c.y.abs() * REL + ABS);
+    Box2 {
+        x0: c.x - hx,
+        x1: c.x + hx,
+        y0: c.y - hy,
+        y1: c.y + hy,
+    }
 }
 
 fn reach_of(r: &RoundedRings, i: usize) -> (f64, f64) {
@@ -384,16 +403,15 @@ fn passes(
     r: &RoundedRings,
     pairs: &[Pair],
     k: usize,
-    edges: &[Edge],
     sides: &mut ExactSides<impl Fn(u32, u32, u32) -> Orientation>,
 ) -> bool {
     let (x, e) = pairs[k];
-    let (x, e) = (x as usize, &edges[e as usize]);
+    let x = x as usize;
     let PointIds { enter, leave, .. } = r.ids[x];
     if [enter, leave].iter().any(|&v| v == e.a || v == e.b) {
         return true;
     }
-    let (ex, ey) = edge_reach(r, e);
+    let (ex, ey) = edge_reach(r, &e);
     let (px, py) = reach_of(r, x);
     let (a, b, c) = (r.points[e.i], r.points[e.j], r.points[x]);
     if !meets(a, b, c, (ex + px, ey + py)) {
@@ -448,7 +466,6 @@ struct ExactSides<F> {
 /// so the result does not depend on how the arrangement numbered things.
 fn nudge(
     r: &mut RoundedRings,
-    edges: &[Edge],
     pairs: &[Pair],
     failing: &mut Vec<usize>,
     sides: &mut ExactSides<impl Fn(u32, u32, u32) -> Orientation>,
@@ -458,7 +475,6 @@ fn nudge(
     let n = r.points.len();
     let mut starts = vec![0u32; n + 1];
     let ends = |&(x, e): &Pair| {
-        let e = &edges[e as usize];
         let (x, i, j) = (x as usize, e.i, e.j);
         [
             Some(x),
@@ -527,10 +543,7 @@ fn nudge(
     let key = |p: Point2| (p.x, p.y);
     let mut order = failing.clone();
     order.sort_by(|&k, &l| {
-        let points = |(x, e): Pair| {
-            let e = &edges[e as usize];
-            [r.points[x as usize], r.points[e.i], r.points[e.j]].map(key)
-        };
+        let points = |(x, e): Pair| [r.points[x as usize], r.points[e.i], r.points[e.j]].map(key);
         let (a, b) = (points(pairs[k]), points(pairs[l]));
         a.iter()
             .zip(&b)
@@ -588,19 +601,18 @@ fn nudge(
             });
             // Taken when the pair passes and no pair that passed fails (the pair
             // itself first: most candidates fail there).
-            let taken = !collapses && passes(r, pairs, k, edges, sides) && {
+            let taken = !collapses && passes(r, pairs, k, sides) && {
                 now.clear();
                 now.extend(changed().flat_map(|i| pairs_at(i).iter().map(|&m| m as usize)));
                 now.sort_unstable();
                 now.dedup();
-                now.iter()
-                    .all(|&m| fails[m] || passes(r, pairs, m, edges, sides))
+                now.iter().all(|&m| fails[m] || passes(r, pairs, m, sides))
             };
             if taken {
                 // (A pair that failed may pass now.)
                 for &m in &now {
                     if fails[m] {
-                        fails[m] = !passes(r, pairs, m, edges, sides);
+                        fails[m] = !passes(r, pairs, m, sides);
                     }
                 }
                 touched_rings.extend(changed().map(|i| r.starts.partition_point(|&s| s <= i) - 1));
@@ -746,6 +758,28 @@ impl Grid {
         self.starts = starts;
         self.items = items;
         self.wide = wide_items;
+    }
+
+    /// Whether [`Grid::visit`] with a box inside `b` may call its function: a cell
+    /// `b`'s cells lists an item, or an item is wide, or `b` covers many cells (then
+    /// `true` without a look).
+    fn may_meet(&self, b: &Box2) -> bool {
+        if !b.overlaps(&self.extent) {
+            return false;
+        }
+        if !self.wide.is_empty() {
+            return true;
+        }
+        let (x0, x1, y0, y1) = self.range(b);
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > 4 {
+            return true;
+        }
+        (y0..=y1).any(|y| {
+            (x0..=x1).any(|x| {
+                let cell = y * self.nx + x;
+                self.starts[cell] != self.starts[cell + 1]
+            })
+        })
     }
 
     /// Calls `f` once for each item whose cells box `b` overlaps (and for each wide

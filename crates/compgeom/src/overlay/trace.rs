@@ -711,6 +711,7 @@ fn traced(
     // What the check that rounding kept the result valid needs of each kept point (its
     // vertices, whether it moved), and all rings' points.
     let mut ids: Vec<PointIds> = Vec::new();
+    let mut pts: Vec<Point2> = Vec::new();
     // The regions where rounding made three vertices of a ring one point, or left a ring
     // fewer than three points (the check does not follow these: they are always united
     // again).
@@ -805,7 +806,7 @@ fn traced(
             let before = if lowest == 0 { n - 1 } else { lowest - 1 };
             let ccw =
                 carrier(ring[before]).turn(&carrier(ring[lowest])) == Orientation::CounterClockwise;
-            let mut pts: Vec<Point2> = Vec::with_capacity(n);
+            pts.clear();
             ids.clear();
             // Where the lowest vertex lands in `pts`: the ring starts there (it turns
             // there, so it is never dropped as straight).
