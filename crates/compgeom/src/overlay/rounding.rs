@@ -523,7 +523,22 @@ fn nudge(
             }
         }
     }
+    // (Which vertices to look up, by number: a hash per point would cost more than the
+    // rest of this.)
+    let top = r
+        .ids
+        .iter()
+        .map(|id| id.enter.max(id.leave))
+        .max()
+        .unwrap_or(0);
+    let mut wanted = vec![false; top as usize + 1];
+    for &v in place_of.keys() {
+        wanted[v as usize] = true;
+    }
     for (i, &id) in r.ids.iter().enumerate() {
+        if !wanted[id.enter as usize] && !wanted[id.leave as usize] {
+            continue;
+        }
         let mut seen = None;
         for v in [id.enter, id.leave] {
             let Some(&at) = place_of.get(&v) else {
