@@ -290,6 +290,27 @@
 //! of the edge (JTS union 1.64 → 1.42, the rest unchanged; weaker argument). What
 //! would help: a repair local to the failing pair (re-node only the edges within reach
 //! of it, keep the labels of everything else), instead of a union of whole polygons.
+//!
+//! Session 32: fewer repairs, a cheaper check (`overlay::rounding`). A pair failing on
+//! a side flip now first moves its crossings to another float around their exact points
+//! (one float away per axis at most) where that puts every near vertex on its side
+//! (`nudge`), and a vertex exactly on an edge's line passes when only one of the three
+//! points moved. Results still united again (`BOOLEAN_OP`, `BOOLEAN_INPUT=jts`): the
+//! dissolve 0 (was 1), JTS×52 intersection 2, union 7, difference 2, xor 29 of 52
+//! (xor was 48; its slivers thinner than a float gap collapse). The check had also
+//! started costing 10 ms on the star 1e5 intersection (a list of every edge: its fresh
+//! pages), now gone. Full table, one run: stars 1e3 0.90–1.02 / 0.91–0.99, 1e4
+//! 0.57–0.63 / 0.56–0.62, 1e5 0.66–0.74 / 0.62–0.70; squares 0.65 / 0.69; water
+//! 0.80–0.95 / 0.78–0.93; JTS×52 intersection 1.29 / 1.28, union 1.42 / 1.41,
+//! difference 1.45 / 1.42, xor 2.59 / 2.52; dissolve 1.46 / 1.31 (0.57 ms against 0.39
+//! and 0.44). Rounds of ours, io, geo on the dissolve: 0.566 / 0.366 / 0.408 ms (1.55 /
+//! 1.39; were 0.69 ms); alone 0.43 ms (0.59 at the start of the session, 0.29 before
+//! session 31's check). Where the time goes now (perf, dissolve alone): the search
+//! for near pairs (every point and every unmoved edge against a grid of the moved
+//! items) about 60 µs, the rest of the check 20 µs. On the JTS xor the check's exact
+//! sides of near pairs (`orient_exact` on crossings within a float gap: the Dyadic
+//! fallback) and the 29 re-unions dominate. Not met: the JTS rows and the dissolve
+//! (goal: within 1.5× of i_overlay and faster than geo).
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
