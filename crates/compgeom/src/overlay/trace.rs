@@ -310,7 +310,7 @@ pub(super) fn traced_boolean(
 struct Traced {
     polygons: Vec<(Polygon, bool)>,
     context_suspect: Vec<bool>,
-    /// How many points the check moved off their nearest floats (`rounding::nudge`;
+    /// How many points the check moved off their nearest floats (`rounding::mend`;
     /// tests read it).
     #[cfg_attr(not(test), allow(dead_code))]
     nudged: usize,

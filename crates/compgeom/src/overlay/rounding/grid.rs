@@ -1,0 +1,180 @@
+//! A uniform grid over boxes, for the rounding check's search for near pairs.
+
+use super::Box2;
+
+/// A uniform grid over the boxes of the moved items (about two cells per item), each
+/// item listed in the cells its box overlaps; an item over more than [`WIDE_CELLS`]
+/// cells is listed once, in `wide`, and met by every query.
+pub(super) struct Grid {
+    x0: f64,
+    y0: f64,
+    inv: f64,
+    nx: usize,
+    ny: usize,
+    extent: Box2,
+    starts: Vec<u32>,
+    items: Vec<u32>,
+    wide: Vec<u32>,
+    count: usize,
+}
+
+/// An item's box over more cells than this is `wide`.
+const WIDE_CELLS: usize = 64;
+
+impl Grid {
+    pub(super) fn new(boxes: &[Box2]) -> Grid {
+        let mut extent = Box2 {
+            x0: f64::INFINITY,
+            x1: f64::NEG_INFINITY,
+            y0: f64::INFINITY,
+            y1: f64::NEG_INFINITY,
+        };
+        for b in boxes {
+            extent.x0 = extent.x0.min(b.x0);
+            extent.x1 = extent.x1.max(b.x1);
+            extent.y0 = extent.y0.min(b.y0);
+            extent.y1 = extent.y1.max(b.y1);
+        }
+        let count = boxes.len();
+        // Square cells, about two per item (the longer side cut into at most 2·count + 1).
+        let (w, h) = (extent.x1 - extent.x0, extent.y1 - extent.y0);
+        let longest = w.max(h);
+        let by_area = ((w * h) / (2 * count.max(1)) as f64).sqrt();
+        let side = by_area.max(longest / (2 * count + 1) as f64);
+        let inv = if side > 0.0 && side.is_finite() {
+            1.0 / side
+        } else {
+            0.0
+        };
+        let cells = |len: f64| ((len * inv) as usize).clamp(0, 2 * count) + 1;
+        let mut grid = Grid {
+            x0: extent.x0,
+            y0: extent.y0,
+            inv,
+            nx: cells(w),
+            ny: cells(h),
+            extent,
+            starts: Vec::new(),
+            items: Vec::new(),
+            wide: Vec::new(),
+            count,
+        };
+        grid.fill(boxes);
+        grid
+    }
+
+    /// The cell range of a box, clamped to the grid (monotone in the box's bounds, so
+    /// boxes that overlap share a cell).
+    fn range(&self, b: &Box2) -> (usize, usize, usize, usize) {
+        let ix = |x: f64| (((x - self.x0) * self.inv).max(0.0) as usize).min(self.nx - 1);
+        let iy = |y: f64| (((y - self.y0) * self.inv).max(0.0) as usize).min(self.ny - 1);
+        (ix(b.x0), ix(b.x1), iy(b.y0), iy(b.y1))
+    }
+
+    fn fill(&mut self, boxes: &[Box2]) {
+        let mut starts = vec![0u32; self.nx * self.ny + 1];
+        let cells_of = |b: &Box2| {
+            let (x0, x1, y0, y1) = self.range(b);
+            let wide = (x1 - x0 + 1) * (y1 - y0 + 1) > WIDE_CELLS;
+            (x0, x1, y0, y1, wide)
+        };
+        for b in boxes {
+            let (x0, x1, y0, y1, wide) = cells_of(b);
+            if !wide {
+                for y in y0..=y1 {
+                    for x in x0..=x1 {
+                        starts[y * self.nx + x + 1] += 1;
+                    }
+                }
+            }
+        }
+        for k in 1..starts.len() {
+            starts[k] += starts[k - 1];
+        }
+        let mut at = starts.clone();
+        let mut items = vec![0u32; starts[starts.len() - 1] as usize];
+        let mut wide_items = Vec::new();
+        for (item, b) in boxes.iter().enumerate() {
+            let (x0, x1, y0, y1, wide) = cells_of(b);
+            if wide {
+                wide_items.push(item as u32);
+                continue;
+            }
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    let slot = &mut at[y * self.nx + x];
+                    items[*slot as usize] = item as u32;
+                    *slot += 1;
+                }
+            }
+        }
+        self.starts = starts;
+        self.items = items;
+        self.wide = wide_items;
+    }
+
+    /// Whether [`Grid::visit`] with a box inside `b` may call its function: a cell
+    /// `b`'s cells lists an item, or an item is wide, or `b` covers many cells (then
+    /// `true` without a look).
+    pub(super) fn may_meet(&self, b: &Box2) -> bool {
+        if !b.overlaps(&self.extent) {
+            return false;
+        }
+        if !self.wide.is_empty() {
+            return true;
+        }
+        let (x0, x1, y0, y1) = self.range(b);
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > 4 {
+            return true;
+        }
+        (y0..=y1).any(|y| {
+            (x0..=x1).any(|x| {
+                let cell = y * self.nx + x;
+                self.starts[cell] != self.starts[cell + 1]
+            })
+        })
+    }
+
+    /// Calls `f` once for each item whose cells box `b` overlaps (and for each wide
+    /// item), or for every item when `b` covers more cells than there are items;
+    /// `stamp[item] == query` marks an item already met by this query.
+    pub(super) fn visit(
+        &self,
+        b: &Box2,
+        query: usize,
+        stamp: &mut [usize],
+        mut f: impl FnMut(usize),
+    ) {
+        if !b.overlaps(&self.extent) {
+            return;
+        }
+        let (x0, x1, y0, y1) = self.range(b);
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > self.count + WIDE_CELLS {
+            (0..self.count).for_each(f);
+            return;
+        }
+        for &item in &self.wide {
+            f(item as usize);
+        }
+        if x0 == x1 && y0 == y1 {
+            // (One cell: each item once, no marks needed.)
+            let cell = y0 * self.nx + x0;
+            let list = &self.items[self.starts[cell] as usize..self.starts[cell + 1] as usize];
+            list.iter().for_each(|&item| f(item as usize));
+            return;
+        }
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let cell = y * self.nx + x;
+                let list = &self.items[self.starts[cell] as usize..self.starts[cell + 1] as usize];
+                for &item in list {
+                    let item = item as usize;
+                    if stamp[item] != query {
+                        stamp[item] = query;
+                        f(item);
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,223 @@
+//! Mending the pairs that fail the rounding check (see the parent module): a crossing
+//! may take any float point around its exact one, not only the nearest.
+
+use super::{down, passes, up, ExactSides, Pair, PointIds, RoundedRings, Toward};
+use crate::kernel::{Orientation, Point2};
+use std::cmp::Ordering;
+
+/// Moves the points of failing pairs to other floats around their exact points where
+/// that makes the pair pass and no other pair fail; `failing` keeps the pairs that still
+/// fail.
+///
+/// A moved vertex `v` of a failing pair (the pair's point or an end of its edge, not one
+/// standing for a collapsed edge) may take any float point within one float of its
+/// rounded point per axis on the exact point's side (the corners of the float box the
+/// exact point is in), at all its points at once (rings touching at it stay touching).
+/// Such a point is within the reach [`super::reach`] gives a moved point, so the module's
+/// argument holds for it as for the nearest one; the pairs near its points are found
+/// again (`near_pairs` made its boxes wide enough) and decided with it. Where the exact
+/// vertex is on the wrong side of a line through a rounded edge, one of these corners is
+/// on its side (the exact point is a convex combination of them, and the side is
+/// linear in each end), so a pair that fails on a side flip can always be made to pass
+/// alone; a pair whose exact vertex is on the edge's line cannot. Pairs are taken in
+/// the order of their points' coordinates, each vertex's candidates in a fixed order,
+/// so the result does not depend on how the arrangement numbered things.
+pub(super) fn nudge(
+    r: &mut RoundedRings,
+    pairs: &[Pair],
+    failing: &mut Vec<usize>,
+    sides: &mut ExactSides<impl Fn(u32, u32, u32) -> Orientation>,
+    toward: &impl Fn(u32, Point2) -> Toward,
+) {
+    // The pairs each point is in (as the point or an end of the edge).
+    let n = r.points.len();
+    let mut starts = vec![0u32; n + 1];
+    let ends = |&(x, e): &Pair| {
+        let (x, i, j) = (x as usize, e.i, e.j);
+        [
+            Some(x),
+            (i != x).then_some(i),
+            (j != x && j != i).then_some(j),
+        ]
+    };
+    for pair in pairs {
+        for i in ends(pair).into_iter().flatten() {
+            starts[i + 1] += 1;
+        }
+    }
+    for i in 1..=n {
+        starts[i] += starts[i - 1];
+    }
+    let mut at = starts.clone();
+    let mut of_point = vec![0u32; starts[n] as usize];
+    for (k, pair) in pairs.iter().enumerate() {
+        for i in ends(pair).into_iter().flatten() {
+            of_point[at[i] as usize] = k as u32;
+            at[i] += 1;
+        }
+    }
+    let pairs_at = |i: usize| &of_point[starts[i] as usize..starts[i + 1] as usize];
+    // Where each moved point of a failing pair is in the rings, by the vertices it
+    // stands for (`None`: one of them is elsewhere on a point standing for others too,
+    // and is not moved).
+    type Place = (u32, u32);
+    let place = |id: PointIds| (id.enter, id.leave);
+    let mut places: std::collections::HashMap<Place, Option<Vec<usize>>> = Default::default();
+    let mut place_of: std::collections::HashMap<u32, Place> = Default::default();
+    for &k in failing.iter() {
+        for i in ends(&pairs[k]).into_iter().flatten() {
+            let id = r.ids[i];
+            if id.moved {
+                places.entry(place(id)).or_insert(Some(Vec::new()));
+                for v in [id.enter, id.leave] {
+                    // (A vertex on two different points: neither is moved.)
+                    if let Some(other) = place_of.insert(v, place(id)) {
+                        if other != place(id) {
+                            places.insert(other, None);
+                            places.insert(place(id), None);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // (Which vertices to look up, by number: a hash per point would cost more than the
+    // rest of this.)
+    let top = r
+        .ids
+        .iter()
+        .map(|id| id.enter.max(id.leave))
+        .max()
+        .unwrap_or(0);
+    let mut wanted = vec![false; top as usize + 1];
+    for &v in place_of.keys() {
+        wanted[v as usize] = true;
+    }
+    for (i, &id) in r.ids.iter().enumerate() {
+        if !wanted[id.enter as usize] && !wanted[id.leave as usize] {
+            continue;
+        }
+        let mut seen = None;
+        for v in [id.enter, id.leave] {
+            let Some(&at) = place_of.get(&v) else {
+                continue;
+            };
+            if seen == Some(at) {
+                continue;
+            }
+            seen = Some(at);
+            let entry = places.entry(at).or_insert(None);
+            match entry {
+                Some(list) if place(id) == at => list.push(i),
+                _ => *entry = None,
+            }
+        }
+    }
+    let key = |p: Point2| (p.x, p.y);
+    let mut order = failing.clone();
+    order.sort_by(|&k, &l| {
+        let points = |(x, e): Pair| [r.points[x as usize], r.points[e.i], r.points[e.j]].map(key);
+        let (a, b) = (points(pairs[k]), points(pairs[l]));
+        a.iter()
+            .zip(&b)
+            .map(|(p, q)| p.0.total_cmp(&q.0).then(p.1.total_cmp(&q.1)))
+            .find(|o| o.is_ne())
+            .unwrap_or(Ordering::Equal)
+    });
+    let mut fails: Vec<bool> = vec![false; pairs.len()];
+    for &k in failing.iter() {
+        fails[k] = true;
+    }
+    let mut touched_rings = Vec::new();
+    let mut now: Vec<usize> = Vec::new();
+    for k in order {
+        if !fails[k] {
+            continue;
+        }
+        // The vertices to move, with their places and their candidate points.
+        let mut movable: Vec<(&Vec<usize>, Vec<Point2>)> = Vec::new();
+        for i in ends(&pairs[k]).into_iter().flatten() {
+            let id = r.ids[i];
+            let found = places.get(&place(id)).filter(|_| id.moved);
+            if let Some(Some(list)) = found.filter(|l| l.as_ref().is_some_and(|l| !l.is_empty())) {
+                if !movable.iter().any(|(l, _)| std::ptr::eq(*l, list)) {
+                    let q = r.points[i];
+                    let (a, b) = (toward(id.enter, q), toward(id.leave, q));
+                    // (A point for two vertices: only where both exact ones are.)
+                    let same = |s: Ordering, t: Ordering| if s == t { s } else { Ordering::Equal };
+                    movable.push((list, corners(q, (same(a.0, b.0), same(a.1, b.1)))));
+                }
+            }
+        }
+        if movable.is_empty() {
+            continue;
+        }
+        let combinations: usize = movable.iter().map(|(_, c)| c.len()).product();
+        // Combination 0 is the points as they are.
+        for mut c in 1..combinations {
+            let before: Vec<Point2> = movable.iter().map(|(l, _)| r.points[l[0]]).collect();
+            for (list, candidates) in &movable {
+                let q = candidates[c % candidates.len()];
+                c /= candidates.len();
+                for &i in list.iter() {
+                    r.points[i] = q;
+                }
+            }
+            let changed = || movable.iter().flat_map(|(l, _)| l.iter().copied());
+            // A point onto a neighbour of its ring would collapse an edge: not taken.
+            let collapses = changed().any(|i| {
+                let ring = r.starts.partition_point(|&s| s <= i) - 1;
+                let (s, e) = (r.starts[ring], r.starts[ring + 1]);
+                let prev = if i == s { e - 1 } else { i - 1 };
+                let next = if i + 1 == e { s } else { i + 1 };
+                r.points[prev] == r.points[i] || r.points[next] == r.points[i]
+            });
+            // Taken when the pair passes and no pair that passed fails (the pair
+            // itself first: most candidates fail there).
+            let taken = !collapses && passes(r, pairs, k, sides) && {
+                now.clear();
+                now.extend(changed().flat_map(|i| pairs_at(i).iter().map(|&m| m as usize)));
+                now.sort_unstable();
+                now.dedup();
+                now.iter().all(|&m| fails[m] || passes(r, pairs, m, sides))
+            };
+            if taken {
+                // (A pair that failed may pass now.)
+                for &m in &now {
+                    if fails[m] {
+                        fails[m] = !passes(r, pairs, m, sides);
+                    }
+                }
+                touched_rings.extend(changed().map(|i| r.starts.partition_point(|&s| s <= i) - 1));
+                r.nudged += changed().count();
+                break;
+            }
+            for ((list, _), q) in movable.iter().zip(before) {
+                for &i in list.iter() {
+                    r.points[i] = q;
+                }
+            }
+        }
+    }
+    failing.retain(|&k| fails[k]);
+    touched_rings.sort_unstable();
+    touched_rings.dedup();
+    for ring in touched_rings {
+        r.start_at_lowest(ring);
+    }
+}
+
+/// The float points around an exact point, from its rounded point `q` and the exact
+/// point's side of it per axis: `q` first, then the neighbours towards it.
+fn corners(q: Point2, (tx, ty): Toward) -> Vec<Point2> {
+    let step = |v: f64, t: Ordering| match t {
+        Ordering::Less => Some(down(v)),
+        Ordering::Greater => Some(up(v)),
+        Ordering::Equal => None,
+    };
+    let xs: Vec<f64> = std::iter::once(q.x).chain(step(q.x, tx)).collect();
+    let ys: Vec<f64> = std::iter::once(q.y).chain(step(q.y, ty)).collect();
+    ys.iter()
+        .flat_map(|&y| xs.iter().map(move |&x| Point2::new(x, y)))
+        .collect()
+}
