@@ -553,6 +553,11 @@ proptest! {
                     let out = boolean_with(&a, &b, op, &opts).unwrap();
                     let problems = validity_problems(&out).unwrap();
                     prop_assert!(problems.is_empty(), "{:?} {:?} keep {}: {:?}", op, fill_rule, keep_collinear, problems);
+                    // The same output from the same rings in another order (where the
+                    // check moved points off their nearest floats too).
+                    let again = boolean_with(&reordered(&a, 2), &reordered(&b, 3), op, &opts).unwrap();
+                    prop_assert_eq!(&out, &again, "{:?} {:?} keep {}", op, fill_rule, keep_collinear);
+                    prop_assert!(in_canonical_order(&out), "{:?} {:?} keep {}", op, fill_rule, keep_collinear);
                     if fill_rule == FillRule::EvenOdd {
                         let want = exact[k].to_f64().unwrap();
                         let got = area(&out);

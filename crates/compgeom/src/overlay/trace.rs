@@ -43,7 +43,7 @@
 //! sorts at vertices of degree > 2, plus, with several components, the strips (O(V + E)
 //! and a few tests per component on map-like data) or the hole sweep.
 use super::boolean::{oriented_segments, FillRule};
-use super::rounding::{failing_rings, PointIds, RoundedRings, REPAIRS};
+use super::rounding::{failing_rings, ExactPoints, PointIds, RoundedRings, REPAIRS};
 use crate::dcel::{
     compare_y_filtered, faces_left_of, side, without_cancelling, Carrier, Flat, Rounded,
 };
@@ -910,14 +910,21 @@ fn traced(
     for &k in &collapsed {
         suspect[k] = true;
     }
-    let toward = |v: u32, q: Point2| {
-        let (e, q) = (exact(v), ExactPoint::Input(q));
-        (e.compare_x(&q), e.compare_y(&q))
-    };
+    // Points are moved off their nearest floats only where no three vertices of a ring
+    // rounded onto one point: which two of them the tracing merged depends on where it
+    // started the ring, and the points moved should not (those results are united
+    // again anyway).
+    let exact_points = collapsed.is_empty().then_some(ExactPoints {
+        toward: |v: u32, q: Point2| {
+            let (e, q) = (exact(v), ExactPoint::Input(q));
+            (e.compare_x(&q), e.compare_y(&q))
+        },
+        order: |u: u32, v: u32| exact(u).compare_xy(&exact(v)),
+    });
     let failing = failing_rings(
         &mut rounded,
         |a, b, c| orient_exact(&exact(a), &exact(b), &exact(c)),
-        toward,
+        exact_points,
     );
     for ring in failing {
         if ring < own_rings {
@@ -930,7 +937,20 @@ fn traced(
         .into_iter()
         .zip(suspect)
         .filter_map(|((shell, holes), suspect)| {
-            let ring = |k: usize| rounded.points[rounded.starts[k]..rounded.starts[k + 1]].to_vec();
+            // Each ring from its lowest point (x, then y). The rings start at the rounded
+            // point of their exact lowest vertex, which is not always the lowest rounded
+            // point: rounding can make two x equal and reverse their points' y order,
+            // and the check may have moved points.
+            let ring = |k: usize| {
+                let pts = &rounded.points[rounded.starts[k]..rounded.starts[k + 1]];
+                let lowest = (0..pts.len())
+                    .min_by(|&i, &j| {
+                        let (p, q) = (pts[i], pts[j]);
+                        p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
+                    })
+                    .unwrap_or(0);
+                [&pts[lowest..], &pts[..lowest]].concat()
+            };
             shell.map(|s| {
                 (
                     Polygon::new(ring(s), holes.into_iter().map(ring).collect()),

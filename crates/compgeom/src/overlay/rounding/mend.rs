@@ -1,7 +1,7 @@
 //! Mending the pairs that fail the rounding check (see the parent module): a crossing
 //! may take any float point around its exact one, not only the nearest.
 
-use super::{down, passes, up, ExactSides, Pair, PointIds, RoundedRings, Toward};
+use super::{down, passes, up, ExactPoints, ExactSides, Pair, PointIds, RoundedRings, Toward};
 use crate::kernel::{Orientation, Point2};
 use std::cmp::Ordering;
 
@@ -20,15 +20,16 @@ use std::cmp::Ordering;
 /// on its side (the exact point is a convex combination of them, and the side is
 /// linear in each end), so a pair that fails on a side flip can always be made to pass
 /// alone; a pair whose exact vertex is on the edge's line cannot. Pairs are taken in
-/// the order of their points' coordinates, each vertex's candidates in a fixed order,
-/// so the result does not depend on how the arrangement numbered things.
+/// the order of their exact vertices, each vertex's candidates in a fixed order, so the
+/// result does not depend on how the arrangement numbered things.
 pub(super) fn nudge(
     r: &mut RoundedRings,
     pairs: &[Pair],
     failing: &mut Vec<usize>,
     sides: &mut ExactSides<impl Fn(u32, u32, u32) -> Orientation>,
-    toward: &impl Fn(u32, Point2) -> Toward,
+    exact: &ExactPoints<impl Fn(u32, Point2) -> Toward, impl Fn(u32, u32) -> Ordering>,
 ) {
+    let toward = &exact.toward;
     // The pairs each point is in (as the point or an end of the edge).
     let n = r.points.len();
     let mut starts = vec![0u32; n + 1];
@@ -113,14 +114,20 @@ pub(super) fn nudge(
             }
         }
     }
-    let key = |p: Point2| (p.x, p.y);
+    // In the order of the pairs' exact vertices (the point's, the edge's ends).
     let mut order = failing.clone();
     order.sort_by(|&k, &l| {
-        let points = |(x, e): Pair| [r.points[x as usize], r.points[e.i], r.points[e.j]].map(key);
-        let (a, b) = (points(pairs[k]), points(pairs[l]));
+        let vertices = |(x, e): Pair| [r.ids[x as usize].enter, e.a, e.b];
+        let (a, b) = (vertices(pairs[k]), vertices(pairs[l]));
         a.iter()
             .zip(&b)
-            .map(|(p, q)| p.0.total_cmp(&q.0).then(p.1.total_cmp(&q.1)))
+            .map(|(&u, &v)| {
+                if u == v {
+                    Ordering::Equal
+                } else {
+                    (exact.order)(u, v)
+                }
+            })
             .find(|o| o.is_ne())
             .unwrap_or(Ordering::Equal)
     });
@@ -128,7 +135,6 @@ pub(super) fn nudge(
     for &k in failing.iter() {
         fails[k] = true;
     }
-    let mut touched_rings = Vec::new();
     let mut now: Vec<usize> = Vec::new();
     for k in order {
         if !fails[k] {
@@ -188,7 +194,6 @@ pub(super) fn nudge(
                         fails[m] = !passes(r, pairs, m, sides);
                     }
                 }
-                touched_rings.extend(changed().map(|i| r.starts.partition_point(|&s| s <= i) - 1));
                 r.nudged += changed().count();
                 break;
             }
@@ -200,11 +205,6 @@ pub(super) fn nudge(
         }
     }
     failing.retain(|&k| fails[k]);
-    touched_rings.sort_unstable();
-    touched_rings.dedup();
-    for ring in touched_rings {
-        r.start_at_lowest(ring);
-    }
 }
 
 /// The float points around an exact point, from its rounded point `q` and the exact

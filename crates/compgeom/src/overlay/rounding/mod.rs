@@ -162,20 +162,6 @@ impl RoundedRings {
     fn moved(&self, i: usize) -> bool {
         self.ids[i].moved
     }
-
-    /// Ring `k` rotated to start at its lowest point (smallest x, then smallest y), as
-    /// every ring does (after [`nudge`] moved one of its points).
-    fn start_at_lowest(&mut self, k: usize) {
-        let (s, e) = (self.starts[k], self.starts[k + 1]);
-        let lowest = (s..e)
-            .min_by(|&i, &j| {
-                let (p, q) = (self.points[i], self.points[j]);
-                p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
-            })
-            .unwrap_or(s);
-        self.points[s..e].rotate_left(lowest - s);
-        self.ids[s..e].rotate_left(lowest - s);
-    }
 }
 
 /// The gap above `|v|` (0 for a point that did not move: it stays where it is).
@@ -269,6 +255,16 @@ fn meets(a: Point2, b: Point2, c: Point2, (hx, hy): (f64, f64)) -> bool {
 /// `exact.y` vs `rounded.y)`.
 pub(super) type Toward = (Ordering, Ordering);
 
+/// What [`nudge`] asks of the exact vertices: `toward(vertex, q)`, the [`Toward`] of
+/// its exact point from float point `q`, and `order(u, v)`, the lexicographic (x, then
+/// y) order of two vertices' exact points (distinct vertices are distinct points: the
+/// order in which failing pairs are mended is then the same however the arrangement
+/// numbered them).
+pub(super) struct ExactPoints<T, O> {
+    pub(super) toward: T,
+    pub(super) order: O,
+}
+
 /// The rings near which rounding may not have kept the result's topology (module docs;
 /// each ring once or more, in no order), after moving points that fail to other floats
 /// around their exact ones where that makes them pass.
@@ -285,7 +281,7 @@ pub(super) type Toward = (Ordering, Ordering);
 pub(super) fn failing_rings(
     r: &mut RoundedRings,
     exact_side: impl Fn(u32, u32, u32) -> Orientation,
-    toward: impl Fn(u32, Point2) -> Toward,
+    exact: Option<ExactPoints<impl Fn(u32, Point2) -> Toward, impl Fn(u32, u32) -> Ordering>>,
 ) -> Vec<usize> {
     if !r.ids.iter().any(|p| p.moved) {
         return Vec::new();
@@ -298,8 +294,8 @@ pub(super) fn failing_rings(
     let mut failing: Vec<usize> = (0..pairs.len())
         .filter(|&k| !passes(r, &pairs, k, &mut sides))
         .collect();
-    if !failing.is_empty() {
-        nudge(r, &pairs, &mut failing, &mut sides, &toward);
+    if let Some(exact) = exact.filter(|_| !failing.is_empty()) {
+        nudge(r, &pairs, &mut failing, &mut sides, &exact);
     }
     let ring_of = |i: usize| r.starts.partition_point(|&s| s <= i) - 1;
     failing
@@ -454,8 +450,9 @@ struct ExactSides<F> {
 
 #[cfg(test)]
 mod tests {
-    use super::{failing_rings, meets, PointIds, RoundedRings, Toward};
+    use super::{failing_rings, meets, ExactPoints, PointIds, RoundedRings, Toward};
     use crate::kernel::{orient2d, Orientation, Point2};
+    use std::cmp::Ordering;
 
     fn p(x: f64, y: f64) -> Point2 {
         Point2::new(x, y)
@@ -505,10 +502,16 @@ mod tests {
     /// given per id (f64 points stand for exact ones here).
     fn checked(list: &[&[(Point2, u32, bool)]], exact: &[(u32, Point2)]) -> (RoundedRings, bool) {
         let at = |id: u32| exact.iter().find(|e| e.0 == id).expect("exact point").1;
-        let toward = |id: u32, q: Point2| (at(id).x.total_cmp(&q.x), at(id).y.total_cmp(&q.y));
+        let exact = ExactPoints {
+            toward: |id: u32, q: Point2| (at(id).x.total_cmp(&q.x), at(id).y.total_cmp(&q.y)),
+            order: |u: u32, v: u32| {
+                let (p, q) = (at(u), at(v));
+                p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
+            },
+        };
         let mut r = rings(list);
-        let kept =
-            failing_rings(&mut r, |a, b, c| orient2d(at(a), at(b), at(c)), toward).is_empty();
+        let side = |a, b, c| orient2d(at(a), at(b), at(c));
+        let kept = failing_rings(&mut r, side, Some(exact)).is_empty();
         (r, kept)
     }
 
@@ -611,8 +614,11 @@ mod tests {
         let far =
             |a: u32, b: u32, c: u32| -> Orientation { panic!("no pair is near: {a} {b} {c}") };
         let tip_far = tip(1.0, true);
-        let no_move = |_: u32, _: Point2| -> Toward { panic!("nothing fails") };
-        assert!(failing_rings(&mut rings(&[&sq, &tip_far]), far, no_move).is_empty());
+        let no_move = ExactPoints {
+            toward: |_: u32, _: Point2| -> Toward { panic!("nothing fails") },
+            order: |_: u32, _: u32| -> Ordering { panic!("nothing fails") },
+        };
+        assert!(failing_rings(&mut rings(&[&sq, &tip_far]), far, Some(no_move)).is_empty());
         // The square's corner moved (exactly a little right of x = 2): its side, rounded
         // to x = 2, passes the unmoved tip an ulp away on the same side (kept), or its
         // rounded side crosses the tip (not kept).
