@@ -296,8 +296,10 @@
 //! (one float away per axis at most) where that puts every near vertex on its side
 //! (`nudge`), and a vertex exactly on an edge's line passes when only one of the three
 //! points moved. Results still united again (`BOOLEAN_OP`, `BOOLEAN_INPUT=jts`): the
-//! dissolve 0 (was 1), JTS×52 intersection 2, union 7, difference 2, xor 29 of 52
-//! (xor was 48; its slivers thinner than a float gap collapse). The check had also
+//! dissolve 0 (was 1), JTS×52 intersection 2, union 7, difference 4, xor 33 of 52
+//! (xor was 48; its slivers thinner than a float gap collapse; counts after 9d839c5,
+//! which moves nothing where three vertices of a ring round onto one point; the times
+//! below are from before it, with difference 2 and xor 29). The check had also
 //! started costing 10 ms on the star 1e5 intersection (a list of every edge: its fresh
 //! pages), now gone. Full table, one run: stars 1e3 0.90–1.02 / 0.91–0.99, 1e4
 //! 0.57–0.63 / 0.56–0.62, 1e5 0.66–0.74 / 0.62–0.70; squares 0.65 / 0.69; water
