@@ -268,6 +268,25 @@
 //! three divisions of the rounding (`t_hi`, `t_lo`, `e_t`'s bound) as products with one
 //! reciprocal of the denominator (timing only, the error bound not redone): 7.2–7.7 ms
 //! against 7.1–7.4, no gain, so that lead is closed.
+//!
+//! Session 33 (quiet machine, load ~1.0), three full runs per thread count, ratio =
+//! geo / compgeom, every row above 1:
+//!
+//! | input | threads | count vs geo count() | find vs geo collect() | count vs O(n²) count | find vs O(n²) collect |
+//! |---|---:|---|---|---|---|
+//! | short random 1e5 (51 003 points) | 1 | 6.44–6.60× | 4.39–5.31× | 559–568× | 368–443× |
+//! | long random 1e3 (251 108 points) | 1 | 1.65–1.66× | 1.25–1.30× (7.7–8.0 ms) | 1.35–1.37× | 1.04–1.08× |
+//! | 100×100 grid 1e4 (27 344 points, 916 overlaps) | 1 | 1.30–1.33× | 1.38–1.46× | 9.35–9.45× | 9.40–9.74× |
+//! | short random 1e5 | 2 | 7.46–9.34× | 6.51–7.57× | 632–825× | 542–632× |
+//! | long random 1e3 | 2 | 1.84–2.84× | 1.32–1.67× | 1.53–2.33× | 1.11–1.38× |
+//! | 100×100 grid 1e4 | 2 | 1.51–1.67× | 1.81–1.94× | 10.7–11.9× | 12.0–12.8× |
+//!
+//! Growth of the dense case (`COMPGEOM_BENCH_LONG_N`, count against geo `count()`, one
+//! thread): n = 1e3 5.5 ms (1.64×), n = 1e4 (25.1M points) 0.567 s (1.73×); two threads
+//! at 1e4 0.293 s (3.34×). Small inputs are where compgeom is weakest: `--quick` (long
+//! n = 100, 2 410 points) find 0.69× geo `collect()`, because a call there pays about 40
+//! page faults and a heap trim (glibc gives the scratch buffers back each call; perf: 35%
+//! of the driver's time at n = 200 is in page faults), which a 0.1 ms call cannot absorb.
 
 use crate::util::{best_of, Rng};
 use compgeom::intersect::{count_intersections, find_intersections, sweep_intersections};
