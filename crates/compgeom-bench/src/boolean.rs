@@ -735,9 +735,10 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 }
 
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
-/// `BOOLEAN_INPUT=star|squares|water|jts|dissolve`, `BOOLEAN_REPS` calls except for the
-/// squares): run one contender on the star union, the squares input, the water map
-/// union, the unions of the 52 JTS pairs (or another `BOOLEAN_OP`) or the GEOS-837
+/// `BOOLEAN_INPUT=star|squares|water|jts|ngons|dissolve`, `BOOLEAN_REPS` calls except
+/// for the squares): run one contender on the star union, the squares input, the water
+/// map union, the unions of the 52 JTS pairs (or another `BOOLEAN_OP`), the same
+/// operation on 52 pairs of regular `BOOLEAN_K`-gons (default 4) or the GEOS-837
 /// dissolve (`union_all`), for instruction counts (`valgrind --tool=callgrind`). The dissolve also takes
 /// `BOOLEAN_ONE=all` (the three alternated, one call each per round, as the table
 /// does) and prints each contender's median and best call ([`disturbed_rounds`]).
@@ -797,9 +798,35 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         disturbed_rounds(reps, &calls);
         return Ok(());
     }
-    if std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "jts") {
-        let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
-        let jts = real_maps::jts_robust_pairs(&dir);
+    let input = std::env::var("BOOLEAN_INPUT").unwrap_or_default();
+    if input == "jts" || input == "ngons" {
+        let jts = if input == "jts" {
+            let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
+            real_maps::jts_robust_pairs(&dir)
+        } else {
+            // 52 copies of two regular k-gons of radius 1, centres 0.5 apart (two
+            // crossings): the cost of a call on a small input.
+            let k: usize = std::env::var("BOOLEAN_K")
+                .ok()
+                .and_then(|s| s.parse().ok())
+                .unwrap_or(4);
+            let ngon = |cx: f64| {
+                let pts = (0..k)
+                    .map(|i| {
+                        let a = std::f64::consts::TAU * i as f64 / k as f64;
+                        Point2::new(cx + a.cos(), a.sin())
+                    })
+                    .collect();
+                MultiPolygon(vec![Polygon::new(pts, vec![])])
+            };
+            (0..52)
+                .map(|_| real_maps::MapPair {
+                    name: format!("{k}-gons"),
+                    a: ngon(0.0),
+                    b: ngon(0.5),
+                })
+                .collect()
+        };
         let (io, geo) = (io_pairs(&jts), geo_pairs(&jts));
         // `BOOLEAN_OP=intersection|difference|xor` for another operation than the union.
         let name = std::env::var("BOOLEAN_OP").unwrap_or_else(|_| "union".into());

@@ -45,25 +45,32 @@ use kiddo::{Chebyshev, SquaredEuclidean};
 use rstar::primitives::{GeomWithData, Line};
 use rstar::{RTree, AABB};
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Duration;
 
 /// Counts live heap bytes, so that memory per point can be measured for every library.
 struct Counting;
 static LIVE: AtomicUsize = AtomicUsize::new(0);
+static COUNTING: AtomicBool = AtomicBool::new(false);
 
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        LIVE.fetch_add(l.size(), Ordering::Relaxed);
+        if COUNTING.load(Ordering::Relaxed) {
+            LIVE.fetch_add(l.size(), Ordering::Relaxed);
+        }
         System.alloc(l)
     }
     unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        LIVE.fetch_sub(l.size(), Ordering::Relaxed);
+        if COUNTING.load(Ordering::Relaxed) {
+            LIVE.fetch_sub(l.size(), Ordering::Relaxed);
+        }
         System.dealloc(p, l)
     }
     unsafe fn realloc(&self, p: *mut u8, l: Layout, n: usize) -> *mut u8 {
-        LIVE.fetch_add(n, Ordering::Relaxed);
-        LIVE.fetch_sub(l.size(), Ordering::Relaxed);
+        if COUNTING.load(Ordering::Relaxed) {
+            LIVE.fetch_add(n, Ordering::Relaxed);
+            LIVE.fetch_sub(l.size(), Ordering::Relaxed);
+        }
         System.realloc(p, l, n)
     }
 }
@@ -76,8 +83,10 @@ static GLOBAL: Counting = Counting;
 fn build<T>(runs: usize, mut f: impl FnMut() -> T) -> (T, Duration, usize) {
     let t = best_of(runs, &mut f);
     let before = LIVE.load(Ordering::Relaxed);
+    COUNTING.store(true, Ordering::SeqCst);
     let s = f();
-    let bytes = LIVE.load(Ordering::Relaxed).saturating_sub(before);
+    COUNTING.store(false, Ordering::SeqCst);
+    let bytes = LIVE.load(Ordering::Relaxed).wrapping_sub(before);
     (s, t, bytes)
 }
 
