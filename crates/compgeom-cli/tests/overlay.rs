@@ -93,6 +93,7 @@ fn overlay_labels_faces() {
     assert_eq!(v["vertices"], 10);
     assert_eq!(v["edges"], 12);
     assert_eq!(v["verified"], true);
+    assert_eq!(v["rounding_suspect_faces"], serde_json::json!([]));
     let faces = v["faces"].as_array().unwrap();
     assert_eq!(faces.len(), 4);
     assert!(faces[0]["polygon"].is_null());

@@ -9,7 +9,7 @@ use crate::output;
 use clap::Args;
 use compgeom::dcel::FaceId;
 use compgeom::io::{to_geojson_value, Shape};
-use compgeom::overlay::overlay_polygons;
+use compgeom::overlay::{mend_rounding, overlay_polygons};
 use compgeom::render::{Layer, Picture, Style};
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -21,10 +21,15 @@ JSON output (--format json, the default) is one object:
               \"a\": <index of A's polygon containing the face, or null>,
               \"b\": <the same for B>}, ...]; the unbounded face first. A face's polygon
             is its outer boundary (counter-clockwise) and one hole per inner boundary
-            (clockwise), every vertex kept; crossings are rounded to the nearest f64.
+            (clockwise), every vertex kept; crossings are rounded to the nearest f64,
+            or one float from it per axis where that keeps the edges apart.
   vertices  number of vertices of the overlay
   edges     number of edges of the overlay
   verified  true; present only with --verify (the DCEL's invariants were checked)
+  rounding_suspect_faces
+            present only with --verify: indices of the faces near which rounding to
+            f64 may have made edges touch or cross (faces thinner than a float; also
+            printed as a warning); usually empty
 
 Polygons are numbered in reading order (a MultiPolygon feature gives several). Where
 polygons of one layer overlap, `a`/`b` is the lowest index containing the face.
@@ -55,9 +60,21 @@ pub struct OverlayArgs {
 pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
     let a = read_layer(&args.input)?;
     let b = read_layer(&other_input(&args.input, &args.b))?;
-    let d = overlay_polygons(&a, &b)?;
-    if args.output.verify {
+    let mut d = overlay_polygons(&a, &b)?;
+    // With --verify: the structure's invariants, and the faces near which rounding may
+    // have made edges meet (the overlay mended what it could; listed, not an error).
+    let suspects = if args.output.verify {
         d.validate()?;
+        mend_rounding(&mut d)
+    } else {
+        Vec::new()
+    };
+    if !suspects.is_empty() {
+        eprintln!(
+            "warning: rounding to f64 may have made edges meet near {} face(s): {:?}",
+            suspects.len(),
+            suspects.iter().map(|f| f.0).collect::<Vec<_>>()
+        );
     }
     let mut faces = Vec::new();
     let mut features = Vec::new();
@@ -82,6 +99,8 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
                 json!({"faces": faces, "vertices": d.vertex_count(), "edges": d.edge_count()});
             if args.output.verify {
                 v["verified"] = json!(true);
+                v["rounding_suspect_faces"] =
+                    json!(suspects.iter().map(|f| f.0).collect::<Vec<_>>());
             }
             v
         }

@@ -84,7 +84,9 @@ impl FaceId {
 pub struct Vertex<V> {
     /// The exact point.
     pub point: ExactPoint,
-    /// The nearest `f64` point (equal to the point for input points).
+    /// The `f64` point the vertex is drawn at: the nearest one (equal to the point for
+    /// input points), or for a crossing in an overlay one float from it per axis where
+    /// that keeps the edges apart ([`crate::overlay::mend_rounding`]).
     pub approx: Point2,
     /// One half-edge with this origin, `None` for an isolated vertex.
     pub incident: Option<HalfEdgeId>,

@@ -156,7 +156,9 @@ fn ring_is_ccw<V, E, F>(
 ) -> bool {
     let point = |h: HalfEdgeId| {
         let v = d.vertex(d.half_edge(h).origin);
-        (v.point, Rounded::of(&v.point, v.approx))
+        // (The nearest point, not `v.approx`: the filter needs rounding to nearest, and
+        // `mend_rounding` may have moved a crossing one float from it.)
+        (v.point, Rounded::of(&v.point, v.point.approx()))
     };
     let mut low = 0;
     let mut best = point(ring[0]);

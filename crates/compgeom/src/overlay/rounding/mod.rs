@@ -60,14 +60,21 @@
 //! moved in a result where three vertices of a ring rounded onto one point). One
 //! union has always sufficed (the bound [`REPAIRS`] is a guard: past it the result is
 //! returned as it is).
+//!
+//! The faces of an overlay go through the same check and mending ([`mend_faces`]); they
+//! are not united again (the faces are a partition with labels): the faces near what
+//! is left are reported.
 
 use crate::kernel::{orient2d, Orientation, Point2};
 use grid::Grid;
 use mend::nudge;
 use std::cmp::Ordering;
 
+mod faces;
 mod grid;
 mod mend;
+
+pub(super) use faces::mend_faces;
 
 /// At most this many re-unions of a result whose rounding may have broken it (each
 /// checked as the first one was); the last one is returned as it is.
