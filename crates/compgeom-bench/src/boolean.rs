@@ -313,6 +313,27 @@
 //! sides of near pairs (`orient_exact` on crossings within a float gap: the Dyadic
 //! fallback) and the 29 re-unions dominate. Not met: the JTS rows and the dissolve
 //! (goal: within 1.5× of i_overlay and faster than geo).
+//!
+//! Session 33. Exact signs of constructed points now try double-double arithmetic with
+//! an error bound before the big numbers (`kernel::crossing::decide`): every near-line
+//! sign the `f64` filter left open in a test of 40 000 was decided there. JTS×52 (one
+//! contender alone, 300 rounds): xor 2.95 → 2.64 ms, difference 1.48 → 1.32, union
+//! 1.53 → 1.46. The check's near pairs of a small result are found by testing every
+//! box pair (no grid) when that is at most 512 tests: `BOOLEAN_INPUT=ngons` (52 pairs
+//! of regular k-gons, two crossings; µs per call, ours / i_overlay / geo) k = 4 3.1 →
+//! 2.7 / 1.2 / 1.4, k = 50 9.0 / 7.4 / 7.8 (unchanged: the grid there). Tried and not
+//! kept (no gain measured): the grid of moved items listing long edges only in the
+//! cells along them (on the dissolve only 1 of 150 moved edges spans more than one row
+//! and column: the moved items cluster, it is the per-point cost that counts, about 25
+//! ns for each of 1 189 points and edges), a finer grid (2–4 cells per point: ±3%), a
+//! sorted list instead of a hash set for the context's points. What the time is on the
+//! JTS union now (perf): the noding 42%, the check 22% (its near-pair search 15%), the
+//! tracing 14%, about 100 allocations a call against i_overlay's 23 and geo's 31 (a
+//! counting allocator). Full table, one run after the session's changes: stars 1e3
+//! 0.92–1.06 / 0.91–1.03, 1e4 0.50–0.64 / 0.57–0.62, 1e5 0.62–0.84 / 0.65–0.76;
+//! squares 0.68 / 0.67; water 0.79–0.88 / 0.78–0.95; JTS×52 intersection 1.27 / 1.26,
+//! union 1.35 / 1.31, difference 1.30 / 1.29, xor 2.29 / 2.24; dissolve 1.40 / 1.27
+//! (0.55 ms against 0.39 and 0.43). Still not met: the JTS rows and the dissolve.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
