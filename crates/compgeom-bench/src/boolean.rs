@@ -830,7 +830,8 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
             let k: usize = std::env::var("BOOLEAN_K")
                 .ok()
                 .and_then(|s| s.parse().ok())
-                .unwrap_or(4);
+                .unwrap_or(4)
+                .max(3);
             let ngon = |cx: f64| {
                 let pts = (0..k)
                     .map(|i| {

@@ -79,14 +79,15 @@ unsafe impl GlobalAlloc for Counting {
 static GLOBAL: Counting = Counting;
 
 /// Build with `f`, returning the structure, the best build time of `runs`, and the heap
-/// bytes it holds.
+/// bytes it holds (the bytes allocated and not freed while one more build runs, by all
+/// threads; memory allocated before it and freed during it counts against it).
 fn build<T>(runs: usize, mut f: impl FnMut() -> T) -> (T, Duration, usize) {
     let t = best_of(runs, &mut f);
     let before = LIVE.load(Ordering::Relaxed);
     COUNTING.store(true, Ordering::SeqCst);
     let s = f();
     COUNTING.store(false, Ordering::SeqCst);
-    let bytes = LIVE.load(Ordering::Relaxed).wrapping_sub(before);
+    let bytes = LIVE.load(Ordering::Relaxed).saturating_sub(before);
     (s, t, bytes)
 }
 

@@ -9,7 +9,7 @@ use crate::output;
 use clap::Args;
 use compgeom::dcel::FaceId;
 use compgeom::io::{to_geojson_value, Shape};
-use compgeom::overlay::{mend_rounding, overlay_polygons};
+use compgeom::overlay::{overlay_polygons, rounding_suspects};
 use compgeom::render::{Layer, Picture, Style};
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -60,12 +60,12 @@ pub struct OverlayArgs {
 pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
     let a = read_layer(&args.input)?;
     let b = read_layer(&other_input(&args.input, &args.b))?;
-    let mut d = overlay_polygons(&a, &b)?;
+    let d = overlay_polygons(&a, &b)?;
     // With --verify: the structure's invariants, and the faces near which rounding may
     // have made edges meet (the overlay mended what it could; listed, not an error).
     let suspects = if args.output.verify {
         d.validate()?;
-        mend_rounding(&mut d)
+        rounding_suspects(&d)
     } else {
         Vec::new()
     };

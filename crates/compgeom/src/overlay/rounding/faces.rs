@@ -22,29 +22,60 @@ fn moved(p: &ExactPoint, q: Point2) -> bool {
     }
 }
 
-/// Checks the rounded points of `d`'s vertices ([`failing_rings`]) and moves crossings
-/// to other floats around their exact points where that makes a failing pair pass.
-/// Returns the faces near which rounding may still have made edges touch or cross
-/// (each once, ascending): see [`crate::overlay::mend_rounding`].
+/// At most this many passes of [`mend_faces`] (each checks again after moving points:
+/// a point moved can let another failing pair be mended); then the points stay.
+const PASSES: usize = 8;
+
+/// Checks the rounded points of `d`'s vertices ([`failing_rings`]) and, pass after
+/// pass, moves crossings to other floats around their exact points where that makes a
+/// failing pair pass, until a pass moves nothing. Returns the faces near which
+/// rounding may still have made edges touch or cross (each once, ascending): see
+/// [`crate::overlay::mend_rounding`]. A second call moves nothing more (unless the
+/// first stopped at [`PASSES`]).
 pub(in crate::overlay) fn mend_faces<V, E, F>(d: &mut Dcel<V, E, F>) -> Vec<FaceId> {
+    for _ in 0..PASSES {
+        let (suspect, moves) = checked(d, true);
+        if moves.is_empty() {
+            return suspect;
+        }
+        for (v, q) in moves {
+            d.vertices[v].approx = q;
+        }
+    }
+    checked(d, false).0
+}
+
+/// The faces near which rounding may have made edges touch or cross, as `d` is (no
+/// point moved).
+pub(in crate::overlay) fn suspect_faces<V, E, F>(d: &Dcel<V, E, F>) -> Vec<FaceId> {
+    checked(d, false).0
+}
+
+/// One pass of the check over every boundary cycle of `d`: the suspect faces, and
+/// (with `mend`) the vertices to move and where.
+fn checked<V, E, F>(d: &Dcel<V, E, F>, mend: bool) -> (Vec<FaceId>, Vec<(usize, Point2)>) {
     let mut r = RoundedRings {
         starts: vec![0],
         ..RoundedRings::default()
     };
     let mut owner: Vec<FaceId> = Vec::new();
-    // Faces with a cycle the check cannot follow (three vertices on one point, or fewer
-    // than three points left: a face thinner than a float) are suspect as they are; the
-    // other cycles are checked without them (a point moved there can only add to what
-    // is suspect already).
+    // Faces with a cycle whose consecutive points the check cannot merge (three
+    // vertices on one point, or fewer than three points left: a face thinner than a
+    // float) are suspect as they are. Such a cycle still goes into the check with every
+    // vertex a point of its own (its edges of no length meet everything near), so that
+    // what comes near its edges is found: the faces on their other sides may be
+    // checked ones.
     let mut collapsed: Vec<FaceId> = Vec::new();
     for f in d.face_ids() {
         for start in d.face_cycles(f) {
             let mut ok = true;
             let (mut pts, mut ids): (Vec<Point2>, Vec<PointIds>) = (Vec::new(), Vec::new());
+            let mut raw: Vec<(Point2, PointIds)> = Vec::new();
             for h in d.cycle(start) {
                 let v = d.half_edge(h).origin;
                 let vertex = d.vertex(v);
                 let id = PointIds::of(v.0 as u32, moved(&vertex.point, vertex.approx));
+                raw.push((vertex.approx, id));
                 match ids.last_mut() {
                     Some(last) if pts.last() == Some(&vertex.approx) => ok &= last.merge(id),
                     _ => {
@@ -61,7 +92,7 @@ pub(in crate::overlay) fn mend_faces<V, E, F>(d: &mut Dcel<V, E, F>) -> Vec<Face
             }
             if !ok || pts.len() < 3 {
                 collapsed.push(f);
-                continue;
+                (pts, ids) = raw.into_iter().unzip();
             }
             r.points.extend_from_slice(&pts);
             r.ids.extend_from_slice(&ids);
@@ -69,32 +100,34 @@ pub(in crate::overlay) fn mend_faces<V, E, F>(d: &mut Dcel<V, E, F>) -> Vec<Face
             owner.push(f);
         }
     }
-    let failing = {
-        let vertices = &d.vertices;
-        let exact = |v: u32| &vertices[v as usize].point;
-        let exact_points = Some(ExactPoints {
-            toward: |v: u32, q: Point2| {
-                let (e, q) = (exact(v), ExactPoint::Input(q));
-                (e.compare_x(&q), e.compare_y(&q))
-            },
-            order: |u: u32, v: u32| exact(u).compare_xy(exact(v)),
-        });
-        failing_rings(
-            &mut r,
-            |a, b, c| orient_exact(exact(a), exact(b), exact(c)),
-            exact_points,
-        )
-    };
-    // The moved points back into the vertices (every occurrence of a vertex moved
-    // with the others).
+    let vertices = &d.vertices;
+    let exact = |v: u32| &vertices[v as usize].point;
+    let exact_points = mend.then_some(ExactPoints {
+        toward: |v: u32, q: Point2| {
+            let (e, q) = (exact(v), ExactPoint::Input(q));
+            (e.compare_x(&q), e.compare_y(&q))
+        },
+        order: |u: u32, v: u32| exact(u).compare_xy(exact(v)),
+    });
+    let failing = failing_rings(
+        &mut r,
+        |a, b, c| orient_exact(exact(a), exact(b), exact(c)),
+        exact_points,
+    );
+    // The points moved (every occurrence of a vertex moved with the others).
+    let mut moves = Vec::new();
     for (q, id) in r.points.iter().zip(&r.ids) {
         for v in [id.enter, id.leave] {
-            d.vertices[v as usize].approx = *q;
+            if vertices[v as usize].approx != *q {
+                moves.push((v as usize, *q));
+            }
         }
     }
+    moves.sort_unstable_by_key(|&(v, _)| v);
+    moves.dedup_by_key(|&mut (v, _)| v);
     let mut suspect: Vec<FaceId> = failing.into_iter().map(|k| owner[k]).collect();
     suspect.extend(collapsed);
     suspect.sort_unstable_by_key(|f| f.0);
     suspect.dedup();
-    suspect
+    (suspect, moves)
 }

@@ -74,7 +74,7 @@ mod faces;
 mod grid;
 mod mend;
 
-pub(super) use faces::mend_faces;
+pub(super) use faces::{mend_faces, suspect_faces};
 
 /// At most this many re-unions of a result whose rounding may have broken it (each
 /// checked as the first one was); the last one is returned as it is.
@@ -363,7 +363,8 @@ fn near_pairs_by(r: &RoundedRings, brute_force: Option<bool>) -> Vec<Pair> {
     let mut pairs = Vec::new();
     // Few moved items against few points and edges (most results of small inputs):
     // every box against every box, cheaper than building the grid.
-    let queries = r.points.len() + r.starts.last().copied().unwrap_or(0);
+    // (Points, and edges: a ring has as many as points; collapsed edges left out.)
+    let queries = 2 * r.points.len();
     if brute_force.unwrap_or(queries * boxes.len() <= BRUTE_FORCE_TESTS) {
         let (edge_boxes, point_boxes) = boxes.split_at(moved_edges.len());
         let around_edges = edge_boxes.iter().copied().reduce(|a, b| a.union(&b));
