@@ -661,6 +661,24 @@ fn polygonal(wkt: &str) -> Option<MultiPolygon> {
     compgeom::io::read_polygons(wkt, compgeom::io::Format::Wkt, "case").ok()
 }
 
+/// The XML test files of the JTS and GEOS suites under `dir`, sorted.
+fn xml_suite_files(dir: &Path) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    let mut stack = vec![dir.join("jts-testxml"), dir.join("geos-xmltester")];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|x| x == "xml") {
+                files.push(p);
+            }
+        }
+    }
+    files.sort();
+    files
+}
+
 /// The polygon–polygon overlay cases of the JTS and GEOS XML test suites
 /// (`intersection`, `union`, `difference`, `symdifference` and their `…ng` variants, on
 /// two polygonal operands): the result is valid and its symmetric difference with the
@@ -676,19 +694,7 @@ fn jts_and_geos_xml_overlay_suites() {
     let Some(dir) = existing_cases_dir() else {
         return;
     };
-    let mut files = Vec::new();
-    let mut stack = vec![dir.join("jts-testxml"), dir.join("geos-xmltester")];
-    while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).unwrap() {
-            let p = e.unwrap().path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x == "xml") {
-                files.push(p);
-            }
-        }
-    }
-    files.sort();
+    let files = xml_suite_files(&dir);
     let (mut run, mut not_polygonal, mut snap_rounded) = (0, 0, 0);
     let mut failures = Vec::new();
     for f in &files {
@@ -833,19 +839,7 @@ fn jts_and_geos_xml_overlay_faces_after_rounding() {
     let Some(dir) = existing_cases_dir() else {
         return;
     };
-    let mut files = Vec::new();
-    let mut stack = vec![dir.join("jts-testxml"), dir.join("geos-xmltester")];
-    while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).unwrap() {
-            let p = e.unwrap().path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x == "xml") {
-                files.push(p);
-            }
-        }
-    }
-    files.sort();
+    let files = xml_suite_files(&dir);
     let (mut overlays, mut faces, mut meetings, mut reported) = (0, 0, 0, 0);
     for f in &files {
         let text = std::fs::read_to_string(f).unwrap();

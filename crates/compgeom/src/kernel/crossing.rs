@@ -703,6 +703,33 @@ mod tests {
             open > 5_000 && decided * 10 >= open * 9,
             "double-double decided {decided} of the {open} signs the f64 filter left open"
         );
+        // Exact zeros get no sign (at most `Equal`): three lines through (1/3, 1/3).
+        let p = |x: f64, y: f64| Point2::new(x, y);
+        let s1 = Segment2::new(p(1.0, 0.0), p(-1.0, 1.0));
+        let s2 = Segment2::new(p(0.0, 1.0), p(1.0, -1.0));
+        let s3 = Segment2::new(p(0.0, 0.0), p(1.0, 1.0));
+        let c12: ExactPoint = Crossing::new(s1, s2).unwrap().into();
+        let c13: ExactPoint = Crossing::new(s1, s3).unwrap().into();
+        let on_s3 = [p(-2.0, -2.0), p(3.0, 3.0)].map(ExactPoint::from);
+        let no_sign = |o: Option<Ordering>| matches!(o, None | Some(Ordering::Equal));
+        assert!(no_sign(orient_with::<DoubleDouble>(
+            &on_s3[0], &on_s3[1], &c12
+        )));
+        assert!(no_sign(compare_coord_with::<DoubleDouble>(
+            &c12,
+            &c13,
+            Axis::X
+        )));
+        assert!(no_sign(compare_coord_with::<DoubleDouble>(
+            &c12,
+            &c13,
+            Axis::Y
+        )));
+        let along = |k: f64| Segment2::new(p(0.0, 0.0), p(k, k));
+        assert!(no_sign(cross_sign_with::<DoubleDouble>(
+            along(1.0),
+            along(3.0)
+        )));
     }
 
     /// The fast rounding path agrees with exact rational rounding on random crossings
