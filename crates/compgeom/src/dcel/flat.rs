@@ -88,6 +88,18 @@ impl From<Vec<Point2>> for Vertices {
     }
 }
 
+/// Whether `q` differs from the exact point `p`, exactly: an input point is itself, and
+/// a crossing is `q` iff `q` lies on both its lines.
+pub(crate) fn rounded_away(p: &ExactPoint, q: Point2) -> bool {
+    match p {
+        ExactPoint::Input(a) => *a != q,
+        ExactPoint::Crossing(c) => {
+            orient2d(c.s.a, c.s.b, q) != Orientation::Collinear
+                || orient2d(c.t.a, c.t.b, q) != Orientation::Collinear
+        }
+    }
+}
+
 impl Vertices {
     /// Exact points with their nearest `f64` points (`approx[i]` is `points[i].approx()`,
     /// correctly rounded: the exact tests filter on it).
@@ -157,14 +169,7 @@ impl Vertices {
             return false;
         }
         match self {
-            Vertices::Exact { points, .. } => match &points[i] {
-                ExactPoint::Input(_) => false,
-                ExactPoint::Crossing(c) => {
-                    let q = r.point();
-                    orient2d(c.s.a, c.s.b, q) != Orientation::Collinear
-                        || orient2d(c.t.a, c.t.b, q) != Orientation::Collinear
-                }
-            },
+            Vertices::Exact { points, .. } => rounded_away(&points[i], r.point()),
             Vertices::Input(_) => false,
         }
     }

@@ -7,20 +7,8 @@
 //! (the faces are a partition with labels): the faces near it are reported.
 
 use super::{failing_rings, ExactPoints, PointIds, RoundedRings};
-use crate::dcel::{Dcel, FaceId};
-use crate::kernel::{orient2d, orient_exact, ExactPoint, Orientation, Point2};
-
-/// Whether rounding moved `p` to `q`: a crossing is on both its lines exactly when it
-/// is the crossing itself.
-fn moved(p: &ExactPoint, q: Point2) -> bool {
-    match p {
-        ExactPoint::Input(_) => false,
-        ExactPoint::Crossing(c) => {
-            orient2d(c.s.a, c.s.b, q) != Orientation::Collinear
-                || orient2d(c.t.a, c.t.b, q) != Orientation::Collinear
-        }
-    }
-}
+use crate::dcel::{rounded_away, Dcel, FaceId};
+use crate::kernel::{orient_exact, ExactPoint, Point2};
 
 /// At most this many passes of [`mend_faces`] (each checks again after moving points:
 /// a point moved can let another failing pair be mended); then the points stay.
@@ -70,12 +58,10 @@ fn checked<V, E, F>(d: &Dcel<V, E, F>, mend: bool) -> (Vec<FaceId>, Vec<(usize, 
         for start in d.face_cycles(f) {
             let mut ok = true;
             let (mut pts, mut ids): (Vec<Point2>, Vec<PointIds>) = (Vec::new(), Vec::new());
-            let mut raw: Vec<(Point2, PointIds)> = Vec::new();
             for h in d.cycle(start) {
                 let v = d.half_edge(h).origin;
                 let vertex = d.vertex(v);
-                let id = PointIds::of(v.0 as u32, moved(&vertex.point, vertex.approx));
-                raw.push((vertex.approx, id));
+                let id = PointIds::of(v.0 as u32, rounded_away(&vertex.point, vertex.approx));
                 match ids.last_mut() {
                     Some(last) if pts.last() == Some(&vertex.approx) => ok &= last.merge(id),
                     _ => {
@@ -92,7 +78,16 @@ fn checked<V, E, F>(d: &Dcel<V, E, F>, mend: bool) -> (Vec<FaceId>, Vec<(usize, 
             }
             if !ok || pts.len() < 3 {
                 collapsed.push(f);
-                (pts, ids) = raw.into_iter().unzip();
+                (pts, ids) = d
+                    .cycle(start)
+                    .map(|h| {
+                        let v = d.half_edge(h).origin;
+                        let vertex = d.vertex(v);
+                        let id =
+                            PointIds::of(v.0 as u32, rounded_away(&vertex.point, vertex.approx));
+                        (vertex.approx, id)
+                    })
+                    .unzip();
             }
             r.points.extend_from_slice(&pts);
             r.ids.extend_from_slice(&ids);
