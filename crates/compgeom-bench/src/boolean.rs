@@ -763,6 +763,9 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 /// dissolve (`union_all`), for instruction counts (`valgrind --tool=callgrind`). The dissolve also takes
 /// `BOOLEAN_ONE=all` (the three alternated, one call each per round, as the table
 /// does) and prints each contender's median and best call ([`disturbed_rounds`]).
+/// `BOOLEAN_ONE=pairs` with the JTS or n-gon pairs prints every pair's best call of the
+/// three instead ([`per_pair`]); `BOOLEAN_PAIR=text` keeps the JTS pairs whose names
+/// contain it.
 fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     let n: usize = std::env::var("BOOLEAN_N")
         .ok()
@@ -823,7 +826,11 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     if input == "jts" || input == "ngons" {
         let jts = if input == "jts" {
             let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
-            real_maps::jts_robust_pairs(&dir)
+            // `BOOLEAN_PAIR=text`: only the pairs whose names contain it.
+            let only = std::env::var("BOOLEAN_PAIR").unwrap_or_default();
+            let mut pairs = real_maps::jts_robust_pairs(&dir);
+            pairs.retain(|p| p.name.contains(&only));
+            pairs
         } else {
             // 52 copies of two regular k-gons of radius 1, centres 0.5 apart (two
             // crossings): the cost of a call on a small input.
@@ -856,6 +863,10 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
             .iter()
             .find(|o| o.0 == name)
             .ok_or("BOOLEAN_OP: intersection, union, difference or xor")?;
+        if who == "pairs" {
+            per_pair(&jts, &io, &geo, op, io_op, geo_op, reps.max(1));
+            return Ok(());
+        }
         for _ in 0..reps {
             for (k, p) in jts.iter().enumerate() {
                 match who {
@@ -900,6 +911,67 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// `BOOLEAN_ONE=pairs`: each pair's best time of `reps` calls for the three contenders
+/// (µs), worst excess over geo first: where a row's cost comes from.
+#[allow(clippy::too_many_arguments)]
+fn per_pair(
+    pairs: &[real_maps::MapPair],
+    io: &[(IoPaths, IoPaths)],
+    geo: &[(geo::MultiPolygon, geo::MultiPolygon)],
+    op: BooleanOp,
+    io_op: OverlayRule,
+    geo_op: geo::OpType,
+    reps: usize,
+) {
+    let best = |f: &dyn Fn()| {
+        (0..reps)
+            .map(|_| {
+                let t = Instant::now();
+                f();
+                t.elapsed().as_secs_f64() * 1e6
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    let mut rows: Vec<(String, usize, f64, f64, f64)> = pairs
+        .iter()
+        .enumerate()
+        .map(|(k, p)| {
+            let ours = best(&|| drop(black_box(boolean(&p.a, &p.b, op).unwrap())));
+            let i = best(&|| {
+                drop(black_box(io[k].0.overlay(
+                    &io[k].1,
+                    io_op,
+                    FillRule::EvenOdd,
+                )))
+            });
+            let g = best(&|| drop(black_box(geo[k].0.boolean_op(&geo[k].1, geo_op))));
+            let n =
+                p.a.0
+                    .iter()
+                    .chain(&p.b.0)
+                    .flat_map(|q| q.rings())
+                    .map(Vec::len)
+                    .sum();
+            (p.name.clone(), n, ours, i, g)
+        })
+        .collect();
+    rows.sort_by(|x, y| (y.2 - y.4).total_cmp(&(x.2 - x.4)));
+    let sum = |f: fn(&(String, usize, f64, f64, f64)) -> f64| rows.iter().map(f).sum::<f64>();
+    println!(
+        "sum µs: compgeom {:.1}, i_overlay {:.1}, geo {:.1}",
+        sum(|r| r.2),
+        sum(|r| r.3),
+        sum(|r| r.4)
+    );
+    for (name, n, ours, i, g) in &rows {
+        println!(
+            "{ours:8.2} {i:8.2} {g:8.2}  {:5.2} {:5.2}  n={n:5}  {name}",
+            ours / i,
+            ours / g
+        );
+    }
 }
 
 /// `count` axis-parallel squares with random corners in the unit square and sides
