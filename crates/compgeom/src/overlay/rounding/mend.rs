@@ -159,9 +159,9 @@ pub(super) fn nudge(
             continue;
         }
         let combinations: usize = movable.iter().map(|(_, c)| c.len()).product();
-        // Combination 0 is the points as they are.
+        // Combination 0 is the points as they are (restored after each one not taken).
+        let before: Vec<Point2> = movable.iter().map(|(l, _)| r.points[l[0]]).collect();
         for mut c in 1..combinations {
-            let before: Vec<Point2> = movable.iter().map(|(l, _)| r.points[l[0]]).collect();
             for (list, candidates) in &movable {
                 let q = candidates[c % candidates.len()];
                 c /= candidates.len();
@@ -197,7 +197,7 @@ pub(super) fn nudge(
                 r.nudged += changed().count();
                 break;
             }
-            for ((list, _), q) in movable.iter().zip(before) {
+            for ((list, _), &q) in movable.iter().zip(&before) {
                 for &i in list.iter() {
                     r.points[i] = q;
                 }
