@@ -334,6 +334,31 @@
 //! squares 0.68 / 0.67; water 0.79–0.88 / 0.78–0.95; JTS×52 intersection 1.27 / 1.26,
 //! union 1.35 / 1.31, difference 1.30 / 1.29, xor 2.29 / 2.24; dissolve 1.40 / 1.27
 //! (0.55 ms against 0.39 and 0.43). Still not met: the JTS rows and the dissolve.
+//!
+//! Session 34. `BOOLEAN_ONE=pairs` (each JTS pair's best of 50 calls, µs, summed)
+//! shows how far the JTS rows are from the goal when caches are warm: union 920 /
+//! 535 / 572 (ours / i_overlay / geo), xor 1 707 / 563 / 616, intersection 655 / 430
+//! / 456. With the rounding check switched off (an experiment, not kept): union 584
+//! against geo's 516, xor 655 against 563. So the check (near pairs, exact sides,
+//! nudges, re-unions) is about 29% of the union and 58% of the xor, and without it
+//! compgeom is still 1.13–1.16× geo there: the goal needs both a cheaper check and a
+//! cheaper pipeline for small inputs. Tiny pairs cost most relative to the peers
+//! (pg-2055, 11 points: 26 µs against 0.5; geos-350, 10 points: 20–28 µs against 2):
+//! 16–64 candidate combinations per failing pair in `nudge`, and exact zeros. Where
+//! the time of the JTS xor's check went (instrumented, per round of 52): near pairs
+//! 0.38 ms, first decisions 0.19, nudges 0.22, re-unions 0.50 (21 of 52 results
+//! re-united; a fifth of the re-union candidates fail on a point exactly on an edge's
+//! line with two of the three points moved). Changes: three points on the line of one
+//! of their crossings' segments are collinear by orientations of input points
+//! (`on_one_line`, 2 µs → tens of ns for such a zero), and a nudge saves the points
+//! it may move once per pair. Maps rows, two alternating runs each of the session's
+//! start and end: xor 2.26–2.32 → 2.16 / 2.20–2.25 → 2.08–2.09; the other rows within
+//! ±2%. Full table, one run at the end: stars 1e3 0.93–1.06 / 0.91–1.03, 1e4
+//! 0.53–0.68 / 0.55–0.66, 1e5 0.60–0.70 / 0.60–0.68; squares 0.66 / 0.69; water
+//! 0.82–0.90 / 0.80–0.91 (0.96–1.07 / 0.96–1.07 when run alone, `BOOLEAN_ROWS=maps`);
+//! JTS×52 intersection 1.24 / 1.24, union 1.37 / 1.35, difference 1.34 / 1.31, xor
+//! 2.20 / 2.13; dissolve 1.39 / 1.27. Still not met: the JTS rows, the dissolve, and
+//! (in most runs) the star xor at 1e3 against geo.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
