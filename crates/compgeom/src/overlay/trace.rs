@@ -727,6 +727,7 @@ fn traced(
         .collect();
     let mut rounded = RoundedRings {
         starts: vec![0],
+        at_nearest: true,
         ..RoundedRings::default()
     };
     for start in 0..m as u32 {

@@ -136,6 +136,9 @@ pub(super) fn nudge(
         fails[k] = true;
     }
     let mut now: Vec<usize> = Vec::new();
+    if r.nearest.is_empty() {
+        r.nearest = r.points.clone();
+    }
     for k in order {
         if !fails[k] {
             continue;
