@@ -375,8 +375,8 @@
 //! Nudging off (an experiment): union 863, xor 1 539, so nudges still pay. The JTS
 //! xor decisions still failing after nudges: a moved point rounded onto another
 //! vertex's point, or a wrong side that no float around the exact point mends without
-//! breaking another pair; none on an exact collinear side now. Full table, three runs
-//! at the end: stars 1e3 0.71–0.95 / 0.75–0.93 (xor 0.82–0.94 / 0.82–0.93), 1e4
+//! breaking another pair; none on an exact collinear side now. Full table at the end
+//! (three runs; the 1e4, 1e5 and squares rows one): stars 1e3 0.71–0.95 / 0.75–0.93 (xor 0.82–0.94 / 0.82–0.93), 1e4
 //! 0.60–0.71 / 0.60–0.69, 1e5 0.61–0.77 / 0.65–0.80; squares 0.76 / 0.79; water
 //! 0.75–0.98 / 0.76–1.00 (the xor 0.98 / 0.93–1.00; run alone with
 //! `BOOLEAN_ROWS=maps` the water xor is 1.05–1.21 / 1.01–1.17 with either binary);
