@@ -624,6 +624,11 @@ impl Flat {
             /// True when the segment runs from `lo` to `hi`.
             increasing: bool,
         }
+        // (Most inputs have an oblique segment near the front: found before allocating.)
+        let axis_parallel = |s: &Segment2| s.a.y == s.b.y || s.a.x == s.b.x;
+        if !segments.iter().all(axis_parallel) {
+            return None;
+        }
         let mut segs: Vec<Seg> = Vec::with_capacity(segments.len());
         for (i, s) in segments.iter().enumerate() {
             if s.is_degenerate() {
