@@ -519,7 +519,9 @@ fn passes(
 /// [`nudge`]), with every point rounded to nearest ([`RoundedRings::at_nearest`]).
 ///
 /// Then they never touch as the vertices move from their exact points: rounding to
-/// nearest is monotone, so from `r(x) > r(end)` follows `x > end` for the exact
+/// nearest (correctly, ties to even: the arrangement's rounded points are bit for bit
+/// [`crate::kernel::ExactPoint`]'s nearest ones, which `Vertices::rounded_exact` checks
+/// in debug builds and the noding's tests check) is monotone, so from `r(x) > r(end)` follows `x > end` for the exact
 /// coordinates (equal ones round alike). Along the straight moves, the difference of
 /// two vertices' coordinates is linear in time, positive at both ends, so positive
 /// throughout: x stays strictly beyond the edge's shadow on that axis. (For a point
@@ -561,7 +563,8 @@ struct ExactSides<F> {
 #[cfg(test)]
 mod tests {
     use super::{
-        failing_rings, meets, near_pairs_by, ExactPoints, Pair, PointIds, RoundedRings, Toward,
+        apart_along_an_axis, failing_rings, meets, near_pairs_by, Edge, ExactPoints, Pair,
+        PointIds, RoundedRings, Toward,
     };
     use crate::kernel::{orient2d, Orientation, Point2};
     use std::cmp::Ordering;
@@ -762,26 +765,51 @@ mod tests {
         let list: [&[(Point2, u32, bool)]; 2] = [&triangle, &steep];
         assert!(checked_with(&list, &exact, true).1);
         assert!(!checked_with(&list, &exact, false).1);
-        // x within the edge's shadows in x and in y, an ulp from c, rounded across the
-        // edge's line (exactly right of a → c, rounded left): the rule does not apply,
-        // the sides decide as without it (x is moved back to its exact point's side).
-        // (Its ring goes down from it: c is above that ring's edges, apart in y.)
-        let below = [
-            (p(1.0 - e, 1.0 - e / 2.0), 10, true),
-            (p(0.5, -5.0), 11, false),
-            (p(1.5, -5.0), 12, false),
-        ];
-        let mut exact = exact;
-        exact[3].1 = p(1.0 - e / 2.0, 1.0 - e);
-        exact[4].1 = below[1].0;
-        exact[5].1 = below[2].0;
-        let list: [&[(Point2, u32, bool)]; 2] = [&triangle, &below];
-        let (nearest, ok) = checked_with(&list, &exact, true);
-        let (not_nearest, ok_too) = checked_with(&list, &exact, false);
-        assert!(ok && ok_too);
-        assert_eq!(nearest.points, not_nearest.points);
-        assert!(nearest.nudged > 0);
-        assert_eq!(nearest.points[3], exact[3].1);
+    }
+
+    /// [`apart_along_an_axis`] itself: strictly beyond, on one axis and one side, both
+    /// where rounding to nearest put the points and where they are now, and only for
+    /// points rounded to nearest.
+    #[test]
+    fn apart_along_an_axis_needs_strict_separation_before_and_after() {
+        let e = f64::EPSILON;
+        // Edge 0 → 1 from (0, 0) to (1, 1), point 2 somewhere (each a ring of its own
+        // here: only the points and the edge matter).
+        let case = |x: Point2, nearest_x: Option<Point2>, at_nearest: bool| {
+            let mut r = rings(&[
+                &[(p(0.0, 0.0), 0, false), (p(1.0, 1.0), 1, true)],
+                &[(x, 2, true)],
+            ]);
+            r.at_nearest = at_nearest;
+            if let Some(n) = nearest_x {
+                r.nearest = r.points.clone();
+                r.nearest[2] = n;
+            }
+            let edge = Edge {
+                i: 0,
+                j: 1,
+                a: 0,
+                b: 1,
+            };
+            apart_along_an_axis(&r, 2, &edge)
+        };
+        // Beyond in x (and y), or in x only, or in y only: apart.
+        assert!(case(p(1.0 + e, 1.0 + e), None, true));
+        assert!(case(p(1.0 + e, 0.5), None, true));
+        assert!(case(p(0.5, -e), None, true));
+        // Not for points that may not be at their nearest floats.
+        assert!(!case(p(1.0 + e, 1.0 + e), None, false));
+        // Level with an end on each axis it is beyond on neither: not apart.
+        assert!(!case(p(1.0, 0.5), None, true));
+        assert!(!case(p(0.5, 1.0), None, true));
+        // Beyond now but not where rounding to nearest put it (before a nudge), or the
+        // other way round: not apart (either end of the move may be level).
+        assert!(!case(p(1.0 + e, 1.0 + e), Some(p(1.0, 1.0)), true));
+        assert!(!case(p(1.0, 1.0), Some(p(1.0 + e, 1.0 + e)), true));
+        // Beyond on x at both ends: apart, even where the move changed y.
+        assert!(case(p(1.0 + e, 0.5), Some(p(1.0 + e, 0.25)), true));
+        // Beyond on opposite sides before and after: not apart.
+        assert!(!case(p(-e, 0.5), Some(p(1.0 + e, 0.5)), true));
     }
 
     #[test]
