@@ -228,7 +228,7 @@ const TWO_PRODUCT_RANGE: (f64, f64) = (1e-250, 1e250);
 /// `f64::mul_add` is a library call on targets built without FMA, several times
 /// slower), else the fused multiply-add.
 #[inline]
-fn product_error(a: f64, b: f64, p: f64) -> f64 {
+pub(crate) fn product_error(a: f64, b: f64, p: f64) -> f64 {
     let (lo, hi) = TWO_PRODUCT_RANGE;
     let fits = |v: f64| v.abs() > lo && v.abs() < hi;
     if fits(a) && fits(b) && fits(p) {
@@ -243,7 +243,7 @@ fn product_error(a: f64, b: f64, p: f64) -> f64 {
 }
 
 /// `a + b = s + err` exactly (no overflow).
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))
