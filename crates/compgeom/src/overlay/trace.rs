@@ -303,6 +303,36 @@ pub(super) fn traced_boolean(
     Ok(canonical_order(settled))
 }
 
+/// The polygons of `context` (by number, ascending) whose boxes meet the box of `segs`
+/// widened by 2⁻⁴⁰ of its largest coordinate (and the smallest normal `f64`): more than
+/// the ten float gaps within which the rounding check looks for near pairs, so a
+/// polygon left out has no point on a result made from `segs` (whose vertices, rounded
+/// to nearest, stay in that box) and nothing near it. All of `context` when it is
+/// small.
+fn near_context(segs: &[Segment2], context: &[Polygon]) -> Vec<usize> {
+    if context.len() <= 4 || segs.is_empty() {
+        return (0..context.len()).collect();
+    }
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for p in segs.iter().flat_map(|s| [s.a, s.b]) {
+        (x0, x1, y0, y1) = (x0.min(p.x), x1.max(p.x), y0.min(p.y), y1.max(p.y));
+    }
+    let largest = [x0, x1, y0, y1].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let pad = largest / (1u64 << 40) as f64 + f64::MIN_POSITIVE;
+    let (x0, x1, y0, y1) = (x0 - pad, x1 + pad, y0 - pad, y1 + pad);
+    (0..context.len())
+        .filter(|&c| {
+            // (Holes are inside the exterior: its box is the polygon's.)
+            let ring = &context[c].exterior;
+            let xs = ring.iter().map(|p| p.x);
+            let ys = ring.iter().map(|p| p.y);
+            let (lo_x, hi_x) = xs.fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
+            let (lo_y, hi_y) = ys.fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
+            lo_x <= x1 && x0 <= hi_x && lo_y <= y1 && y0 <= hi_y
+        })
+        .collect()
+}
+
 /// The polygons [`traced_boolean`] finds before any repair, each with whether rounding
 /// may have broken the result near it, and the same for each polygon of `context`
 /// (polygons of the result found before, which are checked with these as they are).
@@ -720,14 +750,21 @@ fn traced(
     let mut collapsed: Vec<usize> = Vec::new();
     // Per ring checked, its region (then the context's polygons).
     let mut owner: Vec<usize> = Vec::new();
-    // The context's points: where its polygons touch this result's rings.
-    let context_points: std::collections::HashSet<(u64, u64)> = context
+    // The context's polygons that may touch or come near this result (the others
+    // cannot touch its rings, nor be near them in the check), and their points: where
+    // they touch this result's rings.
+    let near: Vec<usize> = near_context(segs, context);
+    let context_points: std::collections::HashSet<(u64, u64)> = near
         .iter()
-        .flat_map(|p| p.rings())
+        .flat_map(|&c| context[c].rings())
         .flatten()
         .map(|q| (q.x.to_bits(), q.y.to_bits()))
         .collect();
-    let context_len: usize = context.iter().flat_map(|p| p.rings()).map(Vec::len).sum();
+    let context_len: usize = near
+        .iter()
+        .flat_map(|&c| context[c].rings())
+        .map(Vec::len)
+        .sum();
     let mut rounded = RoundedRings {
         points: Vec::with_capacity(ne + context_len),
         ids: Vec::with_capacity(ne + context_len),
@@ -895,8 +932,8 @@ fn traced(
     // this result's, with vertex numbers from nv on.
     let own_rings = owner.len();
     let mut context_at = Vec::new();
-    for (c, polygon) in context.iter().enumerate() {
-        for ring in polygon.rings() {
+    for &c in &near {
+        for ring in context[c].rings() {
             for &q in ring {
                 let id = (nv + context_at.len()) as u32;
                 context_at.push(q);
@@ -1535,10 +1572,45 @@ impl Strips {
 mod tests {
     use super::super::boolean::{boolean_via_dcel, boolean_with, oriented_segments};
     use super::super::{BooleanOp, BooleanOptions, FillRule};
-    use super::{sort_by_angle, sort_by_keys, Carrier, Orientation};
+    use super::{near_context, sort_by_angle, sort_by_keys, Carrier, Orientation};
     use crate::kernel::{MultiPolygon, Point2, Polygon, Segment2};
     use proptest::prelude::*;
     use std::cmp::Ordering;
+
+    /// The context polygons a re-union looks at: those touching, overlapping or within
+    /// a few floats of the new segments' box; not those a little further.
+    #[test]
+    fn near_context_keeps_what_may_touch_or_come_near() {
+        let square = |x: f64, y: f64, w: f64| {
+            Polygon::new(
+                vec![
+                    Point2::new(x, y),
+                    Point2::new(x + w, y),
+                    Point2::new(x + w, y + w),
+                    Point2::new(x, y + w),
+                ],
+                vec![],
+            )
+        };
+        let unit = square(0.0, 0.0, 1.0);
+        let ring = &unit.exterior;
+        let segs: Vec<Segment2> = (0..4)
+            .map(|k| Segment2::new(ring[k], ring[(k + 1) % 4]))
+            .collect();
+        let ulp = f64::EPSILON;
+        let context = [
+            square(2.0, 2.0, 1.0),               // far
+            square(1.0, 1.0, 1.0),               // touches a corner
+            square(0.25, 0.25, 0.5),             // inside
+            square(1.0 + 4.0 * ulp, 0.0, 1.0),   // four floats right
+            square(1.0 + 1e-9, 0.0, 1.0),        // a little further
+            square(-3.0, -3.0, 3.0 - 8.0 * ulp), // eight ulps of 1 below-left
+            square(-5.0, 0.0, 9.0),              // around it all
+        ];
+        assert_eq!(near_context(&segs, &context), [1, 2, 3, 5, 6]);
+        // Few context polygons: all of them, without a look.
+        assert_eq!(near_context(&segs, &context[..4]), [0, 1, 2, 3]);
+    }
 
     const OPS: [BooleanOp; 4] = [
         BooleanOp::Intersection,
