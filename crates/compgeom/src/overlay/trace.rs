@@ -737,13 +737,11 @@ fn traced(
     let mut flat_rings: Vec<u32> = Vec::with_capacity(ne);
     // The rounded points (and exactness flags) of one ring's vertices, computed once per
     // ring: a vertex is on few rings, so no cache over all vertices is needed.
-    // (These too hold one ring, and `rounded` below all rings' points: at most one per
-    // edge, sized once.)
-    let mut ring_r: Vec<Rounded> = Vec::with_capacity(ne);
+    let mut ring_r: Vec<Rounded> = Vec::new();
     // What the check that rounding kept the result valid needs of each kept point (its
     // vertices, whether it moved), and all rings' points.
-    let mut ids: Vec<PointIds> = Vec::with_capacity(ne);
-    let mut pts: Vec<Point2> = Vec::with_capacity(ne);
+    let mut ids: Vec<PointIds> = Vec::new();
+    let mut pts: Vec<Point2> = Vec::new();
     // The regions where rounding made three vertices of a ring one point, or left a ring
     // fewer than three points (the check does not follow these: they are always united
     // again).
@@ -760,14 +758,7 @@ fn traced(
         .flatten()
         .map(|q| (q.x.to_bits(), q.y.to_bits()))
         .collect();
-    let context_len: usize = near
-        .iter()
-        .flat_map(|&c| context[c].rings())
-        .map(Vec::len)
-        .sum();
     let mut rounded = RoundedRings {
-        points: Vec::with_capacity(ne + context_len),
-        ids: Vec::with_capacity(ne + context_len),
         starts: vec![0],
         at_nearest: true,
         ..RoundedRings::default()
