@@ -371,8 +371,7 @@
 //! (µs, 20 calls, two alternating runs of the session-start and new binaries): union
 //! 795–800 → 735, xor 1 445 → 1 262–1 268, intersection 649–651 → 635, difference
 //! 709–712 → 698–704; i_overlay 473 / 503 / 428 / 442, geo 510 / 556 / 457 / 480 in
-//! the same runs. The ring buffers of `traced` sized once: union 735 → 717–723.
-//! Nudging off (an experiment): union 863, xor 1 539, so nudges still pay. The JTS
+//! the same runs. Nudging off (an experiment): union 863, xor 1 539, so nudges still pay. The JTS
 //! xor decisions still failing after nudges: a moved point rounded onto another
 //! vertex's point, or a wrong side that no float around the exact point mends without
 //! breaking another pair; none on an exact collinear side now. Full table at the end
@@ -384,6 +383,28 @@
 //! 1.25–1.28 / 1.21–1.27, xor 1.85–1.94 / 1.79–1.88; dissolve 1.39–1.42 / 1.26–1.31.
 //! In a water xor call, `near_pairs` is 13% (about 55 ns per point and edge queried)
 //! and the faces left of the holes 19%.
+//!
+//! Later in session 35: `ring_orientation` sums the shoelace exactly as a float
+//! expansion before falling back to big integers (re-united slivers far from the
+//! origin; misc-2#0 xor 65 → 57 µs, the xor sum −2%), and a re-union checks only the
+//! context polygons whose boxes come near its own (the xor sum 1 280 → 1 184 µs in
+//! the same runs, pg-4538 xor 217 → 178 µs: building the set of every kept polygon's
+//! points and querying them in `near_pairs` was most of a re-union on large results).
+//! Sizing `traced`'s ring buffers to the edge count once (1–2% on the JTS sums) was
+//! reverted: on the star xor at 1e3 it made each call take 74 page faults (0.14 →
+//! 0.26 ms; `perf stat -e page-faults`), the allocator returning the larger heap to
+//! the system after each call; capped at 1 024 it still did. Page faults per call
+//! now: JTS xor 2, star 2, dissolve 6, water xor 829 (against about 550 for i_overlay
+//! and 440 for geo, input loading included: a lever for the water rows). In a JTS xor
+//! round, `near_pairs` sees 5 274 points, 958 moved edges and 507 moved points over 60
+//! calls, about 23 ns per query, and is now 21% of the xor. Final table, two runs
+//! (the machine slower and noisier than earlier in the session): stars 1e3 0.90–0.96
+//! / 0.88–0.94, the xor 1.06–1.09 / 0.98–1.05; 1e4 0.56–0.72 / 0.54–0.84; 1e5
+//! 0.59–0.87 / 0.58–0.81; squares 0.75–0.78 / 0.69–0.72; water 0.81–1.05 / 0.79–0.93
+//! (the xor 0.96–1.05 / 0.87–0.93); JTS×52 intersection 1.21 / 1.20–1.22, union
+//! 1.25–1.33 / 1.25–1.30, difference 1.30–1.32 / 1.23–1.28, xor 1.84–1.89 /
+//! 1.77–1.82; dissolve 1.42 / 1.28. The star xor at 1e3 moves between 0.82 and 1.09
+//! from run to run (the peers' times there vary by half).
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
