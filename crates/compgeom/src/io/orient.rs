@@ -19,8 +19,8 @@ use num_traits::{Float, Signed, Zero};
 /// (each product split into two `f64` exactly, all added without error), and only where
 /// a coordinate is too small or too large for that, in big integers (every `f64` is an
 /// integer times a power of two). O(n) time; the expansion costs O(n · m) for m
-/// components (a few, at most about 40), the big integers O(n · b) for b-bit numbers,
-/// b ≤ about 4,100.
+/// components (a few as a rule; at most one per term, 4n), the big integers O(n · b)
+/// for b-bit numbers, b ≤ about 4,100.
 ///
 /// ```
 /// use compgeom::io::ring_orientation;
@@ -98,6 +98,9 @@ fn expansion_sign(ring: &[Point2]) -> Option<Orientation> {
     }
     let mut sum: Vec<f64> = Vec::new();
     let mut add = |b: f64| {
+        if b == 0.0 {
+            return;
+        }
         let mut q = b;
         let mut kept = 0;
         for i in 0..sum.len() {
@@ -195,9 +198,11 @@ mod tests {
         assert_eq!(ring_orientation(&eight), Orientation::Collinear);
     }
 
-    /// The expansion decides as the big integers do: slivers and collinear runs far from
-    /// the origin (the filter fails on them), integer grids, and random rings at many
-    /// scales; outside its range it declines.
+    /// The expansion decides as the big integers do: slivers and collinear runs near and
+    /// far from the origin (the filter fails on them), integer grids, random rings, and
+    /// runs with x and y of very different sizes, at scales 2⁻⁴⁵⁰ … 2⁴⁵⁰ (products past
+    /// 10^±250 take `product_error`'s fused path); rings at the ends of its range; outside
+    /// it, it declines.
     #[test]
     fn expansion_agrees_with_big_integers() {
         assert_eq!(EXPANSION_RANGE.0, 2f64.powi(-480));
@@ -209,13 +214,17 @@ mod tests {
                 .wrapping_add(1442695040888963407);
             (state >> 11) as f64 / (1u64 << 53) as f64
         };
-        let (mut decided, mut unfiltered) = ([0usize; 3], 0);
-        for round in 0..3000 {
+        let (mut decided, mut unfiltered, mut fused) = ([0usize; 3], 0, 0);
+        for round in 0..5000 {
             let n = 3 + round % 7;
-            let scale = 10f64.powi((round % 41) * 5 - 100);
-            let far = if round % 2 == 0 { 1e15 * scale } else { 0.0 };
+            let scale = 2f64.powi((round % 61) * 15 - 450);
+            let far = if (round / 5) % 2 == 0 {
+                1e6 * scale
+            } else {
+                0.0
+            };
             let ring: Vec<Point2> = (0..n)
-                .map(|k| match round % 4 {
+                .map(|k| match round % 5 {
                     // Integer grid.
                     0 => Point2::new((unit() * 5.0).floor(), (unit() * 5.0).floor()),
                     // On a line y = x, an ulp off here and there.
@@ -226,10 +235,16 @@ mod tests {
                     }
                     // A sliver: two nearly equal paths.
                     2 => {
-                        let t = far + k as f64 * scale;
-                        Point2::new(t, t + unit() * f64::EPSILON * far)
+                        let t = far + (k + 1) as f64 * scale;
+                        Point2::new(t, t + unit() * f64::EPSILON * t)
                     }
-                    _ => Point2::new(far + unit() * scale, far + unit() * scale),
+                    // On a line through the origin, x huge and y tiny, an ulp off.
+                    3 => {
+                        let t = (1 + k % 4) as f64;
+                        let y = t * 2f64.powi(-470);
+                        Point2::new(t * 2f64.powi(470), if k == 1 { y.next_up() } else { y })
+                    }
+                    _ => Point2::new(scale * (1.0 + unit()), scale * (1.0 + unit())),
                 })
                 .collect();
             let want = exact_sign(&ring);
@@ -243,7 +258,21 @@ mod tests {
             };
             decided[k] += 1;
             unfiltered += usize::from(filtered_sign(&ring).is_none());
+            let outside = |v: f64| v != 0.0 && !(1e-250..1e250).contains(&v.abs());
+            fused += usize::from(ring.iter().any(|p| outside(p.x * p.y)));
         }
+        // The ends of the range, and x and y at opposite ends.
+        let (lo, hi) = EXPANSION_RANGE;
+        for ring in [
+            [(lo, lo), (hi, lo), (lo, hi)],
+            [(lo, lo.next_up()), (lo.next_up(), lo), (hi, hi)],
+            [(hi, lo), (hi.next_down(), lo.next_up()), (lo, hi)],
+            [(lo, 0.0), (0.0, lo), (-lo, -lo)],
+        ] {
+            let ring: Vec<Point2> = ring.iter().map(|&(x, y)| Point2::new(x, y)).collect();
+            assert_eq!(expansion_sign(&ring), Some(exact_sign(&ring)), "{ring:?}");
+        }
+        assert!(fused > 200, "{fused}");
         // Every answer occurs, and most rings need more than the filter.
         assert!(
             decided[0] > 100 && decided[1] > 100 && decided[2] > 10,

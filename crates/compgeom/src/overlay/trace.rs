@@ -1601,6 +1601,58 @@ mod tests {
         assert_eq!(near_context(&segs, &context), [1, 2, 3, 5, 6]);
         // Few context polygons: all of them, without a look.
         assert_eq!(near_context(&segs, &context[..4]), [0, 1, 2, 3]);
+        // At other scales (huge, subnormal, and x and y of very different sizes): a
+        // box 16 floats right of the segments' box is kept, one a millionth of its size
+        // away is not (five far ones make the look happen); subnormal, all are kept.
+        for (sx, sy) in [
+            (1e300, 1e300),
+            (1e-310, 1e-310),
+            (1e300, 1e-300),
+            (1e-300, 1e300),
+        ] {
+            let rect = |x: f64, y: f64, w: f64| {
+                Polygon::new(
+                    vec![
+                        Point2::new(x * sx, y * sy),
+                        Point2::new((x + w) * sx, y * sy),
+                        Point2::new((x + w) * sx, (y + w) * sy),
+                        Point2::new(x * sx, (y + w) * sy),
+                    ],
+                    vec![],
+                )
+            };
+            let unit = rect(0.0, 0.0, 1.0);
+            let ring = &unit.exterior;
+            let segs: Vec<Segment2> = (0..4)
+                .map(|k| Segment2::new(ring[k], ring[(k + 1) % 4]))
+                .collect();
+            let mut right = 1.0 * sx;
+            for _ in 0..16 {
+                right = right.next_up();
+            }
+            let mut context: Vec<Polygon> =
+                (0..5).map(|k| rect(5.0 + k as f64, 5.0, 1.0)).collect();
+            context.push(Polygon::new(
+                vec![
+                    Point2::new(right, 0.0),
+                    Point2::new(2.0 * sx, 0.0),
+                    Point2::new(2.0 * sx, sy),
+                ],
+                vec![],
+            ));
+            context.push(rect(1.000001, 0.0, 1.0));
+            // (Below the normal range the widening, the smallest normal, holds them all;
+            // it is taken from the largest coordinate on either axis, so a tiny x range
+            // next to huge y values is widened by far more than its own floats.)
+            let want: Vec<usize> = if sx < f64::MIN_POSITIVE {
+                (0..7).collect()
+            } else if sx < sy {
+                vec![5, 6]
+            } else {
+                vec![5]
+            };
+            assert_eq!(near_context(&segs, &context), want, "{sx} {sy}");
+        }
     }
 
     const OPS: [BooleanOp; 4] = [
