@@ -1572,22 +1572,26 @@ mod tests {
     /// a few floats of the new segments' box; not those a little further.
     #[test]
     fn near_context_keeps_what_may_touch_or_come_near() {
-        let square = |x: f64, y: f64, w: f64| {
+        // The rectangle [x, x + w] × [y, y + w] scaled by (sx, sy), and its sides.
+        let rect = |x: f64, y: f64, w: f64, (sx, sy): (f64, f64)| {
             Polygon::new(
                 vec![
-                    Point2::new(x, y),
-                    Point2::new(x + w, y),
-                    Point2::new(x + w, y + w),
-                    Point2::new(x, y + w),
+                    Point2::new(x * sx, y * sy),
+                    Point2::new((x + w) * sx, y * sy),
+                    Point2::new((x + w) * sx, (y + w) * sy),
+                    Point2::new(x * sx, (y + w) * sy),
                 ],
                 vec![],
             )
         };
-        let unit = square(0.0, 0.0, 1.0);
-        let ring = &unit.exterior;
-        let segs: Vec<Segment2> = (0..4)
-            .map(|k| Segment2::new(ring[k], ring[(k + 1) % 4]))
-            .collect();
+        let sides = |p: &Polygon| -> Vec<Segment2> {
+            let ring = &p.exterior;
+            (0..4)
+                .map(|k| Segment2::new(ring[k], ring[(k + 1) % 4]))
+                .collect()
+        };
+        let square = |x: f64, y: f64, w: f64| rect(x, y, w, (1.0, 1.0));
+        let segs = sides(&square(0.0, 0.0, 1.0));
         let ulp = f64::EPSILON;
         let context = [
             square(2.0, 2.0, 1.0),               // far
@@ -1610,28 +1614,14 @@ mod tests {
             (1e300, 1e-300),
             (1e-300, 1e300),
         ] {
-            let rect = |x: f64, y: f64, w: f64| {
-                Polygon::new(
-                    vec![
-                        Point2::new(x * sx, y * sy),
-                        Point2::new((x + w) * sx, y * sy),
-                        Point2::new((x + w) * sx, (y + w) * sy),
-                        Point2::new(x * sx, (y + w) * sy),
-                    ],
-                    vec![],
-                )
-            };
-            let unit = rect(0.0, 0.0, 1.0);
-            let ring = &unit.exterior;
-            let segs: Vec<Segment2> = (0..4)
-                .map(|k| Segment2::new(ring[k], ring[(k + 1) % 4]))
-                .collect();
+            let segs = sides(&rect(0.0, 0.0, 1.0, (sx, sy)));
             let mut right = 1.0 * sx;
             for _ in 0..16 {
                 right = right.next_up();
             }
-            let mut context: Vec<Polygon> =
-                (0..5).map(|k| rect(5.0 + k as f64, 5.0, 1.0)).collect();
+            let mut context: Vec<Polygon> = (0..5)
+                .map(|k| rect(5.0 + k as f64, 5.0, 1.0, (sx, sy)))
+                .collect();
             context.push(Polygon::new(
                 vec![
                     Point2::new(right, 0.0),
@@ -1640,7 +1630,7 @@ mod tests {
                 ],
                 vec![],
             ));
-            context.push(rect(1.000001, 0.0, 1.0));
+            context.push(rect(1.000001, 0.0, 1.0, (sx, sy)));
             // (Below the normal range the widening, the smallest normal, holds them all;
             // it is taken from the largest coordinate on either axis, so a tiny x range
             // next to huge y values is widened by far more than its own floats.)
