@@ -752,7 +752,7 @@ fn traced(
     // cannot touch its rings, nor be near them in the check), and their points: where
     // they touch this result's rings.
     let near: Vec<usize> = near_context(segs, context);
-    let context_points: std::collections::HashSet<(u64, u64)> = near
+    let context_points: std::collections::HashSet<(u64, u64), foldhash::fast::RandomState> = near
         .iter()
         .flat_map(|&c| context[c].rings())
         .flatten()

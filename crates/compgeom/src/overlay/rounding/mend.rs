@@ -63,8 +63,9 @@ pub(super) fn nudge(
     // and is not moved).
     type Place = (u32, u32);
     let place = |id: PointIds| (id.enter, id.leave);
-    let mut places: std::collections::HashMap<Place, Option<Vec<usize>>> = Default::default();
-    let mut place_of: std::collections::HashMap<u32, Place> = Default::default();
+    type Map<K, V> = std::collections::HashMap<K, V, foldhash::fast::RandomState>;
+    let mut places: Map<Place, Option<Vec<usize>>> = Default::default();
+    let mut place_of: Map<u32, Place> = Default::default();
     for &k in failing.iter() {
         for i in ends(&pairs[k]).into_iter().flatten() {
             let id = r.ids[i];
