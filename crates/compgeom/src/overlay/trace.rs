@@ -1549,7 +1549,9 @@ impl Strips {
     }
 
     fn strip(&self, y: f64) -> usize {
-        (((y - self.lo) * self.scale) as usize).min(self.count - 1)
+        // (To u32, which saturates in a few instructions; to usize took 16. At most
+        // 65 536 strips.)
+        (((y - self.lo) * self.scale) as u32 as usize).min(self.count - 1)
     }
 
     /// The items whose closed y range may hold `y` (all those that do, and others).

@@ -66,9 +66,16 @@ impl Grid {
     /// The cell range of a box, clamped to the grid (monotone in the box's bounds, so
     /// boxes that overlap share a cell).
     fn range(&self, b: &Box2) -> (usize, usize, usize, usize) {
-        let ix = |x: f64| (((x - self.x0) * self.inv).max(0.0) as usize).min(self.nx - 1);
-        let iy = |y: f64| (((y - self.y0) * self.inv).max(0.0) as usize).min(self.ny - 1);
-        (ix(b.x0), ix(b.x1), iy(b.y0), iy(b.y1))
+        // (This runs for every point and edge: a conversion to u32, which saturates, is
+        // a few instructions where one to usize took 16; grids have far fewer cells.)
+        let step = |v: f64, lo: f64, last: usize| (((v - lo) * self.inv) as u32 as usize).min(last);
+        let (lx, ly) = (self.nx - 1, self.ny - 1);
+        (
+            step(b.x0, self.x0, lx),
+            step(b.x1, self.x0, lx),
+            step(b.y0, self.y0, ly),
+            step(b.y1, self.y0, ly),
+        )
     }
 
     fn fill(&mut self, boxes: &[Box2]) {
@@ -127,12 +134,15 @@ impl Grid {
         if (x1 - x0 + 1) * (y1 - y0 + 1) > 4 {
             return true;
         }
-        (y0..=y1).any(|y| {
-            (x0..=x1).any(|x| {
-                let cell = y * self.nx + x;
-                self.starts[cell] != self.starts[cell + 1]
-            })
-        })
+        for y in y0..y1 + 1 {
+            let row = y * self.nx;
+            // (The cells of a row are consecutive: one of them lists an item when their
+            // first and last starts differ.)
+            if self.starts[row + x0] != self.starts[row + x1 + 1] {
+                return true;
+            }
+        }
+        false
     }
 
     /// Calls `f` once for each item whose cells box `b` overlaps (and for each wide
