@@ -829,7 +829,8 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
 /// `BOOLEAN_INPUT=star|squares|water|jts|ngons|dissolve`, `BOOLEAN_REPS` calls except
 /// for the squares): run one contender on the star union, the squares input, the water
-/// map union, the unions of the 52 JTS pairs (or another `BOOLEAN_OP`), the same
+/// map union, the unions of the 52 JTS pairs (the stars, the water and the pairs also
+/// another `BOOLEAN_OP`), the same
 /// operation on 52 pairs of regular `BOOLEAN_K`-gons (default 4) or the GEOS-837
 /// dissolve (`union_all`), for instruction counts (`valgrind --tool=callgrind`). The dissolve also takes
 /// `BOOLEAN_ONE=all` (the three alternated, one call each per round, as the table
@@ -968,17 +969,17 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     };
     let (pa, pb) = (io_paths(&a), io_paths(&b));
     let (ga, gb) = (geo_poly(&a), geo_poly(&b));
+    // `BOOLEAN_OP` as for the JTS pairs (default the union).
+    let name = std::env::var("BOOLEAN_OP").unwrap_or_else(|_| "union".into());
+    let (_, op, io_op, geo_op) = *OPS
+        .iter()
+        .find(|o| o.0 == name)
+        .ok_or("BOOLEAN_OP: intersection, union, difference or xor")?;
     for _ in 0..reps {
         match who {
-            "ours" => drop(black_box(
-                boolean(&a, &b, BooleanOp::Union).map_err(|e| e.to_string())?,
-            )),
-            "io" => drop(black_box(pa.overlay(
-                &pb,
-                OverlayRule::Union,
-                FillRule::EvenOdd,
-            ))),
-            _ => drop(black_box(ga.boolean_op(&gb, geo::OpType::Union))),
+            "ours" => drop(black_box(boolean(&a, &b, op).map_err(|e| e.to_string())?)),
+            "io" => drop(black_box(pa.overlay(&pb, io_op, FillRule::EvenOdd))),
+            _ => drop(black_box(ga.boolean_op(&gb, geo_op))),
         }
     }
     Ok(())
