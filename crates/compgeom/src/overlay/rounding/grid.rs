@@ -79,20 +79,25 @@ impl Grid {
     }
 
     fn fill(&mut self, boxes: &[Box2]) {
-        let mut starts = vec![0u32; self.nx * self.ny + 1];
-        let cells_of = |b: &Box2| {
-            let (x0, x1, y0, y1) = self.range(b);
-            let wide = (x1 - x0 + 1) * (y1 - y0 + 1) > WIDE_CELLS;
-            (x0, x1, y0, y1, wide)
+        let nx = self.nx;
+        let mut starts = vec![0u32; nx * self.ny + 1];
+        // Each box's cells, found once for both passes (`None`: wide).
+        let spans: Vec<Option<[u32; 4]>> = boxes
+            .iter()
+            .map(|b| {
+                let (x0, x1, y0, y1) = self.range(b);
+                let wide = (x1 - x0 + 1) * (y1 - y0 + 1) > WIDE_CELLS;
+                (!wide).then_some([x0 as u32, x1 as u32 + 1, y0 as u32, y1 as u32 + 1])
+            })
+            .collect();
+        // (Half-open ranges: inclusive ones made these loops several times slower.)
+        let cells = |[x0, x1, y0, y1]: [u32; 4]| {
+            (y0 as usize..y1 as usize)
+                .flat_map(move |y| (x0 as usize..x1 as usize).map(move |x| y * nx + x))
         };
-        for b in boxes {
-            let (x0, x1, y0, y1, wide) = cells_of(b);
-            if !wide {
-                for y in y0..=y1 {
-                    for x in x0..=x1 {
-                        starts[y * self.nx + x + 1] += 1;
-                    }
-                }
+        for span in spans.iter().flatten() {
+            for cell in cells(*span) {
+                starts[cell + 1] += 1;
             }
         }
         for k in 1..starts.len() {
@@ -101,18 +106,15 @@ impl Grid {
         let mut at = starts.clone();
         let mut items = vec![0u32; starts[starts.len() - 1] as usize];
         let mut wide_items = Vec::new();
-        for (item, b) in boxes.iter().enumerate() {
-            let (x0, x1, y0, y1, wide) = cells_of(b);
-            if wide {
+        for (item, span) in spans.iter().enumerate() {
+            let Some(span) = span else {
                 wide_items.push(item as u32);
                 continue;
-            }
-            for y in y0..=y1 {
-                for x in x0..=x1 {
-                    let slot = &mut at[y * self.nx + x];
-                    items[*slot as usize] = item as u32;
-                    *slot += 1;
-                }
+            };
+            for cell in cells(*span) {
+                let slot = &mut at[cell];
+                items[*slot as usize] = item as u32;
+                *slot += 1;
             }
         }
         self.starts = starts;
