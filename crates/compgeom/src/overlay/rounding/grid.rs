@@ -175,8 +175,8 @@ impl Grid {
             list.iter().for_each(|&item| f(item as usize));
             return;
         }
-        for y in y0..=y1 {
-            for x in x0..=x1 {
+        for y in y0..y1 + 1 {
+            for x in x0..x1 + 1 {
                 let cell = y * self.nx + x;
                 let list = &self.items[self.starts[cell] as usize..self.starts[cell + 1] as usize];
                 for &item in list {
