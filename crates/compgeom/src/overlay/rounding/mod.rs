@@ -837,6 +837,74 @@ mod tests {
         assert!(!case(p(-e, 0.5), Some(p(1.0 + e, 0.5)), true));
     }
 
+    /// A nudge is judged by where rounding to nearest put the points too: a point
+    /// rounded onto another vertex's point c, at the end of an edge a → c, and moved one
+    /// float on (to its exact point, beyond c on the edge's line) to mend its pairs with
+    /// c, is level with c where it was rounded to: the axis rule does not decide its
+    /// pair with a → c, and, collinear there, the pair fails.
+    #[test]
+    fn a_nudged_point_is_not_apart_where_it_was_level_before() {
+        let e = f64::EPSILON;
+        let (a, c, x) = (p(0.0, 0.0), p(1.0, 0.0), p(1.0 + e, 0.0));
+        let triangle = [(a, 0, false), (c, 1, false), (p(0.5, -1.0), 2, false)];
+        // x rounded (as if) onto c.
+        let wedge = [
+            (c, 10, true),
+            (p(3.0, 1.0), 11, false),
+            (p(3.0, -1.0), 12, false),
+        ];
+        let exact = [
+            (0, a),
+            (1, c),
+            (2, p(0.5, -1.0)),
+            (10, x),
+            (11, p(3.0, 1.0)),
+            (12, p(3.0, -1.0)),
+        ];
+        let list: [&[(Point2, u32, bool)]; 2] = [&triangle, &wedge];
+        let (r, ok) = checked_with(&list, &exact, true);
+        assert!(!ok);
+        // (The nudge was taken: it mends c's pairs with x's edges.)
+        assert!(r.points.contains(&x));
+        assert_eq!(r.nearest[3], c);
+    }
+
+    /// A nudge that would put a point onto its ring's neighbour (collapsing the edge
+    /// between them) is not taken, even where it would mend the pair.
+    #[test]
+    fn a_nudge_onto_a_ring_neighbour_is_not_taken() {
+        let e = f64::EPSILON;
+        // The square's side x = 2; a spike whose tip, exactly two floats left of it, was
+        // rounded (as if) onto it, and whose next point is one float left of it: the
+        // float towards the tip's exact point.
+        let square = [
+            (p(2.0, 0.0), 0, false),
+            (p(3.0, 0.0), 1, false),
+            (p(3.0, 1.0), 2, false),
+            (p(2.0, 1.0), 3, false),
+        ];
+        let spike = [
+            (p(0.0, 2.0), 20, false),
+            (p(2.0, 0.5), 21, true),
+            (p(2.0 - e, 0.5), 23, false),
+            (p(0.0, -1.0), 22, false),
+        ];
+        let exact = [
+            (0, p(2.0, 0.0)),
+            (1, p(3.0, 0.0)),
+            (2, p(3.0, 1.0)),
+            (3, p(2.0, 1.0)),
+            (20, p(0.0, 2.0)),
+            (21, p(2.0 - 2.0 * e, 0.5)),
+            (23, p(2.0 - e, 0.5)),
+            (22, p(0.0, -1.0)),
+        ];
+        let (r, ok) = checked(&[&square, &spike], &exact);
+        assert!(!ok);
+        assert_eq!(r.nudged, 0);
+        assert!(r.points.contains(&p(2.0, 0.5)));
+    }
+
     #[test]
     fn a_vertex_rounded_across_another_rings_edge_is_flagged() {
         let square = |x: f64, id: u32| {
