@@ -405,6 +405,39 @@
 //! 1.25–1.33 / 1.25–1.30, difference 1.30–1.32 / 1.23–1.28, xor 1.84–1.89 /
 //! 1.77–1.82; dissolve 1.42 / 1.28. The star xor at 1e3 moves between 0.82 and 1.09
 //! from run to run (the peers' times there vary by half).
+//!
+//! Session 36. The machine's speed varied by half within minutes, so changes were
+//! measured by instructions (callgrind, `BOOLEAN_ONE=ours`, the inclusive count of
+//! `boolean`, 5 calls) against the session-start binary: the rounding check's near
+//! pairs by brute force up to 16 384 box tests (was 512) behind one test against the
+//! box around all moved points, edges walked by a plain loop, unmoved edges' boxes
+//! without the reach; foldhash for the re-unions' context points and the nudge's maps
+//! (SipHash was 2% of the JTS xor); grid and strip cells through a conversion to u32
+//! (to usize it took 16 instructions); each box's grid cells found once. JTS×52
+//! intersection 62.5 M → 59.4 M (−4.9%), union 72.9 M → 68.6 M (−5.9%), difference
+//! 68.0 M → 64.9 M (−4.7%), xor 112.6 M → 103.9 M (−7.8%); dissolve 28.3 M → 27.2 M
+//! (−3.9%); water intersection −6.4%, union −5.0%, difference −5.7%, xor −7.2%
+//! (`BOOLEAN_ONE` on the water and the stars now takes `BOOLEAN_OP`); stars 1e3
+//! union −1.8%, xor −3.6%, 1e4 union −2.2%, xor −4.1%. Against the peers, per call
+//! ((5 calls − 0 calls) / 5, the input's loading left out): JTS×52 intersection 11.9 M
+//! against i_overlay 9.95 M and geo 10.2 M (1.20 / 1.17), union 13.8 M / 11.0 M / 11.3 M
+//! (1.26 / 1.22), difference 13.0 M / 10.3 M / 10.7 M (1.26 / 1.22), xor 20.9 M /
+//! 11.6 M / 12.2 M (1.80 / 1.70); dissolve 5.46 M / 4.00 M / 4.59 M (1.37 / 1.19);
+//! water union 93.9 M / 97.0 M / 100.3 M, xor 133 M / 122 M / 130 M (ours counts the
+//! rayon pool's threads: the noding's pair tests run on it from 16 k segments).
+//! Tried and dropped (more instructions): one grid of all points and unmoved edges
+//! queried by the moved items (dissolve near pairs 97 → 131–143 µs a call); a grid of
+//! all points queried by the moved edges plus one of the moved points (water xor near
+//! pairs 98 M → 105 M); the moved edges and the moved points on two separate grids
+//! (96 M → 101 M: the grid of moved points, having fewer items, visits all of them for
+//! long edges); box overlap tests without branches (callgrind counts more
+//! instructions; not timed). Where the water xor's near-pair search goes: 34 k points,
+//! 13 k moved edges and 8 k moved points a call, about 20 k pairs found, 32 M
+//! instructions of 120 M (Grid set-up 4.7 M, visits 8.6 M with their callbacks). In
+//! the JTS rows the noding is about half of the intersection (5.4 k segments a round,
+//! 29 k candidate box tests, 9.8 k overlaps, 4.3 k of them consecutive ring edges
+//! decided at once; about 215 instructions per exact pair test), allocation about 9%
+//! (some 65 allocations a call).
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
