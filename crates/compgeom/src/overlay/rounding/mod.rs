@@ -181,9 +181,13 @@ impl RoundedRings {
     }
 }
 
-/// The gap above `|v|` (0 for a point that did not move: it stays where it is).
+/// The gap above `|v|`; at `f64::MAX`, where that is infinite, the gap below (as wide:
+/// a point there moved by at most half of it).
 fn gap(v: f64) -> f64 {
     let a = v.abs();
+    if a == f64::MAX {
+        return a - f64::from_bits(a.to_bits() - 1);
+    }
     f64::from_bits(a.to_bits() + 1) - a
 }
 
@@ -588,8 +592,8 @@ struct ExactSides<F> {
 #[cfg(test)]
 mod tests {
     use super::{
-        apart_along_an_axis, failing_rings, meets, near_pairs_by, Edge, ExactPoints, Pair,
-        PointIds, RoundedRings, Toward,
+        apart_along_an_axis, edge_reach, failing_rings, gap, meets, near_pairs_by, reach_of, Box2,
+        Edge, ExactPoints, Pair, PointIds, RoundedRings, Toward,
     };
     use crate::kernel::{orient2d, Orientation, Point2};
     use std::cmp::Ordering;
@@ -618,11 +622,56 @@ mod tests {
         f64::from_bits(v.to_bits() + 1)
     }
 
-    /// The near pairs are the same found one by one or on the grid: random rings on a
-    /// small integer grid (shared points, collinear runs) and around one point with
-    /// coordinates a few floats apart, some points moved, the collapsed edges included.
+    /// Every pair the rounding check must decide, by definition: each point against
+    /// each edge (ring edges and collapsed ones) that it is not an end of, one of them
+    /// moved, whose boxes (as `passes` needs them) overlap.
+    fn every_near_pair(r: &RoundedRings) -> Vec<(u32, usize, usize, u32, u32)> {
+        let point_box = |i: usize| {
+            let (hx, hy) = reach_of(r, i);
+            let c = r.points[i];
+            Box2::around(c, c, (4.0 * hx + 2.0 * gap(c.x), 4.0 * hy + 2.0 * gap(c.y)))
+        };
+        let edge_box = |e: &Edge| {
+            let (hx, hy) = edge_reach(r, e);
+            Box2::around(r.points[e.i], r.points[e.j], (4.0 * hx, 4.0 * hy))
+        };
+        // (Listed here, not by `for_each_edge`: that is under test too.)
+        let mut edges = Vec::new();
+        for ring in r.starts.windows(2) {
+            for i in ring[0]..ring[1] {
+                let j = if i + 1 == ring[1] { ring[0] } else { i + 1 };
+                let (a, b) = (r.ids[i].leave, r.ids[j].enter);
+                edges.push(Edge { i, j, a, b });
+            }
+        }
+        for (i, id) in r.ids.iter().enumerate() {
+            if id.enter != id.leave {
+                let (a, b) = (id.enter, id.leave);
+                edges.push(Edge { i, j: i, a, b });
+            }
+        }
+        let mut pairs = Vec::new();
+        for x in 0..r.points.len() {
+            for e in &edges {
+                let moved = r.moved(x) || r.moved(e.i) || r.moved(e.j);
+                let own = e.i == x || e.j == x;
+                if moved && !own && point_box(x).overlaps(&edge_box(e)) {
+                    pairs.push((x as u32, e.i, e.j, e.a, e.b));
+                }
+            }
+        }
+        pairs.sort_unstable();
+        pairs
+    }
+
+    /// The near pairs, found one by one or on the grid, are every pair whose boxes
+    /// overlap, once: random rings on a small integer grid (shared points, collinear
+    /// runs), around one point with coordinates a few floats apart, at ±1e300, among
+    /// subnormals, near ±`f64::MAX`, and with x and y at scales from 1e-300 to 1e300 in
+    /// one ring (grids of one cell, of a subnormal cell size, cells numbered past 2³²),
+    /// sometimes with only one or two points moved, the collapsed edges included.
     #[test]
-    fn near_pairs_by_brute_force_and_by_grid_agree() {
+    fn near_pairs_are_every_pair_whose_boxes_overlap() {
         let mut state = 0x0dd_ba11_u64;
         let mut int = move |n: u64| {
             state = state
@@ -631,22 +680,38 @@ mod tests {
             (state >> 33) % n
         };
         let key = |(x, e): Pair| (x, e.i, e.j, e.a, e.b);
+        let below_max = |k: u64| f64::from_bits(f64::MAX.to_bits() - k);
         let mut found = 0;
-        for round in 0..400 {
+        for round in 0..1600 {
+            let kind = round % 7;
+            let moved_one_in = [2, 3, 10, 40][int(4) as usize];
             let mut r = RoundedRings {
                 starts: vec![0],
                 ..RoundedRings::default()
             };
             let mut id = 0;
             for _ in 0..1 + int(4) {
-                for _ in 0..3 + int(12) {
-                    let q = if round % 2 == 0 {
-                        p(int(8) as f64, int(8) as f64)
+                for _ in 0..3 + int(if round % 5 == 0 { 40 } else { 12 }) {
+                    let (kx, ky) = if kind == 6 {
+                        (int(6), int(6))
                     } else {
-                        let f = |k: u64| f64::from_bits(1.0f64.to_bits() + k);
-                        p(f(int(6)), f(int(6)))
+                        (kind, kind)
                     };
-                    let mut ids = PointIds::of(id, int(3) == 0);
+                    let mut coord = |kind: u64| match kind {
+                        0 => int(8) as f64,
+                        1 => f64::from_bits(1.0f64.to_bits() + int(6)),
+                        2 => (int(7) as f64 - 3.0) * 1e300,
+                        3 => f64::from_bits(int(8)) * if int(2) == 0 { -1.0 } else { 1.0 },
+                        4 => {
+                            [f64::MAX, -below_max(2), below_max(1), 0.0, -0.0, 1.0][int(6) as usize]
+                        }
+                        _ => {
+                            (int(9) as f64 - 4.0)
+                                * [1e-300, 1.0, 1e10, 1e300, 5e-324][int(5) as usize]
+                        }
+                    };
+                    let q = p(coord(kx), coord(ky));
+                    let mut ids = PointIds::of(id, int(moved_one_in) == 0);
                     if int(10) == 0 {
                         ids.merge(PointIds::of(id + 1, true));
                         id += 1;
@@ -657,18 +722,18 @@ mod tests {
                 }
                 r.starts.push(r.points.len());
             }
-            let mut one_by_one: Vec<_> =
-                near_pairs_by(&r, Some(true)).into_iter().map(key).collect();
-            let mut on_grid: Vec<_> = near_pairs_by(&r, Some(false))
-                .into_iter()
-                .map(key)
-                .collect();
-            one_by_one.sort_unstable();
-            on_grid.sort_unstable();
-            assert_eq!(one_by_one, on_grid, "round {round}");
-            found += on_grid.len();
+            let want = every_near_pair(&r);
+            for brute_force in [true, false] {
+                let mut got: Vec<_> = near_pairs_by(&r, Some(brute_force))
+                    .into_iter()
+                    .map(key)
+                    .collect();
+                got.sort_unstable();
+                assert_eq!(got, want, "round {round}, one by one: {brute_force}");
+            }
+            found += want.len();
         }
-        assert!(found > 1000, "only {found} pairs");
+        assert!(found > 20_000, "only {found} pairs");
     }
 
     #[test]
