@@ -57,6 +57,7 @@ use super::flat::{Flat, Pieces, Vertices};
 use super::holes::{compare_xy_filtered, Rounded};
 use crate::delaunay::EdgeMap;
 use crate::intersect::{prefer_pairwise, round_crossing, PARALLEL_SCAN_FROM};
+use crate::kernel::steps::Steps;
 use crate::kernel::{
     compare_xy, orient2d, orient_static, quick_crossing_static, static_orient_bound, Crossing,
     ExactPoint, Orientation, Point2, Segment2, SegmentIntersection,
@@ -428,33 +429,6 @@ const CHUNK: usize = 32;
 
 /// From this many segments on, the pair tests run on the rayon pool.
 const PARALLEL_SWEEP_FROM: usize = 16_384;
-
-/// Equal steps along one axis from `lo`: `steps` of them, a monotone (non-decreasing)
-/// function of the coordinate.
-#[derive(Clone, Copy)]
-struct Steps {
-    lo: f64,
-    inv: f64,
-    last: u32,
-}
-
-impl Steps {
-    /// `steps` over `lo..=hi` (`hi - lo` positive; when it overflows, all in step 0).
-    fn new(lo: f64, hi: f64, steps: u32) -> Steps {
-        Steps {
-            lo,
-            inv: steps as f64 / (hi - lo),
-            last: steps - 1,
-        }
-    }
-
-    /// The step of `v`. (`as u32` saturates and is cheaper than a conversion to u64; the
-    /// min keeps the upper end in range.)
-    #[inline(always)]
-    fn of(&self, v: f64) -> u32 {
-        (((v - self.lo) * self.inv) as u32).min(self.last)
-    }
-}
 
 /// The counts of one layout, before its entries are placed: `rows` strips, each cut into
 /// `cols` x-buckets; cell `(r, c)` is number `r · cols + c`.

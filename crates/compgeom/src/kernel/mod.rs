@@ -22,6 +22,7 @@ pub(crate) mod exact;
 pub(crate) mod filter;
 mod intersection;
 mod predicates;
+pub(crate) mod steps;
 mod types;
 
 pub use crossing::{

@@ -48,6 +48,7 @@ use crate::dcel::{
     compare_y_filtered, faces_left_of, side, without_cancelling, Carrier, Flat, Rounded,
 };
 use crate::kernel::arith::ordered_key as okey;
+use crate::kernel::steps::Steps;
 use crate::kernel::{
     orient2d, orient_exact, ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2,
 };
@@ -1130,9 +1131,8 @@ fn windings_left_of_by(
         // number of queries in buckets below b) is where the search for lo starts: a
         // few steps instead of a binary search per segment. (−0 and 0 share a bucket.)
         let buckets = 4 * ys.len();
-        let inv = buckets as f64 / (y_max - y_min);
-        // (`as u32` saturates and is cheaper than a conversion to usize.)
-        let bucket = |y: f64| (((y - y_min) * inv) as u32).min(buckets as u32 - 1) as usize;
+        let steps = Steps::new(y_min, y_max, buckets as u32);
+        let bucket = |y: f64| steps.index(y);
         let mut first = vec![0u32; buckets + 1];
         for &y in &ys {
             first[bucket(y) + 1] += 1;
@@ -1429,8 +1429,7 @@ fn radix_sort(mut v: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
 /// y value is a monotone function of it (rounding is monotone), so every item whose
 /// closed range holds y is in y's strip.
 struct Strips {
-    lo: f64,
-    scale: f64,
+    steps: Steps,
     count: usize,
     start: Vec<u32>,
     list: Vec<u32>,
@@ -1462,8 +1461,7 @@ impl Strips {
         if lo > hi {
             // Nothing listed (all items horizontal).
             return Some(Strips {
-                lo: 0.0,
-                scale: 0.0,
+                steps: Steps::per_unit(0.0, 0.0, 1),
                 count: 1,
                 start: vec![0, 0],
                 list: Vec::new(),
@@ -1477,8 +1475,7 @@ impl Strips {
             return None;
         }
         let mut strips = Strips {
-            lo,
-            scale,
+            steps: Steps::per_unit(lo, scale, count as u32),
             count,
             start: vec![0u32; count + 1],
             list: Vec::new(),
@@ -1549,9 +1546,7 @@ impl Strips {
     }
 
     fn strip(&self, y: f64) -> usize {
-        // (To u32, which saturates in a few instructions; to usize took 16. At most
-        // 65 536 strips.)
-        (((y - self.lo) * self.scale) as u32 as usize).min(self.count - 1)
+        self.steps.index(y)
     }
 
     /// The items whose closed y range may hold `y` (all those that do, and others).

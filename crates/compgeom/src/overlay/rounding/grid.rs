@@ -1,14 +1,14 @@
 //! A uniform grid over boxes, for the rounding check's search for near pairs.
 
 use super::Box2;
+use crate::kernel::steps::Steps;
 
 /// A uniform grid over the boxes of the moved items (about two cells per item), each
 /// item listed in the cells its box overlaps; an item over more than [`WIDE_CELLS`]
 /// cells is listed once, in `wide`, and met by every query.
 pub(super) struct Grid {
-    x0: f64,
-    y0: f64,
-    inv: f64,
+    xs: Steps,
+    ys: Steps,
     nx: usize,
     ny: usize,
     extent: Box2,
@@ -47,12 +47,12 @@ impl Grid {
             0.0
         };
         let cells = |len: f64| ((len * inv) as usize).clamp(0, 2 * count) + 1;
+        let (nx, ny) = (cells(w), cells(h));
         let mut grid = Grid {
-            x0: extent.x0,
-            y0: extent.y0,
-            inv,
-            nx: cells(w),
-            ny: cells(h),
+            xs: Steps::per_unit(extent.x0, inv, nx as u32),
+            ys: Steps::per_unit(extent.y0, inv, ny as u32),
+            nx,
+            ny,
             extent,
             starts: Vec::new(),
             items: Vec::new(),
@@ -66,15 +66,12 @@ impl Grid {
     /// The cell range of a box, clamped to the grid (monotone in the box's bounds, so
     /// boxes that overlap share a cell).
     fn range(&self, b: &Box2) -> (usize, usize, usize, usize) {
-        // (This runs for every point and edge: a conversion to u32, which saturates, is
-        // a few instructions where one to usize took 16; grids have far fewer cells.)
-        let step = |v: f64, lo: f64, last: usize| (((v - lo) * self.inv) as u32 as usize).min(last);
-        let (lx, ly) = (self.nx - 1, self.ny - 1);
+        let (xs, ys) = (&self.xs, &self.ys);
         (
-            step(b.x0, self.x0, lx),
-            step(b.x1, self.x0, lx),
-            step(b.y0, self.y0, ly),
-            step(b.y1, self.y0, ly),
+            xs.index(b.x0),
+            xs.index(b.x1),
+            ys.index(b.y0),
+            ys.index(b.y1),
         )
     }
 
@@ -90,7 +87,7 @@ impl Grid {
                 (!wide).then_some([x0 as u32, x1 as u32 + 1, y0 as u32, y1 as u32 + 1])
             })
             .collect();
-        // (Half-open ranges: inclusive ones made these loops several times slower.)
+        // (Half-open ranges: an inclusive range checks for its end at every step.)
         let cells = |[x0, x1, y0, y1]: [u32; 4]| {
             (y0 as usize..y1 as usize)
                 .flat_map(move |y| (x0 as usize..x1 as usize).map(move |x| y * nx + x))
