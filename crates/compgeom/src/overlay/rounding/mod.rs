@@ -73,6 +73,7 @@
 use crate::kernel::{orient2d, Orientation, Point2};
 use grid::Grid;
 use mend::nudge;
+use rayon::prelude::*;
 use std::cmp::Ordering;
 
 mod faces;
@@ -347,13 +348,25 @@ type Pair = (u32, Edge);
 /// every edge whose ends did not move against the moved points near it (a moved edge
 /// against a point is in the first), each pair once, with boxes that overlap.
 fn near_pairs(r: &RoundedRings) -> Vec<Pair> {
-    near_pairs_by(r, None)
+    near_pairs_by(r, Search::Auto)
 }
 
-/// [`near_pairs`], all box tests made one by one when `brute_force` says so (by
-/// default when there are few, [`BRUTE_FORCE_TESTS`]), else on a grid: the same pairs
-/// either way.
-fn near_pairs_by(r: &RoundedRings, brute_force: Option<bool>) -> Vec<Pair> {
+/// How [`near_pairs_by`] makes its box tests (tests force each).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(not(test), allow(dead_code))]
+enum Search {
+    /// One by one when there are few ([`BRUTE_FORCE_TESTS`]), else on a grid, its
+    /// queries on the rayon pool from [`PARALLEL_NEAR_PAIRS_FROM`] points.
+    Auto,
+    /// Every box test, one by one.
+    OneByOne,
+    /// On a grid, the queries on the rayon pool when `parallel`.
+    Grid { parallel: bool },
+}
+
+/// [`near_pairs`] by the search `how`: the same pairs, in the same order, whichever
+/// grid search.
+fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
     // Boxes twice the sizes `passes` tests, and a point's box two gaps of its own
     // coordinates wider (more than the outward rounding of the box `meets` tests).
     let point_box = |i: usize| {
@@ -394,7 +407,12 @@ fn near_pairs_by(r: &RoundedRings, brute_force: Option<bool>) -> Vec<Pair> {
     // every box against every box, cheaper than building the grid.
     // (Points, and edges: a ring has as many as points; collapsed edges left out.)
     let queries = 2 * r.points.len();
-    if brute_force.unwrap_or(queries * boxes.len() <= BRUTE_FORCE_TESTS) {
+    let one_by_one = match how {
+        Search::Auto => queries * boxes.len() <= BRUTE_FORCE_TESTS,
+        Search::OneByOne => true,
+        Search::Grid { .. } => false,
+    };
+    if one_by_one {
         let (edge_boxes, point_boxes) = boxes.split_at(moved_edges.len());
         let around_edges = edge_boxes.iter().copied().reduce(|a, b| a.union(&b));
         for x in 0..r.points.len() {
@@ -426,13 +444,15 @@ fn near_pairs_by(r: &RoundedRings, brute_force: Option<bool>) -> Vec<Pair> {
         return pairs;
     }
     let grid = Grid::new(&boxes);
-    let mut stamp = vec![usize::MAX; boxes.len()];
-    for x in 0..r.points.len() {
+    // Each point against the moved edges near it, then each unmoved edge (query
+    // `points + k` for the k-th) against the moved points near it; `stamp` as in
+    // [`Grid::visit`].
+    let point_pairs = |x: usize, stamp: &mut [usize], pairs: &mut Vec<Pair>| {
         if !grid.may_meet(&rough_box(r.points[x])) {
-            continue;
+            return;
         }
         let b = point_box(x);
-        grid.visit(&b, x, &mut stamp, |item| {
+        grid.visit(&b, x, stamp, |item| {
             if item < moved_edges.len() && boxes[item].overlaps(&b) {
                 // (Not against its own edges.)
                 let e = moved_edges[item];
@@ -441,22 +461,59 @@ fn near_pairs_by(r: &RoundedRings, brute_force: Option<bool>) -> Vec<Pair> {
                 }
             }
         });
-    }
-    let query_base = r.points.len();
-    let mut query = query_base;
+    };
+    let mut unmoved: Vec<Edge> = Vec::new();
     r.for_each_edge(|e| {
-        query += 1;
-        if moves(&e) {
-            return;
+        if !moves(&e) {
+            unmoved.push(e);
         }
+    });
+    let points = r.points.len();
+    let edge_pairs = |k: usize, stamp: &mut [usize], pairs: &mut Vec<Pair>| {
+        let e = unmoved[k];
         let b = edge_box(&e);
-        grid.visit(&b, query, &mut stamp, |item| {
+        grid.visit(&b, points + k, stamp, |item| {
             if item >= moved_edges.len() && boxes[item].overlaps(&b) {
                 pairs.push((moved_points[item - moved_edges.len()] as u32, e));
             }
         });
-    });
-    pairs
+    };
+    let parallel = match how {
+        Search::Grid { parallel } => parallel,
+        _ => points >= PARALLEL_NEAR_PAIRS_FROM,
+    };
+    if !parallel {
+        let mut stamp = vec![usize::MAX; boxes.len()];
+        let mut pairs = Vec::new();
+        for x in 0..points {
+            point_pairs(x, &mut stamp, &mut pairs);
+        }
+        for k in 0..unmoved.len() {
+            edge_pairs(k, &mut stamp, &mut pairs);
+        }
+        return pairs;
+    }
+    // Blocks of queries on the pool, their pairs joined in block order (the order of
+    // the sequential search). (Small blocks in tests, whose rings are small.)
+    const BLOCK: usize = if cfg!(test) { 8 } else { 1024 };
+    let blocks = |count: usize, query: &Query| {
+        (0..count.div_ceil(BLOCK))
+            .into_par_iter()
+            .map_init(
+                || vec![usize::MAX; boxes.len()],
+                |stamp, b| {
+                    let mut pairs = Vec::new();
+                    for k in b * BLOCK..count.min((b + 1) * BLOCK) {
+                        query(k, stamp, &mut pairs);
+                    }
+                    pairs
+                },
+            )
+            .collect::<Vec<Vec<Pair>>>()
+    };
+    let mut found = blocks(points, &point_pairs);
+    found.extend(blocks(unmoved.len(), &edge_pairs));
+    found.concat()
 }
 
 /// Up to this many box tests (points and edges times moved items) [`near_pairs`] makes
@@ -466,6 +523,13 @@ fn near_pairs_by(r: &RoundedRings, brute_force: Option<bool>) -> Vec<Pair> {
 /// xor −2% at 16 384 (at 8 192 about half that; at 65 536 the same within 0.5%); unions
 /// of two regular k-gons (2 crossings) −3% to −6% for k = 16, 50 and 200.
 const BRUTE_FORCE_TESTS: usize = 16384;
+
+/// One query of [`near_pairs`]' grid search: number, marks of items met ([`Grid::visit`]),
+/// the pairs found.
+type Query<'a> = dyn Fn(usize, &mut [usize], &mut Vec<Pair>) + Sync + 'a;
+
+/// From this many points on, the grid's queries in [`near_pairs`] run on the rayon pool.
+const PARALLEL_NEAR_PAIRS_FROM: usize = 16_384;
 
 /// A box around `c` holding its `point_box` in `near_pairs` (half sizes 4·reach + 2
 /// gaps, reach at most a gap, rounded outward by a float: at most 7 gaps per axis,
@@ -593,7 +657,7 @@ struct ExactSides<F> {
 mod tests {
     use super::{
         apart_along_an_axis, edge_reach, failing_rings, gap, meets, near_pairs_by, reach_of, Box2,
-        Edge, ExactPoints, Pair, PointIds, RoundedRings, Toward,
+        Edge, ExactPoints, Pair, PointIds, RoundedRings, Search, Toward,
     };
     use crate::kernel::{orient2d, Orientation, Point2};
     use std::cmp::Ordering;
@@ -723,13 +787,24 @@ mod tests {
                 r.starts.push(r.points.len());
             }
             let want = every_near_pair(&r);
-            for brute_force in [true, false] {
-                let mut got: Vec<_> = near_pairs_by(&r, Some(brute_force))
-                    .into_iter()
-                    .map(key)
-                    .collect();
+            let on_grid = |parallel| {
+                let pairs = near_pairs_by(&r, Search::Grid { parallel });
+                pairs.into_iter().map(key).collect::<Vec<_>>()
+            };
+            let sequential = on_grid(false);
+            assert_eq!(on_grid(true), sequential, "round {round}: another order");
+            for (how, mut got) in [
+                (
+                    Search::OneByOne,
+                    near_pairs_by(&r, Search::OneByOne)
+                        .into_iter()
+                        .map(key)
+                        .collect(),
+                ),
+                (Search::Grid { parallel: false }, sequential),
+            ] {
                 got.sort_unstable();
-                assert_eq!(got, want, "round {round}, one by one: {brute_force}");
+                assert_eq!(got, want, "round {round}, {how:?}");
             }
             found += want.len();
         }
