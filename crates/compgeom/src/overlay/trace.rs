@@ -683,7 +683,8 @@ fn traced(
     const BOUNDARY: u8 = 1;
     const TRACED: u8 = 2;
     let mut state = vec![0u8; m];
-    let mut any = false;
+    // (Boundary half-edges: each gives a ring at most one point.)
+    let mut boundary = 0usize;
     let mut has_boundary = vec![false; ncomp as usize];
     for i in 0..ne {
         let (f, g) = (cyc[2 * i], cyc[2 * i + 1]);
@@ -693,14 +694,14 @@ fn traced(
             degree[u as usize] += 1;
             degree[v as usize] += 1;
             state[2 * i + usize::from(cg)] = BOUNDARY;
-            any = true;
+            boundary += 1;
             has_boundary[comp_of[f as usize] as usize] = true;
         } else if cf && f != g {
             let (a, b) = (find(&mut class, f), find(&mut class, g));
             class[a as usize] = b;
         }
     }
-    if !any {
+    if boundary == 0 {
         return Ok(Traced {
             context_suspect: vec![false; context.len()],
             ..Traced::default()
@@ -738,11 +739,11 @@ fn traced(
     let mut flat_rings: Vec<u32> = Vec::with_capacity(ne);
     // The rounded points (and exactness flags) of one ring's vertices, computed once per
     // ring: a vertex is on few rings, so no cache over all vertices is needed.
-    let mut ring_r: Vec<Rounded> = Vec::new();
+    let mut ring_r: Vec<Rounded> = Vec::with_capacity(boundary);
     // What the check that rounding kept the result valid needs of each kept point (its
     // vertices, whether it moved), and all rings' points.
-    let mut ids: Vec<PointIds> = Vec::new();
-    let mut pts: Vec<Point2> = Vec::new();
+    let mut ids: Vec<PointIds> = Vec::with_capacity(boundary);
+    let mut pts: Vec<Point2> = Vec::with_capacity(boundary);
     // The regions where rounding made three vertices of a ring one point, or left a ring
     // fewer than three points (the check does not follow these: they are always united
     // again).
@@ -759,7 +760,11 @@ fn traced(
         .flatten()
         .map(|q| (q.x.to_bits(), q.y.to_bits()))
         .collect();
+    // (Sized once: the result's points, then the near context's.)
+    let points = boundary + context_points.len();
     let mut rounded = RoundedRings {
+        points: Vec::with_capacity(points),
+        ids: Vec::with_capacity(points),
         starts: vec![0],
         at_nearest: true,
         ..RoundedRings::default()

@@ -390,13 +390,17 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
             }
         }
     };
-    let mut moved_edges: Vec<Edge> = Vec::new();
+    let moved = r.ids.iter().filter(|id| id.moved).count();
+    let mut moved_points: Vec<usize> = Vec::with_capacity(moved);
+    moved_points.extend((0..r.points.len()).filter(|&i| r.moved(i)));
+    // (Two ring edges at each moved point, fewer where they share one: sized once,
+    // mostly.)
+    let mut moved_edges: Vec<Edge> = Vec::with_capacity(2 * moved_points.len());
     r.for_each_edge(|e| {
         if moves(&e) {
             moved_edges.push(e);
         }
     });
-    let moved_points: Vec<usize> = (0..r.points.len()).filter(|&i| r.moved(i)).collect();
     let boxes: Vec<Box2> = moved_edges
         .iter()
         .map(edge_box)
