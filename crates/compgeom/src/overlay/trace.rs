@@ -730,12 +730,15 @@ fn traced(
     }
     let on_boundary = |state: &[u8], h: u32| state[h as usize] != 0;
     let mut region_of = vec![NONE; ncycles];
-    let mut regions: Vec<Region> = Vec::new();
+    // (Rings have three points or more: room for that many rings, up to a few hundred,
+    // saves the first reallocations of the lists per ring.)
+    let rings_hint = (boundary / 3 + 2).min(256);
+    let mut regions: Vec<Region> = Vec::with_capacity(rings_hint);
     let mut pos = vec![NONE; nv];
     // (A boundary cycle has at most one half-edge per edge: sized once, not grown.)
     let mut cycle: Vec<u32> = Vec::with_capacity(ne);
     let mut stack: Vec<u32> = Vec::with_capacity(ne);
-    let mut rings: Vec<(usize, usize)> = Vec::new();
+    let mut rings: Vec<(usize, usize)> = Vec::with_capacity(rings_hint);
     let mut flat_rings: Vec<u32> = Vec::with_capacity(ne);
     // The rounded points (and exactness flags) of one ring's vertices, computed once per
     // ring: a vertex is on few rings, so no cache over all vertices is needed.
@@ -749,7 +752,7 @@ fn traced(
     // again).
     let mut collapsed: Vec<usize> = Vec::new();
     // Per ring checked, its region (then the context's polygons).
-    let mut owner: Vec<usize> = Vec::new();
+    let mut owner: Vec<usize> = Vec::with_capacity(rings_hint);
     // The context's polygons that may touch or come near this result (the others
     // cannot touch its rings, nor be near them in the check), and their points: where
     // they touch this result's rings.
@@ -765,10 +768,11 @@ fn traced(
     let mut rounded = RoundedRings {
         points: Vec::with_capacity(points),
         ids: Vec::with_capacity(points),
-        starts: vec![0],
+        starts: Vec::with_capacity(rings_hint + 1),
         at_nearest: true,
         ..RoundedRings::default()
     };
+    rounded.starts.push(0);
     for start in 0..m as u32 {
         if state[start as usize] != BOUNDARY {
             continue;

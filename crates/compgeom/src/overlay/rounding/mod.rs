@@ -406,7 +406,6 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
         .map(edge_box)
         .chain(moved_points.iter().map(|&i| point_box(i)))
         .collect();
-    let mut pairs = Vec::new();
     // Few moved items against few points and edges (most results of small inputs):
     // every box against every box, cheaper than building the grid.
     // (Points, and edges: a ring has as many as points; collapsed edges left out.)
@@ -417,6 +416,8 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
         Search::Grid { .. } => false,
     };
     if one_by_one {
+        // (About as many pairs as moved items, mostly.)
+        let mut pairs = Vec::with_capacity(boxes.len());
         let (edge_boxes, point_boxes) = boxes.split_at(moved_edges.len());
         let around_edges = edge_boxes.iter().copied().reduce(|a, b| a.union(&b));
         for x in 0..r.points.len() {
