@@ -12,56 +12,54 @@
 //! turns (a vertex only the left-out segments made lies where the boundary goes straight
 //! on, and is dropped from the output anyway).
 //!
+//! The classes of equal segments come from the end vertices the noding hashes anyway
+//! (input of many short rings, see [`super::noding`]; other input is not looked at: a
+//! shared side is rare there and the look would cost more than it finds), and they are
+//! also the noding's copies (a class's segments left are tested once).
+//!
 //! Session 27, GEOS-837 dissolve (2580 segments, about 650 shared sides): the noding and
 //! every later stage see about half the segments.
 
-use crate::kernel::{Point2, Segment2};
-
 const NONE: u32 = u32::MAX;
 
-/// The segments of `segs` (the first `na` from input A, the rest from B) without those
-/// whose contributions to the winding numbers cancel, and how many of those left are
-/// from A; `None` when none is left out. Only input of many short rings (maps,
-/// dissolves: [`super::noding::short_rings`]) is looked at; on other input a shared side
-/// is rare and the look would cost more than it finds.
-pub(crate) fn without_cancelling(segs: &[Segment2], na: usize) -> Option<(Vec<Segment2>, usize)> {
-    if !super::noding::short_rings(segs) || !sides_shared(segs) {
-        return None;
-    }
-    let left = left_after_cancelling(segs, |k| k < na)?;
-    let left_in_a = left.partition_point(|&k| k < na);
-    Some((left.into_iter().map(|k| segs[k]).collect(), left_in_a))
-}
-
-/// The numbers (ascending) of the segments of `segs` left when every class of equal
-/// segments whose contributions cancel is left out: as many of its segments from input A
-/// (`in_a`) run one way as the other, and likewise from input B. `None` when no class
-/// cancels. (Segments of zero length count as running one way: they never cancel, and
-/// add nothing to any winding number anyway.) An open-addressing hash of the segments'
-/// end points (exact equality, -0 = 0), O(n) expected.
-fn left_after_cancelling(segs: &[Segment2], in_a: impl Fn(usize) -> bool) -> Option<Vec<usize>> {
-    let n = segs.len();
+/// The classes of segments with the same two end vertices (either way round) and which of
+/// them cancel, from the segments' end vertices `of` (equal points one vertex: the
+/// noding's hashed ends). A class cancels when as many of its segments from input A
+/// (`in_a`) run one way as the other, and likewise from input B. Returns per segment the
+/// first segment of its class, and the numbers (ascending) of the segments left when
+/// every class that cancels is left out (`None` when none does). (Segments of zero
+/// length count as running one way: they never cancel, and add nothing to any winding
+/// number anyway.) An open-addressing hash of the vertex pairs, O(n) expected.
+pub(super) fn classes(
+    of: &[[u32; 2]],
+    in_a: impl Fn(usize) -> bool,
+) -> (Vec<u32>, Option<Vec<usize>>) {
+    let n = of.len();
     // A table at most half full.
     let bits = (2 * n).max(16).next_power_of_two().trailing_zeros();
     let mask = (1usize << bits) - 1;
-    // Per slot the first segment of a class.
+    let key = |[u, v]: [u32; 2]| {
+        let (lo, hi) = if u <= v { (u, v) } else { (v, u) };
+        u64::from(lo) << 32 | u64::from(hi)
+    };
+    // Per slot the first segment of a class (its key read from `of`).
     let mut slots = vec![NONE; 1 << bits];
-    // Per segment the first of its class; per first the class's net count of segments
-    // running from its smaller end (lexicographic) to its larger, in A and in B.
-    let mut first_of: Vec<u32> = Vec::with_capacity(n);
+    // Per first the class's net count of segments running from its smaller vertex to
+    // its larger, in A and in B.
     let mut net = vec![[0i32; 2]; n];
+    let mut first_of: Vec<u32> = Vec::with_capacity(n);
     let mut shared = false;
-    for (k, s) in segs.iter().enumerate() {
-        let (lo, hi) = ends(s);
-        let up = if lo == s.a { 1 } else { -1 };
-        let mut at = (hash(lo, hi) >> (64 - bits)) as usize;
+    for (k, &e) in of.iter().enumerate() {
+        let want = key(e);
+        let up = if e[0] <= e[1] { 1 } else { -1 };
+        let mut at = (want.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (64 - bits)) as usize;
         let first = loop {
             let f = slots[at];
             if f == NONE {
                 slots[at] = k as u32;
                 break k;
             }
-            if ends(&segs[f as usize]) == (lo, hi) {
+            if key(of[f as usize]) == want {
                 shared = true;
                 break f as usize;
             }
@@ -71,81 +69,37 @@ fn left_after_cancelling(segs: &[Segment2], in_a: impl Fn(usize) -> bool) -> Opt
         first_of.push(first as u32);
     }
     if !shared {
-        return None;
+        return (first_of, None);
     }
     let left: Vec<usize> = (0..n)
         .filter(|&k| net[first_of[k] as usize] != [0, 0])
         .collect();
-    (left.len() < n).then_some(left)
-}
-
-/// Segments spread evenly over the input whose equals are looked for by
-/// [`sides_shared`].
-const SAMPLE: usize = 256;
-
-/// Whether another segment has the same two end points as one of [`SAMPLE`] segments
-/// spread evenly over `segs` (all of them for small input): where neighbouring rings
-/// share sides, about half the segments have such a twin and the first is met early;
-/// where none do (separate footprints, overlapping squares) the look costs one probe of
-/// a table that stays in the L1 cache per segment, instead of the full hash's cache
-/// misses (90,000 disjoint quads: the full hash took 6-7% of `union_all` for nothing).
-fn sides_shared(segs: &[Segment2]) -> bool {
-    let n = segs.len();
-    if n <= 4 * SAMPLE {
-        return true;
-    }
-    const BITS: u32 = 10; // 1024 slots for 256 samples
-    let mut slots = [NONE; 1 << BITS];
-    let step = n / SAMPLE;
-    let slot_of = |(lo, hi): (Point2, Point2)| (hash(lo, hi) >> (64 - BITS)) as usize;
-    for k in (0..n).step_by(step).take(SAMPLE) {
-        let mut at = slot_of(ends(&segs[k]));
-        while slots[at] != NONE {
-            at = (at + 1) & ((1 << BITS) - 1);
-        }
-        slots[at] = k as u32;
-    }
-    segs.iter().enumerate().any(|(k, s)| {
-        let (lo, hi) = ends(s);
-        let mut at = slot_of((lo, hi));
-        while slots[at] != NONE {
-            let f = slots[at] as usize;
-            if f != k && ends(&segs[f]) == (lo, hi) {
-                return true;
-            }
-            at = (at + 1) & ((1 << BITS) - 1);
-        }
-        false
-    })
-}
-
-/// The ends of `s`, the lexicographically smaller first.
-#[inline(always)]
-fn ends(s: &Segment2) -> (Point2, Point2) {
-    if (s.a.x, s.a.y) < (s.b.x, s.b.y) {
-        (s.a, s.b)
-    } else {
-        (s.b, s.a)
-    }
-}
-
-/// A hash of the segment `lo`–`hi` (-0 folded into 0, so that equal points hash alike).
-#[inline(always)]
-fn hash(lo: Point2, hi: Point2) -> u64 {
-    let word = |v: f64| (v + 0.0).to_bits();
-    let mut h = word(lo.x).wrapping_mul(0x9E37_79B9_7F4A_7C15);
-    for v in [lo.y, hi.x, hi.y] {
-        h = (h.rotate_left(29) ^ word(v)).wrapping_mul(0xD6E8_FEB8_6659_FD93);
-    }
-    h
+    let left = (left.len() < n).then_some(left);
+    (first_of, left)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dcel::Flat;
+    use crate::kernel::{Point2, Segment2};
 
     fn seg(a: (f64, f64), b: (f64, f64)) -> Segment2 {
         Segment2::new(Point2::new(a.0, a.1), Point2::new(b.0, b.1))
+    }
+
+    /// The segments left by [`classes`], with vertices from a plain map of the points
+    /// (exact equality, -0 = 0).
+    fn left_of(segs: &[Segment2], in_a: impl Fn(usize) -> bool) -> Option<Vec<usize>> {
+        let mut vertex = std::collections::HashMap::new();
+        let mut id = |p: Point2| {
+            let n = vertex.len() as u32;
+            *vertex
+                .entry(((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits()))
+                .or_insert(n)
+        };
+        let of: Vec<[u32; 2]> = segs.iter().map(|s| [id(s.a), id(s.b)]).collect();
+        classes(&of, in_a).1
     }
 
     #[test]
@@ -159,12 +113,9 @@ mod tests {
             seg((1.0, 1.0), (0.0, 1.0)),
             seg((0.0, 1.0), (1.0, 0.0)),
         ];
-        assert_eq!(
-            left_after_cancelling(&segs, |_| true),
-            Some(vec![0, 2, 3, 4])
-        );
+        assert_eq!(left_of(&segs, |_| true), Some(vec![0, 2, 3, 4]));
         // From different inputs they do not cancel.
-        assert_eq!(left_after_cancelling(&segs, |k| k < 3), None);
+        assert_eq!(left_of(&segs, |k| k < 3), None);
     }
 
     #[test]
@@ -181,18 +132,27 @@ mod tests {
         let set = crate::MultiPolygon(polygons);
         let (segs, _) = crate::dcel::polygon_segments(&set).unwrap();
         assert_eq!(segs.len(), 24);
-        let (left, in_a) = without_cancelling(&segs, segs.len()).unwrap();
-        assert_eq!((left.len(), in_a), (8, 8));
+        let left = |na: usize| {
+            let (left, flat, deltas) = Flat::of_segments_summed_cancelling(&segs, na).unwrap();
+            let (left, in_a) = left.expect("inner sides cancel");
+            // The arrangement of the segments left, as if they were the input.
+            let (again, deltas_again) = Flat::of_segments_summed(&left, in_a).unwrap();
+            assert_eq!(flat.edges, again.edges);
+            assert_eq!(deltas, deltas_again);
+            (left, in_a)
+        };
+        let (all, in_a) = left(segs.len());
+        assert_eq!((all.len(), in_a), (8, 8));
         // Every segment left lies on the square's outline.
         let on_outline =
             |p: Point2| p.x == 0.0 || p.y == 0.0 || p.x == q(2, 2).x || p.y == q(2, 2).y;
-        assert!(left.iter().all(|s| on_outline(s.a) && on_outline(s.b)));
+        assert!(all.iter().all(|s| on_outline(s.a) && on_outline(s.b)));
         // The bottom row in A, the top row in B: the two sides between the rows stay,
         // once in each.
-        let (left, in_a) = without_cancelling(&segs, 12).unwrap();
-        assert_eq!((left.len(), in_a), (12, 6));
+        let (rows, in_a) = left(12);
+        assert_eq!((rows.len(), in_a), (12, 6));
         assert_eq!(
-            left.iter()
+            rows.iter()
                 .filter(|s| s.a.y == q(0, 1).y && s.b.y == s.a.y)
                 .count(),
             4
@@ -205,8 +165,8 @@ mod tests {
     }
 
     #[test]
-    fn shared_sides_are_seen_from_a_sample() {
-        // 2000 separate unit squares: no side shared, so nothing is looked up.
+    fn shared_sides_cancel_wherever_they_are() {
+        // 2000 separate unit squares: no side shared, nothing cancelled.
         let square = |x: f64, y: f64| {
             let p = [(x, y), (x + 1.0, y), (x + 1.0, y + 1.0), (x, y + 1.0)];
             (0..4).map(move |i| seg(p[i], p[(i + 1) % 4]))
@@ -214,24 +174,21 @@ mod tests {
         let apart: Vec<Segment2> = (0..2000)
             .flat_map(|k| square(2.0 * f64::from(k % 50), 2.0 * f64::from(k / 50)))
             .collect();
-        assert!(!sides_shared(&apart));
-        assert_eq!(without_cancelling(&apart, apart.len()), None);
-        // Touching squares (a grid of them) share sides: seen, and cancelled.
+        assert_eq!(left_of(&apart, |_| true), None);
+        // Touching squares (a grid of them) share sides: cancelled, leaving the outline
+        // of the 50 × 40 block, 2 · (50 + 40) unit sides.
         let grid: Vec<Segment2> = (0..2000)
             .flat_map(|k| square(f64::from(k % 50), f64::from(k / 50)))
             .collect();
-        assert!(sides_shared(&grid));
-        let (left, _) = without_cancelling(&grid, grid.len()).unwrap();
-        // The outline of the 50 × 40 block: 2 · (50 + 40) unit sides.
-        assert_eq!(left.len(), 180);
-        // A reversed copy of a sampled segment (the first is) is seen wherever it is;
-        // one of a segment between the samples may not be (then nothing is cancelled,
-        // which is still right).
-        let mut one = apart.clone();
-        one.push(Segment2::new(one[0].b, one[0].a));
-        assert!(sides_shared(&one));
-        let (left, _) = without_cancelling(&one, one.len()).unwrap();
-        assert_eq!(left.len(), apart.len() - 1);
+        assert_eq!(left_of(&grid, |_| true).map(|l| l.len()), Some(180));
+        // A reversed copy of any one segment cancels it.
+        for k in [0, 777, 7999] {
+            let mut one = apart.clone();
+            one.push(Segment2::new(one[k].b, one[k].a));
+            let left = left_of(&one, |_| true).unwrap();
+            assert_eq!(left.len(), apart.len() - 1);
+            assert!(!left.contains(&k));
+        }
     }
 
     #[test]
@@ -240,19 +197,16 @@ mod tests {
         let ba = seg((2.0, 1.0), (0.0, 0.0));
         let other = seg((-0.0, 0.0), (2.0, 3.0));
         // Twice one way, once the other: +1 left, all three kept.
-        assert_eq!(left_after_cancelling(&[ab, ab, ba, other], |_| true), None);
+        assert_eq!(left_of(&[ab, ab, ba, other], |_| true), None);
         // Twice each way, -0 equal to 0: the class goes.
         let ab0 = seg((-0.0, 0.0), (2.0, 1.0));
-        assert_eq!(
-            left_after_cancelling(&[ab, other, ba, ab0, ba], |_| true),
-            Some(vec![1])
-        );
+        assert_eq!(left_of(&[ab, other, ba, ab0, ba], |_| true), Some(vec![1]));
         // A and B each cancel on their own: +1 -1 in A, +1 -1 in B.
-        assert_eq!(
-            left_after_cancelling(&[ab, ba, ab, ba, other], |k| k < 2),
-            Some(vec![4])
-        );
+        assert_eq!(left_of(&[ab, ba, ab, ba, other], |k| k < 2), Some(vec![4]));
         // +1 in A and -1 in B do not cancel.
-        assert_eq!(left_after_cancelling(&[ab, ba], |k| k < 1), None);
+        assert_eq!(left_of(&[ab, ba], |k| k < 1), None);
+        // A point never cancels (it runs "one way" both times).
+        let dot = seg((1.0, 1.0), (1.0, 1.0));
+        assert_eq!(left_of(&[dot, dot, ab, ba], |_| true), Some(vec![0, 1]));
     }
 }

@@ -463,7 +463,7 @@ fn add_source((da, db): (i32, i32), s: &Source, na: usize) -> (i32, i32) {
 }
 
 /// `Err` naming the first segment with a non-finite coordinate.
-fn check_finite(segments: &[Segment2]) -> Result<()> {
+pub(super) fn check_finite(segments: &[Segment2]) -> Result<()> {
     {
         // x · 0 is 0 (or −0) for finite x, NaN for infinities and NaN: one sum without
         // branches tells whether all are finite; only then the segment is looked for.

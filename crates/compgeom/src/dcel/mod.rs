@@ -49,7 +49,6 @@ mod validate;
 
 pub(crate) use build::push_ring_segments;
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
-pub(crate) use cancel::without_cancelling;
 pub use export::exact_coords;
 pub(crate) use flat::{rounded_away, Flat};
 pub(crate) use holes::{compare_xy_filtered, compare_y_filtered, faces_left_of, side, Rounded};

@@ -830,6 +830,7 @@ impl Flat {
         Flat::noded_then(
             segments,
             how,
+            None,
             |pieces, vertices| pieces.finish_numbered(vertices, true),
             Flat::general,
         )
@@ -845,16 +846,73 @@ impl Flat {
         Flat::noded_then(
             segments,
             Candidates::Auto,
+            None,
             |pieces, vertices| pieces.finish_summed(vertices, na),
             |segments| Flat::general(segments).map(|f| f.summed(na)),
         )
     }
 
+    /// [`Flat::of_segments_summed`] of the segments left when those whose contributions
+    /// to the winding numbers cancel are left out ([`super::cancel`]), and, when some
+    /// were, the segments left and how many of them are from A. Only input of many short
+    /// rings ([`short_rings`]: maps, dissolves) is looked at; its ends are hashed into
+    /// vertices once, for the cancelling and the noding both, and the classes of equal
+    /// segments left are the noding's copies.
+    #[allow(clippy::type_complexity)]
+    pub(crate) fn of_segments_summed_cancelling(
+        segments: &[Segment2],
+        na: usize,
+    ) -> Result<(Option<(Vec<Segment2>, usize)>, Flat, Vec<(i32, i32)>)> {
+        // (Horizontal and vertical segments only: their own arrangement, without a hash,
+        // is cheaper than looking for shared sides first.)
+        let axis_parallel = |s: &Segment2| s.a.y == s.b.y || s.a.x == s.b.x;
+        let hashed = short_rings(segments)
+            && segments.len() < 1 << 29
+            && !segments.iter().all(axis_parallel)
+            && !segments.iter().any(Segment2::is_degenerate);
+        if !hashed {
+            let (flat, deltas) = Flat::of_segments_summed(segments, na)?;
+            return Ok((None, flat, deltas));
+        }
+        super::flat::check_finite(segments)?;
+        let mut ends = Ends::hashed(segments);
+        let (first_of, left) = super::cancel::classes(&ends.of, |k| k < na);
+        // The segments left, their ends and classes (numbered as before).
+        let (segs, na, classes): (Cow<[Segment2]>, usize, Vec<u32>) = match &left {
+            None => (Cow::Borrowed(segments), na, first_of),
+            Some(left) => {
+                ends.of = left.iter().map(|&k| ends.of[k]).collect();
+                (
+                    Cow::Owned(left.iter().map(|&k| segments[k]).collect()),
+                    left.partition_point(|&k| k < na),
+                    left.iter().map(|&k| first_of[k]).collect(),
+                )
+            }
+        };
+        let (flat, deltas) = match Flat::axis_parallel(&segs) {
+            Some(f) => f.summed(na),
+            None => {
+                let copies = Copies::of_classes(&classes, segments.len());
+                Flat::noded_then(
+                    &segs,
+                    Candidates::Auto,
+                    Some((ends, copies)),
+                    |pieces, vertices| pieces.finish_summed(vertices, na),
+                    |segments| Flat::general(segments).map(|f| f.summed(na)),
+                )?
+            }
+        };
+        let left = left.is_some().then(|| (segs.into_owned(), na));
+        Ok((left, flat, deltas))
+    }
+
     /// The noding of [`Flat::noded_by`], its pieces made into the result by `finish`, or
-    /// `general` when the lean noding does not apply.
+    /// `general` when the lean noding does not apply. `prepared`: the exact ends of
+    /// `segments` and their copies, already found (none of them is a point).
     fn noded_then<T>(
         segments: &[Segment2],
         how: Candidates,
+        prepared: Option<(Ends, Option<Copies>)>,
         finish: impl FnOnce(Pieces, Vertices) -> T,
         general: impl FnOnce(&[Segment2]) -> Result<T>,
     ) -> Result<T> {
@@ -874,10 +932,17 @@ impl Flat {
         if sub.len() >= 1 << 29 {
             return general(segments);
         }
-        let ends = Ends::of(&sub);
         // With exact ends, an edge given more than once (neighbouring rings share their
         // common edges) is tested once: its copies take its pieces.
-        let found = match ends.exact.then(|| Copies::of(&ends.of)).flatten() {
+        let (ends, copies) = match prepared {
+            Some(prepared) => prepared,
+            None => {
+                let ends = Ends::of(&sub);
+                let copies = ends.exact.then(|| Copies::of(&ends.of)).flatten();
+                (ends, copies)
+            }
+        };
+        let found = match copies {
             Some(copies) => found_by_once(&sub, &ends, copies, how),
             None => found_by(&sub, &ends, how),
         };
@@ -935,6 +1000,26 @@ impl Copies {
                     break;
                 }
                 at = (at + 1) & mask;
+            }
+        }
+        (first.len() < n).then_some(Copies { first, copy_of })
+    }
+
+    /// The copies among segments of the given classes (`classes[k]` below `bound`, equal
+    /// for segments with the same two end vertices): [`Copies::of`] from classes already
+    /// found, without a hash.
+    fn of_classes(classes: &[u32], bound: usize) -> Option<Copies> {
+        let n = classes.len();
+        let mut first_in = vec![NONE; bound];
+        let mut copy_of = vec![NONE; n];
+        let mut first = Vec::with_capacity(n);
+        for (k, &c) in classes.iter().enumerate() {
+            let slot = &mut first_in[c as usize];
+            if *slot == NONE {
+                *slot = k as u32;
+                first.push(k as u32);
+            } else {
+                copy_of[k] = *slot;
             }
         }
         (first.len() < n).then_some(Copies { first, copy_of })
@@ -1479,6 +1564,75 @@ mod tests {
             );
         }
         assert!(!Ends::of(&star(500, 0.0, 3, 9)).exact);
+    }
+
+    #[test]
+    fn cancelling_then_noding_is_the_noding_of_what_is_left() {
+        let mut state = 7u64;
+        let mut next = move |m: u64| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 33) % m
+        };
+        let mut cancelled = 0;
+        for round in 0..60 {
+            let grid = [3u64, 6, 12][round % 3];
+            let mut segs = Vec::new();
+            for _ in 0..40 + next(80) {
+                let k = 3 + next(3) as usize;
+                let (cx, cy) = (next(grid) as f64, next(grid) as f64);
+                let ring: Vec<Point2> = (0..k)
+                    .map(|_| Point2::new(cx + next(3) as f64, cy + next(3) as f64 * 0.5))
+                    .collect();
+                for w in 0..k {
+                    let s = Segment2::new(ring[w], ring[(w + 1) % k]);
+                    if !s.is_degenerate() {
+                        segs.push(s);
+                    }
+                }
+                // Shared sides: some run back, some again the same way.
+                if next(2) == 0 && segs.len() > 1 {
+                    let s = segs[next(segs.len() as u64) as usize];
+                    segs.push(if next(3) == 0 {
+                        s
+                    } else {
+                        Segment2::new(s.b, s.a)
+                    });
+                }
+            }
+            // (-0 and 0 are one point.)
+            segs.push(Segment2::new(Point2::new(-0.0, 0.0), Point2::new(2.0, 1.0)));
+            segs.push(Segment2::new(Point2::new(2.0, 1.0), Point2::new(0.0, -0.0)));
+            let na = next(segs.len() as u64 + 1) as usize;
+            assert!(short_rings(&segs));
+            let (left, flat, deltas) = Flat::of_segments_summed_cancelling(&segs, na).unwrap();
+            let (kept, kept_na) = left.clone().unwrap_or((segs.clone(), na));
+            if left.is_some() {
+                cancelled += segs.len() - kept.len();
+            }
+            // What is left is what the cancelling of equal points leaves.
+            let ends = Ends::hashed(&segs);
+            let (first_of, by_classes) = super::super::cancel::classes(&ends.of, |k| k < na);
+            let listed: Vec<Segment2> = by_classes
+                .as_ref()
+                .map_or(segs.clone(), |l| l.iter().map(|&k| segs[k]).collect());
+            assert_eq!(kept, listed, "round {round}");
+            // The same arrangement as noding it from scratch.
+            assert_eq!(
+                (flat, deltas),
+                Flat::of_segments_summed(&kept, kept_na).unwrap(),
+                "round {round}"
+            );
+            // The classes' copies are the hash's.
+            let copies = |c: Option<Copies>| c.map(|c| (c.first, c.copy_of));
+            assert_eq!(
+                copies(Copies::of_classes(&first_of, segs.len())),
+                copies(Copies::of(&ends.of)),
+                "round {round}"
+            );
+        }
+        assert!(cancelled > 200, "only {cancelled} segments cancelled");
     }
 
     fn sweep_of(segs: &[Segment2], layout: Layout, budget: u64) -> Option<XSweep> {

@@ -44,9 +44,7 @@
 //! and a few tests per component on map-like data) or the hole sweep.
 use super::boolean::{oriented_segments, FillRule};
 use super::rounding::{failing_rings, ExactPoints, PointIds, RoundedRings, REPAIRS};
-use crate::dcel::{
-    compare_y_filtered, faces_left_of, side, without_cancelling, Carrier, Flat, Rounded,
-};
+use crate::dcel::{compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounded};
 use crate::kernel::arith::ordered_key as okey;
 use crate::kernel::steps::Steps;
 use crate::kernel::{
@@ -359,18 +357,18 @@ fn traced(
 ) -> Result<Traced> {
     // Segments whose contributions to the winding numbers cancel (the sides neighbouring
     // polygons of one input share) go first, unless every vertex on the boundary is to
-    // be kept: the faces' winding numbers stay the same, from fewer edges.
-    let left = if keep_collinear {
-        None
+    // be kept: the faces' winding numbers stay the same, from fewer edges. Per edge its
+    // first source and the winding changes across it (crossing a ring edge a → b from
+    // its right to its left adds one).
+    let (left, flat, deltas) = if keep_collinear {
+        let (flat, deltas) = Flat::of_segments_summed(segs, na)?;
+        (None, flat, deltas)
     } else {
-        without_cancelling(segs, na)
+        Flat::of_segments_summed_cancelling(segs, na)?
     };
     let (segs, na) = left
         .as_ref()
         .map_or((segs, na), |(s, n)| (s.as_slice(), *n));
-    // Per edge its first source and the winding changes across it (crossing a ring
-    // edge a → b from its right to its left adds one).
-    let (flat, deltas) = Flat::of_segments_summed(segs, na)?;
     let nv = flat.vertices.len();
     let ne = flat.edge_count();
     let m = 2 * ne;

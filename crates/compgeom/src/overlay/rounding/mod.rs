@@ -73,7 +73,6 @@
 use crate::kernel::{orient2d, Orientation, Point2};
 use grid::Grid;
 use mend::nudge;
-use rayon::prelude::*;
 use std::cmp::Ordering;
 
 mod faces;
@@ -355,17 +354,15 @@ fn near_pairs(r: &RoundedRings) -> Vec<Pair> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(not(test), allow(dead_code))]
 enum Search {
-    /// One by one when there are few ([`BRUTE_FORCE_TESTS`]), else on a grid, its
-    /// queries on the rayon pool from [`PARALLEL_NEAR_PAIRS_FROM`] points.
+    /// One by one when there are few ([`BRUTE_FORCE_TESTS`]), else on a grid.
     Auto,
     /// Every box test, one by one.
     OneByOne,
-    /// On a grid, the queries on the rayon pool when `parallel`.
-    Grid { parallel: bool },
+    /// On a grid.
+    Grid,
 }
 
-/// [`near_pairs`] by the search `how`: the same pairs, in the same order, whichever
-/// grid search.
+/// [`near_pairs`] by the search `how`: the same pairs either way.
 fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
     // Boxes twice the sizes `passes` tests, and a point's box two gaps of its own
     // coordinates wider (more than the outward rounding of the box `meets` tests).
@@ -413,7 +410,7 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
     let one_by_one = match how {
         Search::Auto => queries * boxes.len() <= BRUTE_FORCE_TESTS,
         Search::OneByOne => true,
-        Search::Grid { .. } => false,
+        Search::Grid => false,
     };
     if one_by_one {
         // (About as many pairs as moved items, mostly.)
@@ -483,42 +480,15 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
             }
         });
     };
-    let parallel = match how {
-        Search::Grid { parallel } => parallel,
-        _ => points >= PARALLEL_NEAR_PAIRS_FROM,
-    };
-    if !parallel {
-        let mut stamp = vec![usize::MAX; boxes.len()];
-        let mut pairs = Vec::new();
-        for x in 0..points {
-            point_pairs(x, &mut stamp, &mut pairs);
-        }
-        for k in 0..unmoved.len() {
-            edge_pairs(k, &mut stamp, &mut pairs);
-        }
-        return pairs;
+    let mut stamp = vec![usize::MAX; boxes.len()];
+    let mut pairs = Vec::new();
+    for x in 0..points {
+        point_pairs(x, &mut stamp, &mut pairs);
     }
-    // Blocks of queries on the pool, their pairs joined in block order (the order of
-    // the sequential search). (Small blocks in tests, whose rings are small.)
-    const BLOCK: usize = if cfg!(test) { 8 } else { 1024 };
-    let blocks = |count: usize, query: &Query| {
-        (0..count.div_ceil(BLOCK))
-            .into_par_iter()
-            .map_init(
-                || vec![usize::MAX; boxes.len()],
-                |stamp, b| {
-                    let mut pairs = Vec::new();
-                    for k in b * BLOCK..count.min((b + 1) * BLOCK) {
-                        query(k, stamp, &mut pairs);
-                    }
-                    pairs
-                },
-            )
-            .collect::<Vec<Vec<Pair>>>()
-    };
-    let mut found = blocks(points, &point_pairs);
-    found.extend(blocks(unmoved.len(), &edge_pairs));
-    found.concat()
+    for k in 0..unmoved.len() {
+        edge_pairs(k, &mut stamp, &mut pairs);
+    }
+    pairs
 }
 
 /// Up to this many box tests (points and edges times moved items) [`near_pairs`] makes
@@ -528,13 +498,6 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
 /// xor −2% at 16 384 (at 8 192 about half that; at 65 536 the same within 0.5%); unions
 /// of two regular k-gons (2 crossings) −3% to −6% for k = 16, 50 and 200.
 const BRUTE_FORCE_TESTS: usize = 16384;
-
-/// One query of [`near_pairs`]' grid search: number, marks of items met ([`Grid::visit`]),
-/// the pairs found.
-type Query<'a> = dyn Fn(usize, &mut [usize], &mut Vec<Pair>) + Sync + 'a;
-
-/// From this many points on, the grid's queries in [`near_pairs`] run on the rayon pool.
-const PARALLEL_NEAR_PAIRS_FROM: usize = 16_384;
 
 /// A box around `c` holding its `point_box` in `near_pairs` (half sizes 4·reach + 2
 /// gaps, reach at most a gap, rounded outward by a float: at most 7 gaps per axis,
@@ -792,22 +755,8 @@ mod tests {
                 r.starts.push(r.points.len());
             }
             let want = every_near_pair(&r);
-            let on_grid = |parallel| {
-                let pairs = near_pairs_by(&r, Search::Grid { parallel });
-                pairs.into_iter().map(key).collect::<Vec<_>>()
-            };
-            let sequential = on_grid(false);
-            assert_eq!(on_grid(true), sequential, "round {round}: another order");
-            for (how, mut got) in [
-                (
-                    Search::OneByOne,
-                    near_pairs_by(&r, Search::OneByOne)
-                        .into_iter()
-                        .map(key)
-                        .collect(),
-                ),
-                (Search::Grid { parallel: false }, sequential),
-            ] {
+            for how in [Search::OneByOne, Search::Grid] {
+                let mut got: Vec<_> = near_pairs_by(&r, how).into_iter().map(key).collect();
                 got.sort_unstable();
                 assert_eq!(got, want, "round {round}, {how:?}");
             }
