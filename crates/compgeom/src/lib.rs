@@ -53,6 +53,8 @@ pub mod lp;
 pub mod overlay;
 pub mod range;
 pub mod render;
+#[cfg(test)]
+mod testing;
 pub mod triangulate;
 pub mod voronoi;
 pub mod windowing;

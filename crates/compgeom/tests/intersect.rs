@@ -1,6 +1,7 @@
 //! Segment intersection (book §2.1): the sweep against the exact brute-force oracle on
 //! random and deliberately degenerate input, plus hand-made cases for every degenerate
 //! situation, the O(n) queue bound, Shamos–Hoey / is_simple and red/blue.
+mod common;
 
 use compgeom::intersect::{
     any_intersection, brute_force_intersections, count_intersections, count_intersections_with,
@@ -646,13 +647,7 @@ fn the_default_switches_to_the_sweep_for_long_non_meeting_segments() {
 fn large_inputs_run_in_parallel_with_the_same_answer() {
     // 20 000 short segments on a 150×150 grid (the pairwise method's parallel scan) and
     // the sweep agree exactly.
-    let mut state = 99u64;
-    let mut next = move |m: u64| {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (state >> 33) % m
-    };
+    let mut next = common::below(99u64);
     let segs: Vec<Segment2> = (0..20_000)
         .map(|_| {
             let (x, y) = (next(151) as f64, next(151) as f64);
@@ -678,13 +673,7 @@ fn large_inputs_run_in_parallel_with_the_same_answer() {
 fn many_crossings_are_rounded_in_parallel_with_the_same_answer() {
     // 1000 segments across a square: about 250 000 crossings, enough for the pairwise
     // method to build its points on the rayon pool; the sweep must agree exactly.
-    let mut state = 5u64;
-    let mut unit = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut unit = common::units(5u64);
     let segs: Vec<Segment2> = (0..1000).map(|_| s(0.0, unit(), 1.0, unit())).collect();
     let by_pairs = pairwise_intersections(&segs).unwrap();
     assert!(by_pairs.points.len() > 200_000);
@@ -703,13 +692,7 @@ fn counting_merges_crossings_that_coincide_exactly() {
     // passes through it at a third of its length. Their crossings have overlapping
     // boxes and must merge into one point; sixty random long segments cross them
     // elsewhere. The count and the full answer agree with the oracle.
-    let mut state = 21u64;
-    let mut unit = move || {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut unit = common::units(21u64);
     let ends = [
         (0, 0),
         (1, 0),

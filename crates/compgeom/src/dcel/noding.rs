@@ -1435,13 +1435,7 @@ mod tests {
     /// coordinates rounded to multiples of `1 / 2^grid` (coarse grids: repeated vertices,
     /// collinear runs, edges shared between the two rings).
     fn star(n: usize, cx: f64, seed: u64, grid: i32) -> Vec<Segment2> {
-        let mut state = seed;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(seed);
         let mut angles: Vec<f64> = (0..n).map(|_| std::f64::consts::TAU * unit()).collect();
         angles.sort_by(f64::total_cmp);
         let snap = |v: f64| (v * 2f64.powi(grid)).round() / 2f64.powi(grid);
@@ -1504,13 +1498,7 @@ mod tests {
     /// stars.
     #[test]
     fn hashed_ends_agree_with_ends_by_segment() {
-        let mut state = 99u64;
-        let mut next = move |m: u64| {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 33) % m
-        };
+        let mut next = crate::testing::below(99u64);
         for grid in [3u64, 6, 12] {
             let mut segs = Vec::new();
             for _ in 0..150 {
@@ -1568,13 +1556,7 @@ mod tests {
 
     #[test]
     fn cancelling_then_noding_is_the_noding_of_what_is_left() {
-        let mut state = 7u64;
-        let mut next = move |m: u64| {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 33) % m
-        };
+        let mut next = crate::testing::below(7u64);
         let mut cancelled = 0;
         for round in 0..60 {
             let grid = [3u64, 6, 12][round % 3];

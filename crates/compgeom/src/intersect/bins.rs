@@ -331,13 +331,7 @@ mod tests {
 
     #[test]
     fn binned_items_sort_like_a_plain_sort() {
-        let mut state = 7u64;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            state >> 11
-        };
+        let mut next = crate::testing::bits(7u64);
         for n in [0, 1, 17, 1000, 40_000, 300_000] {
             for kind in 0..4 {
                 let v: Vec<(f64, u64)> = (0..n)

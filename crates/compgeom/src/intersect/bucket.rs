@@ -336,13 +336,7 @@ mod tests {
 
     #[test]
     fn sorts_like_a_plain_sort() {
-        let mut state = 3u64;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            state >> 11
-        };
+        let mut next = crate::testing::bits(3u64);
         for n in [0, 1, 63, 64, 65, 1000, 5000, 100_000, 300_000] {
             for kind in 0..4 {
                 let v: Vec<(f64, u64)> = (0..n)

@@ -686,13 +686,7 @@ mod tests {
     fn along_segments_counts_a_star_and_many_crossings() {
         // Ten lines through (1/3, 1/3) (not an f64 point) among long random segments,
         // enough records for the parallel scan.
-        let mut state = 21u64;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(21u64);
         let ends = [
             (0, 0),
             (1, 0),

@@ -271,13 +271,7 @@ mod tests {
     /// parallel, huge and tiny input.
     #[test]
     fn crossing_boxes_contain_the_exact_point() {
-        let mut state = 7u64;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(7u64);
         let mut boxed = 0;
         for k in 0..20000 {
             let scale = [1.0, 1e-150, 1e150, 3.0e-7][k % 4];

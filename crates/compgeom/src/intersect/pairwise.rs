@@ -958,13 +958,7 @@ mod tests {
             eprintln!("skipped: the processor has no AVX2/FMA");
             return;
         }
-        let mut state = 11u64;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(11u64);
         for case in 0..6 {
             let scale = [1.0, 1.0 / 3.0, 1e-7, 7e9, 0.1, 1.0][case];
             let segs: Vec<Segment2> = (0..300)
@@ -1010,13 +1004,7 @@ mod tests {
 
     #[test]
     fn the_choice_follows_candidates_and_meetings() {
-        let mut state = 3u64;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(3u64);
         // Short segments: few candidates.
         let short: Vec<Segment2> = (0..5000)
             .map(|_| {
@@ -1131,13 +1119,7 @@ mod tests {
 
     #[test]
     fn the_batched_scan_on_long_segments_is_the_brute_force_answer() {
-        let mut state = 11u64;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(11u64);
         // Long random segments (most pairs cross), some through shared points, some
         // vertical and horizontal, some with boxes apart along the other axis.
         let mut segs: Vec<Segment2> = (0..300)
@@ -1166,13 +1148,7 @@ mod tests {
 
     #[test]
     fn long_segments_use_the_axis_sweep() {
-        let mut state = 7u64;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(7u64);
         let long: Vec<Segment2> = (0..400)
             .map(|_| seg((0.0, unit()), (1.0, unit())))
             .collect();

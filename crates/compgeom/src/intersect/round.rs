@@ -787,13 +787,7 @@ mod tests {
     }
 
     fn lcg(seed: u64) -> impl FnMut() -> u64 {
-        let mut state = seed;
-        move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            state >> 11
-        }
+        crate::testing::bits(seed)
     }
 
     fn bits(p: Point2) -> (u64, u64) {

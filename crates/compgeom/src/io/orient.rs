@@ -207,13 +207,7 @@ mod tests {
     fn expansion_agrees_with_big_integers() {
         assert_eq!(EXPANSION_RANGE.0, 2f64.powi(-480));
         assert_eq!(EXPANSION_RANGE.1, 2f64.powi(480));
-        let mut state = 0x5eed_0fa1_e4a1_u64;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(0x5eed_0fa1_e4a1_u64);
         let (mut decided, mut unfiltered, mut fused) = ([0usize; 3], 0, 0);
         for round in 0..5000 {
             let n = 3 + round % 7;

@@ -697,13 +697,7 @@ mod tests {
     /// most of them, else it tests nothing.
     #[test]
     fn double_double_stage_agrees_with_exact_near_lines() {
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(0x9e37_79b9_7f4a_7c15_u64);
         let to_orientation = |o: Ordering| match o {
             Ordering::Greater => Orientation::CounterClockwise,
             Ordering::Less => Orientation::Clockwise,
@@ -787,13 +781,7 @@ mod tests {
     /// at many scales, including nearly parallel segments and mixed magnitudes.
     #[test]
     fn fast_rounding_agrees_with_exact_rounding() {
-        let mut state = 0x1234_5678_u64;
-        let mut unit = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = crate::testing::units(0x1234_5678_u64);
         // Fast decisions at scale 1 (the others may underflow or overflow in double-double).
         let (mut fast, mut tried) = (0, 0);
         for k in 0..30_000 {

@@ -263,13 +263,7 @@ mod static_filter_tests {
     /// grid, tiny and huge coordinates (each set with its own bound).
     #[test]
     fn static_filter_agrees_with_the_exact_test() {
-        let mut state = 5u64;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            state >> 11
-        };
+        let mut next = crate::testing::bits(5u64);
         let mut decided = 0;
         for (k, scale) in [1.0, 1e-130, 1e140, 1e-160, 3e150].into_iter().enumerate() {
             for grid in [false, true] {

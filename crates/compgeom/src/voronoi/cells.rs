@@ -667,13 +667,7 @@ mod tests {
     }
 
     fn lcg(seed: u64) -> impl FnMut() -> u64 {
-        let mut s = seed;
-        move || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            s >> 11
-        }
+        crate::testing::bits(seed)
     }
 
     #[test]

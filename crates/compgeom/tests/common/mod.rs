@@ -1,5 +1,5 @@
-//! Helpers shared by the integration tests: fixture-suite location, and the exact area
-//! and validity checks of the boolean-operation tests.
+//! Helpers shared by the integration tests: fixture-suite location, the exact area and
+//! validity checks of the boolean-operation tests, and deterministic random numbers.
 #![allow(dead_code)]
 use compgeom::intersect::find_intersections;
 use compgeom::io::ring_orientation;
@@ -7,6 +7,33 @@ use compgeom::kernel::{orient2d, Orientation};
 use compgeom::{MultiPolygon, Point2, Segment2};
 use num_rational::BigRational;
 use num_traits::Zero;
+
+/// The generator's next state (a 64-bit linear congruential generator, Knuth's MMIX
+/// constants: the same numbers on every machine, no dependency).
+fn step(state: &mut u64) -> u64 {
+    *state = state
+        .wrapping_mul(6364136223846793005)
+        .wrapping_add(1442695040888963407);
+    *state
+}
+
+/// Uniform `f64` numbers in `[0, 1)` from `seed` (the top 53 bits of each state).
+pub fn units(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || (step(&mut state) >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// The top 53 bits of each state, from `seed`.
+pub fn bits(seed: u64) -> impl FnMut() -> u64 {
+    let mut state = seed;
+    move || step(&mut state) >> 11
+}
+
+/// Numbers below `n` (the top 31 bits of each state modulo `n`), from `seed`.
+pub fn below(seed: u64) -> impl FnMut(u64) -> u64 {
+    let mut state = seed;
+    move |n| (step(&mut state) >> 33) % n
+}
 
 pub fn shoelace(r: &[Point2]) -> f64 {
     (0..r.len())

@@ -704,13 +704,7 @@ mod tests {
     /// sometimes with only one or two points moved, the collapsed edges included.
     #[test]
     fn near_pairs_are_every_pair_whose_boxes_overlap() {
-        let mut state = 0x0dd_ba11_u64;
-        let mut int = move |n: u64| {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 33) % n
-        };
+        let mut int = crate::testing::below(0x0dd_ba11_u64);
         let key = |(x, e): Pair| (x, e.i, e.j, e.a, e.b);
         let below_max = |k: u64| f64::from_bits(f64::MAX.to_bits() - k);
         let mut found = 0;
