@@ -448,6 +448,39 @@
 //! of the end of session 35 (the instruction counts fell 4–8%, the wall times on this
 //! machine did not show it beyond its noise). Not met: the JTS rows, the dissolve, and
 //! the water xor against geo in some runs.
+//!
+//! Session 37. Instructions as in session 36, against the session-start binary: the
+//! tracing's ring buffers and the near pairs' lists sized once (JTS×52 intersection
+//! −1.6%, xor −1.9%, then −0.4% and −0.9% more); the cancelling of shared sides on
+//! the noding's hashed vertices (one hash of the ends for both, classes of equal
+//! segments by vertex pairs, the noding's copies from those classes: two hashes of
+//! points fewer). JTS×52 intersection 59.5 M → 58.2 M (−2.2%), union 68.7 M → 67.0 M
+//! (−2.4%), difference 65.0 M → 63.6 M (−2.2%), xor 104.2 M → 100.5 M (−3.5%);
+//! dissolve 27.2 M → 27.0 M (−0.9%), but in time, interleaved runs of 500 calls (8
+//! each): best 0.301 s against 0.325 s, median 0.37 s against 0.43 s (the float
+//! compares and mispredicted probes of the old cancelling went); water −0.1% to
+//! −0.7%, stars unchanged. Per call against the peers ((5 − 0 calls) / 5): JTS×52
+//! intersection 11.65 M (1.17 / 1.14), union 13.44 M (1.22 / 1.19), difference 12.75 M
+//! (1.24 / 1.19), xor 20.19 M (1.74 / 1.65); dissolve 5.41 M (1.35 / 1.18).
+//! `perf record` (cpu-clock sampling; the machine has no hardware counters) works here
+//! and sees what callgrind does not: on the water xor about 8% of the samples are page
+//! faults (the per-call arrays come from fresh pages each call); on the JTS
+//! intersection malloc and free are about 10%, the sweep's scan 12% (its pair tests
+//! mispredict), the tracing 15%. Tried and dropped: dropping the rings rounding leaves
+//! fewer than three points (slivers within a float gap; a hole only when no point is
+//! near it) instead of uniting again: JTS×52 xor re-unions 18 → 13, but nudging then
+//! ran on 14 more results and cost more than the unions saved (+1.2%); the nudge's
+//! failing pairs ordered by their nearest points before exact comparisons (no
+//! change); the near-pair grid's queries on the rayon pool (the main thread's count
+//! fell, but on 2 cores 100 water xor calls took 2.06 s against 1.87 s on one
+//! thread); consecutive ring edges that turn left out of the sweep's branch-free box
+//! loop (+4.5% instructions, no clear gain in time).
+//! Final table, two runs (/ i_overlay, / geo): stars 1e3 0.75–0.94 / 0.79–0.95; 1e4
+//! 0.48–0.88 / 0.48–0.92; 1e5 0.56–0.67 / 0.58–0.69; squares 0.75–0.82 / 0.78–0.80;
+//! water intersection, union and difference 0.83–0.98 / 0.78–0.89, xor 0.96–1.01 /
+//! 0.95; JTS×52 intersection 1.13–1.15 / 1.08–1.15, union 1.23 / 1.21–1.22,
+//! difference 1.20–1.25 / 1.17–1.22, xor 1.74–1.78 / 1.67–1.70; dissolve 1.29–1.30 /
+//! 1.18–1.20. Not met: the JTS rows and the dissolve.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
