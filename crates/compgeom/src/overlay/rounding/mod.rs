@@ -229,6 +229,16 @@ struct Box2 {
 }
 
 impl Box2 {
+    /// The bounding box of `a` and `b`.
+    fn of(a: Point2, b: Point2) -> Box2 {
+        Box2 {
+            x0: a.x.min(b.x),
+            x1: a.x.max(b.x),
+            y0: a.y.min(b.y),
+            y1: a.y.max(b.y),
+        }
+    }
+
     /// The bounding box of `a` and `b`, widened by `(hx, hy)` ([`widened`]).
     fn around(a: Point2, b: Point2, (hx, hy): (f64, f64)) -> Box2 {
         let (x0, x1) = widened(a.x.min(b.x), a.x.max(b.x), hx);
@@ -379,12 +389,7 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
             Box2::around(a, b, (4.0 * hx, 4.0 * hy))
         } else {
             // (Nothing to widen: most edges, looked at for every moved point.)
-            Box2 {
-                x0: a.x.min(b.x),
-                x1: a.x.max(b.x),
-                y0: a.y.min(b.y),
-                y1: a.y.max(b.y),
-            }
+            Box2::of(a, b)
         }
     };
     let moved = r.ids.iter().filter(|id| id.moved).count();
@@ -418,13 +423,19 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
         let (edge_boxes, point_boxes) = boxes.split_at(moved_edges.len());
         let around_edges = edge_boxes.iter().copied().reduce(|a, b| a.union(&b));
         for x in 0..r.points.len() {
-            if !around_edges.is_some_and(|a| a.overlaps(&rough_box(r.points[x]))) {
+            let rough = rough_box(r.points[x]);
+            if !around_edges.is_some_and(|a| a.overlaps(&rough)) {
                 continue;
             }
-            let b = point_box(x);
+            // (The precise box only where the cheap one, which holds it, meets an edge's:
+            // most points are near no moved edge.)
+            let mut precise = None;
             for (e, eb) in moved_edges.iter().zip(edge_boxes) {
-                if eb.overlaps(&b) && e.i != x && e.j != x {
-                    pairs.push((x as u32, *e));
+                if eb.overlaps(&rough) {
+                    let b = precise.get_or_insert_with(|| point_box(x));
+                    if eb.overlaps(b) && e.i != x && e.j != x {
+                        pairs.push((x as u32, *e));
+                    }
                 }
             }
         }
@@ -433,7 +444,7 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
             if moves(&e) {
                 return;
             }
-            let b = edge_box(&e);
+            let b = Box2::of(r.points[e.i], r.points[e.j]);
             if !around_points.is_some_and(|a| a.overlaps(&b)) {
                 return;
             }
@@ -473,7 +484,7 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
     let points = r.points.len();
     let edge_pairs = |k: usize, stamp: &mut [usize], pairs: &mut Vec<Pair>| {
         let e = unmoved[k];
-        let b = edge_box(&e);
+        let b = Box2::of(r.points[e.i], r.points[e.j]);
         grid.visit(&b, points + k, stamp, |item| {
             if item >= moved_edges.len() && boxes[item].overlaps(&b) {
                 pairs.push((moved_points[item - moved_edges.len()] as u32, e));
