@@ -205,6 +205,26 @@ fn squares_overlapping_sharing_edges_touching_identical() {
     assert!(boolean(&a, &a, BooleanOp::Xor).unwrap().0.is_empty());
 }
 
+/// -0 and 0 are one coordinate: a vertex of B at x = -0 on A's side along x = 0 cuts
+/// it where B's other vertex at x = 0 does (the cuts along a segment were once ordered
+/// with -0 before 0: A's side was cut out of order, and the union lost A).
+#[test]
+fn negative_zero_is_zero() {
+    let a = mp(vec![vec![pt(0.0, 0.0), pt(2.0, 1.5), pt(0.0, 3.0)]]);
+    for z in [0.0, -0.0] {
+        let b = mp(vec![vec![
+            pt(0.0, 1.0),
+            pt(z, 2.0),
+            pt(-1.0, 2.5),
+            pt(-1.0, 0.5),
+        ]]);
+        check(&a, &b, &grid_samples(-2.0, 4.0, 0.25));
+        // B only touches A along x = 0: A − B is A.
+        let d = boolean(&a, &b, BooleanOp::Difference).unwrap();
+        assert_eq!(area(&d), 3.0, "z = {z:?}");
+    }
+}
+
 #[test]
 fn holes_touching_shells() {
     // A hole touching the shell at a vertex, and B filling part of it.

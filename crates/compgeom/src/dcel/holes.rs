@@ -200,10 +200,22 @@ pub(super) fn compare_x_filtered(
     b: &ExactPoint,
     rb: &Rounded,
 ) -> Ordering {
-    if ra.p.x != rb.p.x || (ra.x_exact && rb.x_exact) {
-        ra.p.x.total_cmp(&rb.p.x)
+    compare_filtered(ra.p.x, rb.p.x, ra.x_exact && rb.x_exact, || a.compare_x(b))
+}
+
+/// Two rounded coordinates' order where they differ, equal where both are exact (-0 and
+/// 0 are one value: `total_cmp` would put -0 first, against every exact test), else
+/// `compare()`, the exact comparison. (Rounded points are never NaN.)
+#[inline]
+fn compare_filtered(u: f64, v: f64, exact: bool, compare: impl FnOnce() -> Ordering) -> Ordering {
+    if u < v {
+        Ordering::Less
+    } else if u > v {
+        Ordering::Greater
+    } else if exact {
+        Ordering::Equal
     } else {
-        a.compare_x(b)
+        compare()
     }
 }
 
@@ -214,11 +226,7 @@ pub(crate) fn compare_y_filtered(
     b: &ExactPoint,
     rb: &Rounded,
 ) -> Ordering {
-    if ra.p.y != rb.p.y || (ra.y_exact && rb.y_exact) {
-        ra.p.y.total_cmp(&rb.p.y)
-    } else {
-        a.compare_y(b)
-    }
+    compare_filtered(ra.p.y, rb.p.y, ra.y_exact && rb.y_exact, || a.compare_y(b))
 }
 
 /// Exact lexicographic (x, then y) comparison, filtered as [`compare_x_filtered`].

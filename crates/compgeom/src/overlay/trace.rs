@@ -986,10 +986,7 @@ fn traced(
             let ring = |k: usize| {
                 let pts = &rounded.points[rounded.starts[k]..rounded.starts[k + 1]];
                 let lowest = (0..pts.len())
-                    .min_by(|&i, &j| {
-                        let (p, q) = (pts[i], pts[j]);
-                        p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
-                    })
+                    .min_by(|&i, &j| lexicographic(pts[i], pts[j]))
                     .unwrap_or(0);
                 [&pts[lowest..], &pts[..lowest]].concat()
             };
@@ -1008,6 +1005,13 @@ fn traced(
     })
 }
 
+/// The order of two output points by x, then y, -0 and 0 as one value (as everywhere
+/// else: a ring starts at its numerically smallest point).
+fn lexicographic(p: Point2, q: Point2) -> Ordering {
+    let v = |c: f64| c + 0.0;
+    v(p.x).total_cmp(&v(q.x)).then(v(p.y).total_cmp(&v(q.y)))
+}
+
 /// The polygons in a canonical order, independent of how the arrangement numbered its
 /// vertices and edges: every ring already starts at its lowest vertex (smallest x, then
 /// smallest y); the holes of each polygon, and the polygons by their shells, are sorted
@@ -1018,7 +1022,7 @@ fn canonical_order(mut polygons: Vec<Polygon>) -> MultiPolygon {
     fn by_points(a: &[Point2], b: &[Point2]) -> Ordering {
         a.iter()
             .zip(b)
-            .map(|(p, q)| p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y)))
+            .map(|(p, q)| lexicographic(*p, *q))
             .find(|o| o.is_ne())
             .unwrap_or_else(|| a.len().cmp(&b.len()))
     }
