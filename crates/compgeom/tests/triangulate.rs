@@ -307,6 +307,38 @@ proptest! {
     }
 }
 
+/// -0 and 0 are one coordinate: a straight run along y = 0 written with a -0 in the
+/// middle was once refused as "doubles back" (the lowest vertex was found with -0 below
+/// 0, at a straight angle).
+#[test]
+fn negative_zero_is_zero() {
+    let rings = [
+        vec![
+            p(-2.0, 0.0),
+            p(1.0, -0.0),
+            p(2.0, 0.0),
+            p(1.0, 2.0),
+            p(-1.0, 2.0),
+        ],
+        vec![
+            p(-1.0, 0.0),
+            p(-0.0, 0.0),
+            p(1.0, -0.0),
+            p(2.0, 0.0),
+            p(0.0, 2.0),
+        ],
+        vec![p(0.0, -2.0), p(-0.0, 1.0), p(0.0, 2.0), p(-2.0, 1.0)],
+    ];
+    for ring in rings {
+        let plus: Vec<Point2> = ring.iter().map(|q| p(q.x + 0.0, q.y + 0.0)).collect();
+        let t = check(&Polygon::new(ring, vec![]));
+        assert_eq!(
+            t.triangles.len(),
+            check(&Polygon::new(plus, vec![])).triangles.len()
+        );
+    }
+}
+
 #[test]
 fn holes_touching_the_outer_ring_and_each_other() {
     // Square 0..4 with two triangular holes touching each other at (2, 2) and the outer

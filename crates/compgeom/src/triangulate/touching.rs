@@ -114,7 +114,10 @@ fn lowest_turn(ring: &[Point2]) -> Orientation {
     let low = (0..len)
         .min_by(|&a, &b| {
             let (p, q) = (ring[a], ring[b]);
-            p.y.total_cmp(&q.y).then(p.x.total_cmp(&q.x))
+            // (-0 and 0 one value: `total_cmp` alone puts -0 first.)
+            (p.y + 0.0)
+                .total_cmp(&(q.y + 0.0))
+                .then((p.x + 0.0).total_cmp(&(q.x + 0.0)))
         })
         .unwrap_or(0);
     orient2d(
