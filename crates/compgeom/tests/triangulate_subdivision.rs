@@ -144,6 +144,28 @@ proptest! {
     }
 }
 
+/// -0 and 0 are one coordinate: the sweep once ordered -0 below 0, and triangles came
+/// out turned over.
+#[test]
+fn negative_zero_is_zero() {
+    let s = |a: (f64, f64), b: (f64, f64)| Segment2::new(p(a.0, a.1), p(b.0, b.1));
+    let cases = [
+        vec![
+            s((2.0, -0.0), (1.0, -2.0)),
+            s((0.0, 0.0), (2.0, 1.0)),
+            s((-2.0, -0.0), (2.0, 0.0)),
+        ],
+        vec![
+            s((1.0, -1.0), (-2.0, 1.0)),
+            s((-0.0, -2.0), (1.0, -1.0)),
+            s((2.0, 0.0), (-2.0, -0.0)),
+        ],
+    ];
+    for segs in cases {
+        segments_check(&segs, 1.0);
+    }
+}
+
 #[test]
 fn dangling_edges_isolated_parts_and_errors() {
     let s = |a: (f64, f64), b: (f64, f64)| Segment2::new(p(a.0, a.1), p(b.0, b.1));

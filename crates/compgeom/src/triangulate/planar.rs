@@ -214,10 +214,15 @@ fn add_box(pts: &mut Vec<Point2>, edges: &mut Vec<[u32; 2]>, b: [f64; 4]) -> Vec
             sides[3].push(i);
         }
     }
-    sides[0].sort_by(|&a, &b| pts[a as usize].x.total_cmp(&pts[b as usize].x));
-    sides[1].sort_by(|&a, &b| pts[a as usize].y.total_cmp(&pts[b as usize].y));
-    sides[2].sort_by(|&a, &b| pts[b as usize].x.total_cmp(&pts[a as usize].x));
-    sides[3].sort_by(|&a, &b| pts[b as usize].y.total_cmp(&pts[a as usize].y));
+    // (-0 and 0 one value: `total_cmp` alone puts -0 first.)
+    let (x, y) = (
+        |i: u32| pts[i as usize].x + 0.0,
+        |i: u32| pts[i as usize].y + 0.0,
+    );
+    sides[0].sort_by(|&a, &b| x(a).total_cmp(&x(b)));
+    sides[1].sort_by(|&a, &b| y(a).total_cmp(&y(b)));
+    sides[2].sort_by(|&a, &b| x(b).total_cmp(&x(a)));
+    sides[3].sort_by(|&a, &b| y(b).total_cmp(&y(a)));
     let boundary: Vec<u32> = sides.concat();
     let existing: std::collections::HashSet<(u32, u32)> =
         edges.iter().map(|&[a, b]| (a.min(b), a.max(b))).collect();
@@ -239,7 +244,9 @@ impl Plane<'_> {
     #[inline]
     fn cmp(&self, a: u32, b: u32) -> Ordering {
         let (p, q) = (self.pts[a as usize], self.pts[b as usize]);
-        q.y.total_cmp(&p.y).then(p.x.total_cmp(&q.x))
+        // (-0 and 0 one value, as for every exact test.)
+        let v = |c: f64| c + 0.0;
+        v(q.y).total_cmp(&v(p.y)).then(v(p.x).total_cmp(&v(q.x)))
     }
 }
 
