@@ -97,6 +97,7 @@ mod bucket;
 mod count;
 mod list;
 mod order;
+pub(crate) use order::sweep_cmp_points;
 mod pairwise;
 mod red_blue;
 mod round;
@@ -164,7 +165,6 @@ impl Intersections {
 
 /// Sort overlaps into their documented order.
 pub(crate) fn sort_overlaps(overlaps: &mut [Overlap]) {
-    use order::sweep_cmp_points;
     overlaps.sort_by(|a, b| {
         sweep_cmp_points(a.from, b.from)
             .then(sweep_cmp_points(a.to, b.to))

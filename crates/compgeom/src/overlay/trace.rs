@@ -48,7 +48,8 @@ use crate::dcel::{compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounde
 use crate::kernel::arith::ordered_key as okey;
 use crate::kernel::steps::Steps;
 use crate::kernel::{
-    orient2d, orient_exact, ExactPoint, MultiPolygon, Orientation, Point2, Polygon, Segment2,
+    compare_xy, orient2d, orient_exact, ExactPoint, MultiPolygon, Orientation, Point2, Polygon,
+    Segment2,
 };
 use crate::Result;
 use std::cmp::Ordering;
@@ -986,7 +987,7 @@ fn traced(
             let ring = |k: usize| {
                 let pts = &rounded.points[rounded.starts[k]..rounded.starts[k + 1]];
                 let lowest = (0..pts.len())
-                    .min_by(|&i, &j| lexicographic(pts[i], pts[j]))
+                    .min_by(|&i, &j| compare_xy(pts[i], pts[j]))
                     .unwrap_or(0);
                 [&pts[lowest..], &pts[..lowest]].concat()
             };
@@ -1005,13 +1006,6 @@ fn traced(
     })
 }
 
-/// The order of two output points by x, then y, -0 and 0 as one value (as everywhere
-/// else: a ring starts at its numerically smallest point).
-fn lexicographic(p: Point2, q: Point2) -> Ordering {
-    let v = |c: f64| c + 0.0;
-    v(p.x).total_cmp(&v(q.x)).then(v(p.y).total_cmp(&v(q.y)))
-}
-
 /// The polygons in a canonical order, independent of how the arrangement numbered its
 /// vertices and edges: every ring already starts at its lowest vertex (smallest x, then
 /// smallest y); the holes of each polygon, and the polygons by their shells, are sorted
@@ -1022,7 +1016,7 @@ fn canonical_order(mut polygons: Vec<Polygon>) -> MultiPolygon {
     fn by_points(a: &[Point2], b: &[Point2]) -> Ordering {
         a.iter()
             .zip(b)
-            .map(|(p, q)| lexicographic(*p, *q))
+            .map(|(p, q)| compare_xy(*p, *q))
             .find(|o| o.is_ne())
             .unwrap_or_else(|| a.len().cmp(&b.len()))
     }

@@ -27,6 +27,7 @@
 use super::monotone::{triangulate_monotone, Pieces};
 use super::status::{Side, Status};
 use crate::dcel::{Dcel, FaceId};
+use crate::intersect::sweep_cmp_points;
 use crate::kernel::{orient2d, ExactPoint, Orientation, Point2, Segment2};
 use crate::{Error, Result};
 use std::cmp::Ordering;
@@ -243,10 +244,8 @@ struct Plane<'a> {
 impl Plane<'_> {
     #[inline]
     fn cmp(&self, a: u32, b: u32) -> Ordering {
-        let (p, q) = (self.pts[a as usize], self.pts[b as usize]);
-        // (-0 and 0 one value, as for every exact test.)
-        let v = |c: f64| c + 0.0;
-        v(q.y).total_cmp(&v(p.y)).then(v(p.x).total_cmp(&v(q.x)))
+        // (y decreasing, then x increasing; -0 and 0 one value, as for every exact test.)
+        sweep_cmp_points(self.pts[a as usize], self.pts[b as usize])
     }
 }
 
