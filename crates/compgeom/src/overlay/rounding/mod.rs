@@ -281,15 +281,23 @@ fn meets(a: Point2, b: Point2, c: Point2, (hx, hy): (f64, f64)) -> bool {
     if a == b {
         return true;
     }
-    let corners = [
-        Point2::new(bx.x0, bx.y0),
-        Point2::new(bx.x1, bx.y0),
-        Point2::new(bx.x1, bx.y1),
-        Point2::new(bx.x0, bx.y1),
-    ];
-    let mut sides = corners.iter().map(|&q| orient2d(a, b, q));
-    let first = sides.next().unwrap_or(Orientation::Collinear);
-    first == Orientation::Collinear || sides.any(|o| o != first)
+    // The segment meets the box (their boxes overlapping) unless all four corners are
+    // strictly on one side of its line. The side is the sign of (b - a) × (q - a),
+    // affine in the corner q: largest at the corner furthest left of a → b, smallest at
+    // the opposite one (which they are follows from exact comparisons of a and b), so
+    // those two decide: the line meets the box iff the first is not right of it and
+    // the second not left.
+    let (dx_positive, dy_positive) = (b.x > a.x, b.y > a.y);
+    let leftmost = Point2::new(
+        if dy_positive { bx.x0 } else { bx.x1 },
+        if dx_positive { bx.y1 } else { bx.y0 },
+    );
+    let rightmost = Point2::new(
+        if dy_positive { bx.x1 } else { bx.x0 },
+        if dx_positive { bx.y0 } else { bx.y1 },
+    );
+    orient2d(a, b, leftmost) != Orientation::Clockwise
+        && orient2d(a, b, rightmost) != Orientation::CounterClockwise
 }
 
 /// The exact point's side of a rounded point, per axis: `(exact.x` vs `rounded.x`,
@@ -788,6 +796,37 @@ mod tests {
         // A point box (nothing moved): only an exact hit.
         assert!(meets(p(0.0, 0.0), p(2.0, 2.0), c, (0.0, 0.0)));
         assert!(!meets(p(0.0, 0.0), p(2.0, next(2.0)), c, (0.0, 0.0)));
+    }
+
+    /// [`meets`] by its two extreme corners agrees with testing all four corners, on
+    /// segments and boxes of a small grid (every slope sign, axis-parallel and
+    /// point-like boxes, corners on the line).
+    #[test]
+    fn two_corners_decide_as_four() {
+        let mut below = crate::testing::below(7);
+        let mut met = [0usize; 2];
+        for _ in 0..20_000 {
+            let mut q = || below(9) as f64 - 4.0;
+            let (a, b, c) = (p(q(), q()), p(q(), q()), p(q(), q()));
+            let h = (below(3) as f64 * 0.5, below(2) as f64 * 0.5);
+            let bx = Box2::around(c, c, (2.0 * h.0, 2.0 * h.1));
+            let four = Box2::around(a, b, (0.0, 0.0)).overlaps(&bx)
+                && (a == b || {
+                    let sides: Vec<Orientation> = [
+                        p(bx.x0, bx.y0),
+                        p(bx.x1, bx.y0),
+                        p(bx.x1, bx.y1),
+                        p(bx.x0, bx.y1),
+                    ]
+                    .iter()
+                    .map(|&k| orient2d(a, b, k))
+                    .collect();
+                    sides[0] == Orientation::Collinear || sides.iter().any(|&o| o != sides[0])
+                });
+            assert_eq!(meets(a, b, c, h), four, "{a:?} {b:?} {c:?} {h:?}");
+            met[usize::from(four)] += 1;
+        }
+        assert!(met[0] > 2000 && met[1] > 2000, "{met:?}");
     }
 
     /// The rings after [`failing_rings`], and whether no ring fails, with the exact points
