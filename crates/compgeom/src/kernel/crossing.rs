@@ -414,6 +414,31 @@ impl ExactPoint {
         compare_coord(self, other, Axis::Y)
     }
 
+    /// Exact comparison with the `f64` point `q` per axis: `(x vs q.x, y vs q.y)`, as
+    /// [`ExactPoint::compare_x`] and [`ExactPoint::compare_y`] with `q` as an input
+    /// point. For a crossing one double-double evaluation of its parameter serves both
+    /// axes (the plain `f64` filter is skipped: this is asked about points within a
+    /// float or two of the crossing, where it cannot decide).
+    pub fn compare_with_point(&self, q: Point2) -> (Ordering, Ordering) {
+        let c = match self {
+            ExactPoint::Input(p) => {
+                let cmp = |a: f64, b: f64| a.partial_cmp(&b).unwrap_or(Ordering::Equal);
+                return (cmp(p.x, q.x), cmp(p.y, q.y));
+            }
+            ExactPoint::Crossing(c) => c,
+        };
+        // Relative to q: x - q.x = ((a.x - q.x)·den + dx·num) / den, and so for y.
+        let Param { dx, dy, num, den } = param::<DoubleDouble>(c);
+        let side = |a: f64, r: f64, d: &DoubleDouble| {
+            let u = DoubleDouble::diff(a, r).times(&den).plus(&d.times(&num));
+            signs(&[&u, &den])
+        };
+        let point = ExactPoint::Input(q);
+        let x = side(c.s.a.x, q.x, &dx).unwrap_or_else(|| self.compare_x(&point));
+        let y = side(c.s.a.y, q.y, &dy).unwrap_or_else(|| self.compare_y(&point));
+        (x, y)
+    }
+
     /// Exact lexicographic comparison (x, then y): the sweep-line event order.
     pub fn compare_xy(&self, other: &ExactPoint) -> Ordering {
         self.compare_x(other).then_with(|| self.compare_y(other))
@@ -775,6 +800,51 @@ mod tests {
             along(1.0),
             along(3.0)
         )));
+    }
+
+    /// [`ExactPoint::compare_with_point`] agrees with the exact comparisons per axis on
+    /// crossings against their rounded points and the floats around them, at many
+    /// scales, and on crossings that are exactly float points.
+    #[test]
+    fn comparison_with_a_point_agrees_per_axis() {
+        let mut unit = crate::testing::units(0x5eed_u64);
+        let mut on_point = 0;
+        for k in 0..6_000 {
+            let scale = [1.0, 1e-200, 1e200, 3.0e-7, 1e-300, 1e250][k % 6];
+            let grid = k % 3 == 0;
+            let mut pt = || {
+                let v = |u: f64| if grid { (u * 8.0).floor() * scale } else { u * scale };
+                Point2::new(v(unit()), v(unit()))
+            };
+            let (a, b, c, d) = (pt(), pt(), pt(), pt());
+            let Some(cr) = Crossing::new(Segment2::new(a, b), Segment2::new(c, d)) else {
+                continue;
+            };
+            let p = ExactPoint::Crossing(cr);
+            let r = cr.approx();
+            let steps = |v: f64| {
+                let tiny = f64::from_bits(1);
+                if v == 0.0 {
+                    [-tiny, v, tiny]
+                } else {
+                    [next_down(v), v, next_up(v)]
+                }
+            };
+            for x in steps(r.x) {
+                for y in steps(r.y) {
+                    let q = Point2::new(x, y);
+                    let input = ExactPoint::Input(q);
+                    let want = (p.compare_x(&input), p.compare_y(&input));
+                    assert_eq!(p.compare_with_point(q), want, "{cr:?} {q:?}");
+                    on_point += usize::from(want == (Ordering::Equal, Ordering::Equal));
+                }
+            }
+            let i = ExactPoint::Input(a);
+            let rounded = ExactPoint::Input(r);
+            let want = (i.compare_x(&rounded), i.compare_y(&rounded));
+            assert_eq!(i.compare_with_point(r), want);
+        }
+        assert!(on_point > 100, "only {on_point} crossings on float points");
     }
 
     /// The fast rounding path agrees with exact rational rounding on random crossings

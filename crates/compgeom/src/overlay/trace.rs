@@ -958,10 +958,7 @@ fn traced(
     // started the ring, and the points moved should not (those results are united
     // again anyway).
     let exact_points = collapsed.is_empty().then_some(ExactPoints {
-        toward: |v: u32, q: Point2| {
-            let (e, q) = (exact(v), ExactPoint::Input(q));
-            (e.compare_x(&q), e.compare_y(&q))
-        },
+        toward: |v: u32, q: Point2| exact(v).compare_with_point(q),
         order: |u: u32, v: u32| exact(u).compare_xy(&exact(v)),
     });
     let failing = failing_rings(

@@ -8,7 +8,7 @@
 
 use super::{failing_rings, ExactPoints, PointIds, RoundedRings};
 use crate::dcel::{rounded_away, Dcel, FaceId};
-use crate::kernel::{orient_exact, ExactPoint, Point2};
+use crate::kernel::{orient_exact, Point2};
 
 /// At most this many passes of [`mend_faces`] (each checks again after moving points:
 /// a point moved can let another failing pair be mended); then the points stay.
@@ -98,10 +98,7 @@ fn checked<V, E, F>(d: &Dcel<V, E, F>, mend: bool) -> (Vec<FaceId>, Vec<(usize, 
     let vertices = &d.vertices;
     let exact = |v: u32| &vertices[v as usize].point;
     let exact_points = mend.then_some(ExactPoints {
-        toward: |v: u32, q: Point2| {
-            let (e, q) = (exact(v), ExactPoint::Input(q));
-            (e.compare_x(&q), e.compare_y(&q))
-        },
+        toward: |v: u32, q: Point2| exact(v).compare_with_point(q),
         order: |u: u32, v: u32| exact(u).compare_xy(exact(v)),
     });
     let failing = failing_rings(
