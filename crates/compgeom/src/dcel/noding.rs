@@ -1329,7 +1329,8 @@ fn assemble<const EXACT: bool>(
         vertex_of[r]
     };
     // Keyed by vertex pair; a multiply–rotate hash (SipHash was most of the merge).
-    let mut merged = EdgeMap::default();
+    // (Sized once: growing it was the most frequent allocation of small calls.)
+    let mut merged = EdgeMap::with_capacity_and_hasher(m + cuts.len(), Default::default());
     let mut pieces = Pieces {
         edges: Vec::with_capacity(m + cuts.len()),
         pairs: Vec::with_capacity(m + cuts.len()),

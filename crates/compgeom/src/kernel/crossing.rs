@@ -813,7 +813,13 @@ mod tests {
             let scale = [1.0, 1e-200, 1e200, 3.0e-7, 1e-300, 1e250][k % 6];
             let grid = k % 3 == 0;
             let mut pt = || {
-                let v = |u: f64| if grid { (u * 8.0).floor() * scale } else { u * scale };
+                let v = |u: f64| {
+                    if grid {
+                        (u * 8.0).floor() * scale
+                    } else {
+                        u * scale
+                    }
+                };
                 Point2::new(v(unit()), v(unit()))
             };
             let (a, b, c, d) = (pt(), pt(), pt(), pt());

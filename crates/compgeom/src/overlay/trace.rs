@@ -303,6 +303,11 @@ pub(super) fn traced_boolean(
     Ok(canonical_order(settled))
 }
 
+/// A point as a hash key, -0 and 0 one value.
+fn point_key(q: Point2) -> (u64, u64) {
+    ((q.x + 0.0).to_bits(), (q.y + 0.0).to_bits())
+}
+
 /// The polygons of `context` (by number, ascending) whose boxes meet the box of `segs`
 /// widened by 2⁻⁴⁰ of its largest coordinate (and the smallest normal `f64`): more than
 /// the ten float gaps within which the rounding check looks for near pairs, so a
@@ -756,14 +761,13 @@ fn traced(
     // cannot touch its rings, nor be near them in the check), and their points: where
     // they touch this result's rings.
     let near: Vec<usize> = near_context(segs, context);
-    let context_points: std::collections::HashSet<(u64, u64), foldhash::fast::RandomState> = near
-        .iter()
-        .flat_map(|&c| context[c].rings())
-        .flatten()
-        .map(|q| (q.x.to_bits(), q.y.to_bits()))
-        .collect();
+    let near_points = || near.iter().flat_map(|&c| context[c].rings()).flatten();
+    let mut context_points: std::collections::HashSet<(u64, u64), foldhash::fast::RandomState> =
+        Default::default();
     // (Sized once: the result's points, then the near context's.)
-    let points = boundary + context_points.len();
+    let points = boundary + near_points().count();
+    context_points.reserve(points - boundary);
+    context_points.extend(near_points().map(|&q| point_key(q)));
     let mut rounded = RoundedRings {
         points: Vec::with_capacity(points),
         ids: Vec::with_capacity(points),
@@ -877,8 +881,7 @@ fn traced(
                     };
                     // (A point of the context stays: a polygon there touches this ring.)
                     let q = ring_r[j].point();
-                    let touched = !context.is_empty()
-                        && context_points.contains(&(q.x.to_bits(), q.y.to_bits()));
+                    let touched = !context.is_empty() && context_points.contains(&point_key(q));
                     if straight && !touched {
                         continue;
                     }

@@ -64,8 +64,11 @@ pub(super) fn nudge(
     type Place = (u32, u32);
     let place = |id: PointIds| (id.enter, id.leave);
     type Map<K, V> = std::collections::HashMap<K, V, foldhash::fast::RandomState>;
-    let mut places: Map<Place, Option<Vec<usize>>> = Default::default();
-    let mut place_of: Map<u32, Place> = Default::default();
+    // (Up to three moved points per failing pair, two vertices each.)
+    let mut places: Map<Place, Option<Vec<usize>>> =
+        Map::with_capacity_and_hasher(3 * failing.len(), Default::default());
+    let mut place_of: Map<u32, Place> =
+        Map::with_capacity_and_hasher(6 * failing.len(), Default::default());
     for &k in failing.iter() {
         for i in ends(&pairs[k]).into_iter().flatten() {
             let id = r.ids[i];
@@ -219,9 +222,10 @@ fn corners(q: Point2, (tx, ty): Toward) -> Vec<Point2> {
         Ordering::Greater => Some(up(v)),
         Ordering::Equal => None,
     };
-    let xs: Vec<f64> = std::iter::once(q.x).chain(step(q.x, tx)).collect();
-    let ys: Vec<f64> = std::iter::once(q.y).chain(step(q.y, ty)).collect();
-    ys.iter()
-        .flat_map(|&y| xs.iter().map(move |&x| Point2::new(x, y)))
+    let (x1, y1) = (step(q.x, tx), step(q.y, ty));
+    let xs = std::iter::once(q.x).chain(x1);
+    std::iter::once(q.y)
+        .chain(y1)
+        .flat_map(|y| xs.clone().map(move |x| Point2::new(x, y)))
         .collect()
 }
