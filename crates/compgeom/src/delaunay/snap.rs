@@ -85,6 +85,8 @@ pub(crate) fn snap_round(segs: &[Segment2]) -> Result<Option<Snapped>> {
     Ok(Some(Snapped { hot, inner }))
 }
 
+/// (`total_cmp` puts -0 before 0: at worst a point is kept twice, which the dedup after
+/// the sort along a segment and `add_point`, finding the vertex already there, absorb.)
 fn lex(p: Point2, q: Point2) -> Ordering {
     p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y))
 }

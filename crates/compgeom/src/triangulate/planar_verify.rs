@@ -89,6 +89,8 @@ pub fn verify_subdivision_triangulation<V, E, F>(
     let mut on_box: Vec<(u8, f64, usize)> = (0..n)
         .filter_map(|i| place(pts[i]).map(|(s, c)| (s, c, i)))
         .collect();
+    // (`total_cmp` is safe: the vertices are distinct with -0 as 0, so two on one side
+    // differ in the coordinate along it and -0 never meets 0 there.)
     on_box.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
     let boundary: Vec<usize> = on_box.iter().map(|x| x.2).collect();
     if boundary != t.boundary {

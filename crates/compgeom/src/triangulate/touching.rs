@@ -208,6 +208,8 @@ fn clockwise_from(v: Point2, u: Point2, a: Point2, b: Point2) -> Ordering {
 
 /// The order of two points of segment `a → b` along it.
 fn along(a: Point2, b: Point2, p: Point2, q: Point2) -> Ordering {
+    // (`total_cmp` is safe: distinct points of one segment differ in the coordinate
+    // compared, so -0 never meets 0 here.)
     let o = if a.x != b.x {
         p.x.total_cmp(&q.x)
     } else {

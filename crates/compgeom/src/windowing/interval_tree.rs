@@ -37,6 +37,7 @@ fn build(iv: &[(f64, f64)], ids: Vec<u32>, nodes: &mut Vec<Split>) -> u32 {
         .flat_map(|&i| [iv[i as usize].0, iv[i as usize].1])
         .collect();
     let k = ends.len() / 2;
+    // (Any endpoint would do as the split, -0 or 0: the median only balances the tree.)
     let (_, &mut x_mid, _) = ends.select_nth_unstable_by(k, |a, b| a.total_cmp(b));
     let x_mid = x_mid + 0.0; // -0.0 and 0.0 are the same point
     let (mut mid, mut l, mut r) = (Vec::new(), Vec::new(), Vec::new());
@@ -89,6 +90,7 @@ impl IntervalTree {
     pub fn new(intervals: &[(f64, f64)]) -> Result<IntervalTree> {
         let nodes = build_splits(intervals)?;
         let iv = intervals;
+        // (Sorted by `total_cmp` is sorted by `<=` too, all the queries' early stops need.)
         let by_lo = nodes
             .iter()
             .map(|n| {

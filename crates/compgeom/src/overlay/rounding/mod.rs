@@ -842,6 +842,7 @@ mod tests {
         at_nearest: bool,
     ) -> (RoundedRings, bool) {
         let at = |id: u32| exact.iter().find(|e| e.0 == id).expect("exact point").1;
+        // (The tests' points have no -0; the real closures compare exactly, -0 as 0.)
         let exact = ExactPoints {
             toward: |id: u32, q: Point2| (at(id).x.total_cmp(&q.x), at(id).y.total_cmp(&q.y)),
             order: |u: u32, v: u32| {
