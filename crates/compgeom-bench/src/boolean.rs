@@ -507,19 +507,6 @@ fn star(rng: &mut Rng, n: usize, cx: f64, cy: f64) -> Vec<Point2> {
         .collect()
 }
 
-fn area(m: &MultiPolygon) -> f64 {
-    let ring = |r: &Vec<Point2>| {
-        (0..r.len())
-            .map(|i| {
-                let (a, b) = (r[i], r[(i + 1) % r.len()]);
-                a.x * b.y - b.x * a.y
-            })
-            .sum::<f64>()
-            / 2.0
-    };
-    m.0.iter().map(|p| p.rings().map(ring).sum::<f64>()).sum()
-}
-
 fn io_paths(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
     m.0.iter()
         .flat_map(|p| p.rings())
@@ -656,7 +643,7 @@ pub fn run(quick: bool) -> Result<(), String> {
         for (name, op, rule, gop) in OPS {
             let ours = boolean(&a, &b, op).map_err(|e| e.to_string())?;
             let theirs = pa.overlay(&pb, rule, FillRule::EvenOdd);
-            let (x, y) = (area(&ours), io_area(&theirs));
+            let (x, y) = (ours.area(), io_area(&theirs));
             let dev = (x - y).abs() / x.abs().max(1e-300);
             let (t, med) = alternating(
                 runs,
@@ -689,7 +676,7 @@ fn squares_row(rng: &mut Rng, quick: bool, runs: usize) -> Result<(), String> {
     let gs: Vec<geo::Polygon<f64>> = geo_poly(&squares).0;
     let ours = union_all(&squares).map_err(|e| e.to_string())?;
     let theirs = ps.overlay(&empty, OverlayRule::Subject, FillRule::NonZero);
-    let (x, y) = (area(&ours), io_area(&theirs));
+    let (x, y) = (ours.area(), io_area(&theirs));
     let (t, med) = alternating(
         runs,
         || drop(black_box(union_all(&squares).unwrap())),
@@ -730,7 +717,7 @@ fn real_map_rows(runs: usize) -> Result<(), String> {
         if let Some(w) = &water {
             let (pa, pb) = (io_paths(&w.a), io_paths(&w.b));
             let (ga, gb) = (geo_poly(&w.a), geo_poly(&w.b));
-            let x = area(&boolean(&w.a, &w.b, op).map_err(|e| e.to_string())?);
+            let x = boolean(&w.a, &w.b, op).map_err(|e| e.to_string())?.area();
             let dev = check(
                 &w.name,
                 x,
@@ -749,7 +736,7 @@ fn real_map_rows(runs: usize) -> Result<(), String> {
             let (io, geo) = (io_pairs(&jts), geo_pairs(&jts));
             let mut dev: f64 = 0.0;
             for (p, (pa, pb)) in jts.iter().zip(&io) {
-                let x = area(&boolean(&p.a, &p.b, op).map_err(|e| e.to_string())?);
+                let x = boolean(&p.a, &p.b, op).map_err(|e| e.to_string())?.area();
                 let y = io_area(&pa.overlay(pb, rule, FillRule::EvenOdd));
                 // i_overlay rounds to a 32-bit grid scaled to the largest coordinate
                 // (these maps sit far from the origin: cells up to ~1e-3 at 5e6): allow
@@ -760,7 +747,7 @@ fn real_map_rows(runs: usize) -> Result<(), String> {
                 if (x - y).abs() > allowed {
                     return Err(format!("{}: {name} area {x} vs i_overlay {y}", p.name));
                 }
-                let scale = area(&p.a).abs() + area(&p.b).abs();
+                let scale = p.a.area().abs() + p.b.area().abs();
                 dev = dev.max((x - y).abs() / scale);
             }
             let (t, med) = alternating(
@@ -794,7 +781,7 @@ fn real_map_rows(runs: usize) -> Result<(), String> {
         let pa = io_paths_oriented(&d.a);
         let empty: Vec<Vec<[f64; 2]>> = Vec::new();
         let gs = geo_poly(&d.a).0;
-        let x = area(&union_all(&d.a).map_err(|e| e.to_string())?);
+        let x = union_all(&d.a).map_err(|e| e.to_string())?.area();
         let dev = check(
             &d.name,
             x,

@@ -11,11 +11,14 @@
 //! | [`Crossing::new`] (are the lines parallel?), [`compare_slopes`] | yes | floating-point filter, exact fallback |
 //! | [`Crossing::compare_xy_point`], [`Crossing::compare_xy`], [`Crossing::orient`], [`ExactPoint::compare_xy`], [`ExactPoint::compare_x`], [`orient_exact`], [`compare_y_at_x`], [`on_segment`] | yes, for every finite input | floating-point filter, exact dyadic fallback (decided from the defining segments) |
 //! | [`segment_intersection`] | yes: the kind of intersection is exact; a shared endpoint is reported as that input point, never recomputed | exact predicates |
+//! | [`ring_area2_exact`], [`Polygon::area2_exact`], [`MultiPolygon::area2_exact`] | yes | exact dyadic sums |
+//! | [`ring_area`], [`Polygon::area`], [`MultiPolygon::area`] | no: `f64` shoelace sums | each ring relative to its first vertex |
 //! | [`Crossing::approx`], [`ExactPoint::approx`] | rounded: the nearest `f64` per coordinate (correctly rounded, ties to even); `±inf` if the exact coordinate is beyond the `f64` range | double-double midpoint filter, exact rational rounding fallback |
 //!
 //! Non-finite coordinates are rejected by the algorithms ([`ensure_finite`]) before any
 //! predicate runs; the predicates themselves never panic on them and return a
 //! documented degenerate answer.
+mod area;
 pub(crate) mod arith;
 mod crossing;
 pub(crate) mod exact;
@@ -25,6 +28,8 @@ mod predicates;
 pub(crate) mod steps;
 mod types;
 
+pub(crate) use area::ring_area_scaled;
+pub use area::{ring_area, ring_area2_exact};
 pub use crossing::{
     compare_slopes, compare_y_at_x, on_segment, orient_exact, Crossing, ExactPoint,
 };

@@ -112,28 +112,9 @@ impl ClipRegion {
     }
 }
 
-/// Signed area of a ring (positive when counter-clockwise), in `f64`.
-pub fn ring_area(ring: &[Point2]) -> f64 {
-    ring_area_scaled(ring, 1.0)
-}
-
-/// Signed area of the ring shrunk by the factor `scale` (coordinates divided by it): with
-/// a power-of-two `scale` this avoids overflow for huge coordinates.
-pub(crate) fn ring_area_scaled(ring: &[Point2], scale: f64) -> f64 {
-    let k = ring.len();
-    let Some(&o) = ring.first() else {
-        return 0.0;
-    };
-    // Relative to the first vertex: no cancellation against large absolute coordinates.
-    let mut s = 0.0;
-    for i in 0..k {
-        let (a, b) = (ring[i], ring[(i + 1) % k]);
-        let (ax, ay) = ((a.x - o.x) / scale, (a.y - o.y) / scale);
-        let (bx, by) = ((b.x - o.x) / scale, (b.y - o.y) / scale);
-        s += ax * by - ay * bx;
-    }
-    s / 2.0
-}
+/// Signed area of a ring (positive when counter-clockwise), in `f64` (the kernel's).
+pub use crate::kernel::ring_area;
+pub(crate) use crate::kernel::ring_area_scaled;
 
 /// Keep the part of convex `poly` where `(p − m)·n <= 0`, i.e. nearer to `s` than to `t`
 /// with `m` their midpoint and `n = t − s`.

@@ -1,0 +1,148 @@
+//! Areas of rings and polygons: in `f64` (the shoelace formula) and exactly.
+
+use super::arith::Arith;
+use super::exact::Dyadic;
+use super::types::{MultiPolygon, Point2, Polygon};
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+
+/// Signed area of a ring (positive when counter-clockwise), in `f64`: the shoelace
+/// formula relative to the ring's first vertex (no cancellation against large absolute
+/// coordinates). O(n).
+pub fn ring_area(ring: &[Point2]) -> f64 {
+    ring_area_scaled(ring, 1.0)
+}
+
+/// Signed area of the ring shrunk by the factor `scale` (coordinates divided by it): with
+/// a power-of-two `scale` this avoids overflow for huge coordinates.
+pub(crate) fn ring_area_scaled(ring: &[Point2], scale: f64) -> f64 {
+    let k = ring.len();
+    let Some(&o) = ring.first() else {
+        return 0.0;
+    };
+    let mut s = 0.0;
+    for i in 0..k {
+        let (a, b) = (ring[i], ring[(i + 1) % k]);
+        let (ax, ay) = ((a.x - o.x) / scale, (a.y - o.y) / scale);
+        let (bx, by) = ((b.x - o.x) / scale, (b.y - o.y) / scale);
+        s += ax * by - ay * bx;
+    }
+    s / 2.0
+}
+
+/// Twice the signed area of a ring, exactly (every product of two `f64`s and their sum
+/// is a dyadic rational). O(n) big-number operations.
+pub fn ring_area2_exact(ring: &[Point2]) -> BigRational {
+    let k = ring.len();
+    let mut s = Dyadic::zero();
+    for i in 0..k {
+        let (a, b) = (ring[i], ring[(i + 1) % k]);
+        let cross = Dyadic::val(a.x)
+            .times(&Dyadic::val(b.y))
+            .minus(&Dyadic::val(b.x).times(&Dyadic::val(a.y)));
+        s = s.plus(&cross);
+    }
+    s.to_rational()
+}
+
+impl Polygon {
+    /// The area: the exterior ring's minus the holes', whatever the rings' orientations
+    /// (as in a valid polygon, holes inside the exterior and apart). `f64`, by
+    /// [`ring_area`]; NaN or infinite for non-finite coordinates. O(n).
+    ///
+    /// ```
+    /// use compgeom::{Point2, Polygon};
+    /// let p = |x, y| Point2::new(x, y);
+    /// let square = vec![p(0.0, 0.0), p(4.0, 0.0), p(4.0, 4.0), p(0.0, 4.0)];
+    /// let hole = vec![p(1.0, 1.0), p(2.0, 1.0), p(2.0, 2.0), p(1.0, 2.0)];
+    /// assert_eq!(Polygon::new(square, vec![hole]).area(), 15.0);
+    /// ```
+    pub fn area(&self) -> f64 {
+        let holes: f64 = self.holes.iter().map(|h| ring_area(h).abs()).sum();
+        ring_area(&self.exterior).abs() - holes
+    }
+
+    /// Twice [`Polygon::area`], exactly. O(n) big-number operations.
+    pub fn area2_exact(&self) -> BigRational {
+        self.holes
+            .iter()
+            .fold(ring_area2_exact(&self.exterior).abs(), |a, h| {
+                a - ring_area2_exact(h).abs()
+            })
+    }
+}
+
+impl MultiPolygon {
+    /// The sum of the polygons' areas ([`Polygon::area`]; the area of the region when the
+    /// polygons do not overlap, as in a valid set). O(n).
+    ///
+    /// ```
+    /// use compgeom::overlay::{boolean, BooleanOp};
+    /// use compgeom::{MultiPolygon, Point2, Polygon};
+    /// let square = |x: f64| MultiPolygon(vec![Polygon::new(vec![Point2::new(x, 0.0),
+    ///     Point2::new(x + 2.0, 0.0), Point2::new(x + 2.0, 2.0), Point2::new(x, 2.0)], vec![])]);
+    /// let union = boolean(&square(0.0), &square(1.0), BooleanOp::Union).unwrap();
+    /// assert_eq!(union.area(), 6.0);
+    /// ```
+    pub fn area(&self) -> f64 {
+        self.0.iter().map(Polygon::area).sum()
+    }
+
+    /// Twice [`MultiPolygon::area`], exactly. O(n) big-number operations.
+    pub fn area2_exact(&self) -> BigRational {
+        self.0
+            .iter()
+            .fold(BigRational::zero(), |a, p| a + p.area2_exact())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point2 {
+        Point2::new(x, y)
+    }
+
+    /// Twice the area from rationals, term by term (an independent oracle).
+    fn rational_area2(ring: &[Point2]) -> BigRational {
+        let q = |v: f64| BigRational::from_float(v).unwrap();
+        (0..ring.len())
+            .map(|i| {
+                let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
+                q(a.x) * q(b.y) - q(b.x) * q(a.y)
+            })
+            .fold(BigRational::zero(), |s, t| s + t)
+    }
+
+    #[test]
+    fn exact_area_is_the_rational_shoelace() {
+        let mut unit = crate::testing::units(11);
+        for k in 0..2000 {
+            let scale = [1.0, 1e-300, 1e300, 3.0e-7, 1e15][k % 5];
+            let n = 3 + k % 9;
+            let ring: Vec<Point2> = (0..n)
+                .map(|_| p((unit() - 0.5) * scale, (unit() + 1e6) * scale))
+                .collect();
+            assert_eq!(ring_area2_exact(&ring), rational_area2(&ring), "{ring:?}");
+        }
+        assert!(ring_area2_exact(&[]).is_zero());
+    }
+
+    #[test]
+    fn holes_and_orientation() {
+        let square = vec![p(0.0, 0.0), p(4.0, 0.0), p(4.0, 4.0), p(0.0, 4.0)];
+        let clockwise: Vec<Point2> = square.iter().rev().copied().collect();
+        let hole = vec![p(1.0, 1.0), p(1.0, 3.0), p(3.0, 3.0), p(3.0, 1.0)];
+        for outer in [&square, &clockwise] {
+            let poly = Polygon::new(outer.clone(), vec![hole.clone()]);
+            assert_eq!(poly.area(), 12.0);
+            assert_eq!(poly.area2_exact(), BigRational::from_integer(24.into()));
+        }
+        let far = Polygon::new(square.iter().map(|q| p(q.x + 1e9, q.y)).collect(), vec![]);
+        let set = MultiPolygon(vec![far, Polygon::new(square.clone(), vec![hole])]);
+        assert_eq!(set.area(), 28.0);
+        assert_eq!(set.area2_exact(), BigRational::from_integer(56.into()));
+        assert_eq!(MultiPolygon::default().area(), 0.0);
+    }
+}
