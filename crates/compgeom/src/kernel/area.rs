@@ -4,13 +4,26 @@ use super::arith::Arith;
 use super::exact::Dyadic;
 use super::types::{MultiPolygon, Point2, Polygon};
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::{Signed, ToPrimitive, Zero};
 
 /// Signed area of a ring (positive when counter-clockwise), in `f64`: the shoelace
 /// formula relative to the ring's first vertex (no cancellation against large absolute
-/// coordinates). O(n).
+/// coordinates). Infinite when the area is beyond the `f64` range; NaN only for
+/// non-finite coordinates. O(n).
 pub fn ring_area(ring: &[Point2]) -> f64 {
-    ring_area_scaled(ring, 1.0)
+    let area = ring_area_scaled(ring, 1.0);
+    if area.is_finite() || !ring.iter().all(|p| p.is_finite()) {
+        return area;
+    }
+    // Finite coordinates more than the f64 range apart (their differences overflowed),
+    // or products beyond it: the exact area, rounded (rare, so the big numbers' cost
+    // does not matter).
+    let half = ring_area2_exact(ring) / BigRational::from_integer(2.into());
+    half.to_f64().unwrap_or(if half.is_negative() {
+        f64::NEG_INFINITY
+    } else {
+        f64::INFINITY
+    })
 }
 
 /// Signed area of the ring shrunk by the factor `scale` (coordinates divided by it): with
@@ -31,7 +44,8 @@ pub(crate) fn ring_area_scaled(ring: &[Point2], scale: f64) -> f64 {
 }
 
 /// Twice the signed area of a ring, exactly (every product of two `f64`s and their sum
-/// is a dyadic rational). O(n) big-number operations.
+/// is a dyadic rational), for finite coordinates (a NaN or infinite one counts as 0).
+/// O(n) big-number operations.
 pub fn ring_area2_exact(ring: &[Point2]) -> BigRational {
     let k = ring.len();
     let mut s = Dyadic::zero();
@@ -48,7 +62,8 @@ pub fn ring_area2_exact(ring: &[Point2]) -> BigRational {
 impl Polygon {
     /// The area: the exterior ring's minus the holes', whatever the rings' orientations
     /// (as in a valid polygon, holes inside the exterior and apart). `f64`, by
-    /// [`ring_area`]; NaN or infinite for non-finite coordinates. O(n).
+    /// [`ring_area`] (infinite beyond the `f64` range, NaN only for non-finite
+    /// coordinates). O(n).
     ///
     /// ```
     /// use compgeom::{Point2, Polygon};
@@ -62,7 +77,8 @@ impl Polygon {
         ring_area(&self.exterior).abs() - holes
     }
 
-    /// Twice [`Polygon::area`], exactly. O(n) big-number operations.
+    /// Twice [`Polygon::area`], exactly ([`ring_area2_exact`]: finite coordinates). O(n)
+    /// big-number operations.
     pub fn area2_exact(&self) -> BigRational {
         self.holes
             .iter()
@@ -144,5 +160,21 @@ mod tests {
         assert_eq!(set.area(), 28.0);
         assert_eq!(set.area2_exact(), BigRational::from_integer(56.into()));
         assert_eq!(MultiPolygon::default().area(), 0.0);
+    }
+
+    #[test]
+    fn areas_beyond_the_range_are_infinite_not_nan() {
+        let huge = [p(-1e308, 0.0), p(1e308, 0.0), p(0.0, 1e308)];
+        assert_eq!(ring_area(&huge), f64::INFINITY);
+        // More than the range apart in x, thin in y: a finite area (2e308 · 1e-300 / 2).
+        let thin = [p(-1e308, 0.0), p(1e308, 0.0), p(1e308, 1e-300)];
+        let got = ring_area(&thin);
+        assert!((got - 1e8).abs() <= 1e-7, "{got}");
+        // Flat along the diagonal: huge terms that cancel exactly.
+        let diagonal = [p(-1e308, -1e308), p(1e308, 1e308), p(0.0, 0.0)];
+        assert_eq!(ring_area(&diagonal), 0.0);
+        let clockwise: Vec<Point2> = huge.iter().rev().copied().collect();
+        assert_eq!(ring_area(&clockwise), f64::NEG_INFINITY);
+        assert!(ring_area(&[p(f64::NAN, 0.0), p(1.0, 0.0), p(0.0, 1.0)]).is_nan());
     }
 }

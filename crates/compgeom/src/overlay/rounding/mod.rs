@@ -286,7 +286,9 @@ fn meets(a: Point2, b: Point2, c: Point2, (hx, hy): (f64, f64)) -> bool {
     // affine in the corner q: largest at the corner furthest left of a → b, smallest at
     // the opposite one (which they are follows from exact comparisons of a and b), so
     // those two decide: the line meets the box iff the first is not right of it and
-    // the second not left.
+    // the second not left. (A corner rounded outward to infinity is on the line for
+    // `orient2d`: where it is the deciding one the answer is "meets", never wrongly
+    // "apart".)
     let (dx_positive, dy_positive) = (b.x > a.x, b.y > a.y);
     let leftmost = Point2::new(
         if dy_positive { bx.x0 } else { bx.x1 },
