@@ -3,6 +3,7 @@
 //! small input angles; the mesh is still a valid CDT; constraints are unions of pieces;
 //! Steiner points come after the input vertices.
 
+mod common;
 use compgeom::delaunay::{
     constrained_delaunay, delaunay, polygon_delaunay, refine, verify_cdt, Cdt, RefineOptions,
 };
@@ -202,13 +203,7 @@ fn small_input_angles_terminate_with_documented_exemptions() {
 
 #[test]
 fn point_sets_and_grids_refine_over_the_hull() {
-    let mut s = 7u64;
-    let mut f = || {
-        s = s
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut f = common::units(7);
     let pts: Vec<Point2> = (0..300).map(|_| Point2::new(f(), f())).collect();
     let t = delaunay(&pts).unwrap();
     let cdt = Cdt {

@@ -6,6 +6,7 @@
 //! tangents of a circle a few ulps apart, huge and tiny scales in and out of the filters'
 //! range) and on inputs large enough for the bucketed shuffle.
 
+mod common;
 use compgeom::lp::{lp2d, lp2d_exact, verify_lp2d, HalfPlane, Lp2Options, Lp2Solution};
 use compgeom::Vector2;
 use proptest::prelude::*;
@@ -93,13 +94,10 @@ proptest! {
 
 /// Random tangents of the unit circle, `n` of them (the benchmark's input).
 fn tangents(n: usize, seed: u64) -> Vec<HalfPlane> {
-    let mut s = seed;
+    let mut unit = common::units(seed);
     (0..n)
         .map(|k| {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            let t = (s >> 11) as f64 / (1u64 << 53) as f64 * std::f64::consts::TAU;
+            let t = unit() * std::f64::consts::TAU;
             HalfPlane::new(
                 t.cos(),
                 t.sin(),

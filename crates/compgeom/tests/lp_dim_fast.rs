@@ -3,6 +3,7 @@
 //! redundant constraints, integer grids, optima through many constraints), and the
 //! treatment of zero normals.
 
+mod common;
 use compgeom::lp::{lp2d, lp_d, lp_d_exact, HalfPlane, Lp2Options, Lp2Solution, LpSolution};
 use compgeom::Vector2;
 use proptest::prelude::*;
@@ -170,13 +171,7 @@ fn zero_normals_are_true_or_infeasible() {
 fn generic_input_takes_the_fast_path() {
     // Planes tangent to the unit sphere: a unique, non-degenerate optimum every time.
     let before = compgeom::lp::lp_d_fast_hits();
-    let mut s: u64 = 7;
-    let mut unit = || {
-        s = s
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut unit = common::units(7);
     for _ in 0..5 {
         let rows: Vec<Vec<f64>> = (0..300)
             .map(|_| {

@@ -3,6 +3,7 @@
 //! that stress it: lines tangent to a circle (where incremental clipping is quadratic),
 //! parallel families, all lines through one point, integer-grid coefficients.
 
+mod common;
 mod lp_oracle;
 
 use compgeom::lp::{
@@ -125,13 +126,7 @@ proptest! {
 #[test]
 fn many_random_tangents_against_incremental() {
     // Every constraint touches the unit circle: all of them bound the region.
-    let mut s = 12345u64;
-    let mut unit = || {
-        s = s
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut unit = common::units(12345);
     let hs: Vec<HalfPlane> = (0..1500)
         .map(|_| {
             let t = unit() * std::f64::consts::TAU;

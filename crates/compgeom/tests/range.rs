@@ -2,6 +2,7 @@
 //! structure, every query type (iterator, callback, sorted query, count; k-NN and radius
 //! for the kd-tree; d dimensions).
 
+mod common;
 use compgeom::range::{
     compare_distance, read_rects, KdTree, LayeredRangeTree, RangeTree, RangeTreeD,
 };
@@ -61,15 +62,12 @@ fn brute_knn(points: &[Point2], q: Point2, k: usize) -> Vec<usize> {
 }
 
 fn grid_points(n: usize, side: u32, seed: u64) -> Vec<Point2> {
-    let mut s = seed;
-    let mut next = move || {
-        s = s
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (s >> 33) as u32
-    };
+    let mut below = common::below(seed);
     (0..n)
-        .map(|_| Point2::new((next() % side) as f64, (next() % side) as f64))
+        .map(|_| {
+            let x = below(u64::from(side)) as f64;
+            Point2::new(x, below(u64::from(side)) as f64)
+        })
         .collect()
 }
 

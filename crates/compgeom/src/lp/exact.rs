@@ -692,13 +692,8 @@ mod tests {
 
     #[test]
     fn integer_rounding_of_meets_matches_rationals() {
-        let mut seed = 7u64;
-        let mut next = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 4.0
-        };
+        let mut unit = crate::testing::units(7);
+        let mut next = || (unit() - 0.5) * 4.0;
         let mut checked = 0;
         for t in 0..3000 {
             let scale = [1.0, 1e-3, 3e5, 1e-150, 1e150][t % 5];

@@ -244,13 +244,8 @@ mod tests {
     /// meeting point of two, moved by an ulp): the fast answers equal the exact ones.
     #[test]
     fn agrees_with_the_exact_predicates() {
-        let mut s = 3u64;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut unit = crate::testing::units(3);
+        let mut next = || unit() - 0.5;
         let bx = Line::bbox();
         let mut decided = 0;
         for t in 0..20000 {

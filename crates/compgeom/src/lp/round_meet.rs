@@ -165,13 +165,8 @@ mod tests {
 
     #[test]
     fn equals_the_exact_rounding() {
-        let mut s = 11u64;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut unit = crate::testing::units(11);
+        let mut next = || unit() - 0.5;
         let mut fast = 0;
         for t in 0..20000 {
             let scale = [1.0, 1e-100, 1e100, 1e-280, 7.0][t % 5];

@@ -154,13 +154,8 @@ mod tests {
 
     #[test]
     fn matches_comparison_sort_on_large_and_tied_input() {
-        let mut s = 99u64;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut unit = crate::testing::units(99);
+        let mut next = || unit() - 0.5;
         let mut lines = Vec::new();
         for t in 0..6000 {
             let (a, b) = match t % 4 {

@@ -578,13 +578,8 @@ mod tests {
             }
         }
         // Every quadruple from a small integer pattern near the limit of the integer stage.
-        let mut seed = 7u64;
-        let mut r = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((seed >> 33) % 4095) as f64 - 2047.0
-        };
+        let mut below = crate::testing::below(7);
+        let mut r = || below(4095) as f64 - 2047.0;
         for _ in 0..20_000 {
             let q: Vec<Point2> = (0..4).map(|_| Point2::new(r(), r())).collect();
             let want = incircle(q[0], q[1], q[2], q[3]) == CircleSide::OnCircle;
