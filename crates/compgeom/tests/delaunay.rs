@@ -1,6 +1,7 @@
 //! Delaunay triangulation: the exact verifier and a brute-force empty-circle oracle on
 //! random and degenerate input; the book variant against the default.
 
+mod common;
 use compgeom::delaunay::{
     delaunay, delaunay_with, verify_delaunay, DelaunayAlgorithm, DelaunayOptions, InsertionOrder,
     Triangulation,
@@ -66,22 +67,11 @@ fn check_both(pts: &[Point2]) -> (Triangulation, Triangulation) {
     (f, b)
 }
 
-struct Lcg(u64);
-impl Lcg {
-    fn f(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 #[test]
 fn random_points_book_equals_default() {
-    let mut r = Lcg(7);
+    let mut unit = common::units(7);
     for n in [3, 4, 5, 10, 50, 200, 2000] {
-        let pts: Vec<Point2> = (0..n).map(|_| Point2::new(r.f(), r.f())).collect();
+        let pts: Vec<Point2> = (0..n).map(|_| Point2::new(unit(), unit())).collect();
         let (f, b) = check_both(&pts);
         assert_eq!(f.canonical_triangles(), b.canonical_triangles(), "n = {n}");
         let u = book_in(&pts, InsertionOrder::Uniform);
@@ -91,9 +81,9 @@ fn random_points_book_equals_default() {
 
 #[test]
 fn larger_random_input_verifies() {
-    let mut r = Lcg(11);
+    let mut unit = common::units(11);
     let pts: Vec<Point2> = (0..30_000)
-        .map(|_| Point2::new(r.f() * 1e3 - 500.0, r.f() * 10.0))
+        .map(|_| Point2::new(unit() * 1e3 - 500.0, unit() * 10.0))
         .collect();
     let (f, b) = check_both(&pts);
     assert_eq!(f.canonical_triangles(), b.canonical_triangles());

@@ -1,26 +1,16 @@
 //! Terrain interpolation and the Euclidean minimum spanning tree.
 
+mod common;
 use compgeom::delaunay::{euclidean_mst, Terrain};
 use compgeom::{Point2, Point3};
 
-struct Lcg(u64);
-impl Lcg {
-    fn f(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 #[test]
 fn a_plane_is_reproduced_inside_and_none_outside() {
-    let mut r = Lcg(5);
+    let mut unit = common::units(5);
     let plane = |x: f64, y: f64| 2.0 * x - 3.0 * y + 1.0;
     let mut s: Vec<Point3> = (0..500)
         .map(|_| {
-            let (x, y) = (r.f() * 10.0, r.f() * 10.0);
+            let (x, y) = (unit() * 10.0, unit() * 10.0);
             Point3::new(x, y, plane(x, y))
         })
         .collect();
@@ -29,7 +19,7 @@ fn a_plane_is_reproduced_inside_and_none_outside() {
     }
     let t = Terrain::new(&s).unwrap();
     for _ in 0..2000 {
-        let (x, y) = (r.f() * 10.0, r.f() * 10.0);
+        let (x, y) = (unit() * 10.0, unit() * 10.0);
         let h = t.height_at(Point2::new(x, y)).unwrap();
         assert!((h - plane(x, y)).abs() < 1e-9, "{h} vs {}", plane(x, y));
     }
@@ -85,9 +75,9 @@ fn brute_mst_weight(v: &[Point2]) -> f64 {
 
 #[test]
 fn emst_matches_prim_on_random_and_grid_input() {
-    let mut r = Lcg(9);
+    let mut unit = common::units(9);
     for n in [2, 3, 10, 100, 400] {
-        let pts: Vec<Point2> = (0..n).map(|_| Point2::new(r.f(), r.f())).collect();
+        let pts: Vec<Point2> = (0..n).map(|_| Point2::new(unit(), unit())).collect();
         let (t, tree) = euclidean_mst(&pts).unwrap();
         assert_eq!(tree.len(), t.vertices().len() - 1);
         let v = t.vertices();
