@@ -440,14 +440,13 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
             // (The precise box only where the cheap one, which holds it, meets an edge's:
             // most points are near no moved edge.)
             let mut precise = None;
-            for (e, eb) in moved_edges.iter().zip(edge_boxes) {
-                if eb.overlaps(&rough) {
-                    let b = precise.get_or_insert_with(|| point_box(x));
-                    if eb.overlaps(b) && e.i != x && e.j != x {
-                        pairs.push((x as u32, *e));
-                    }
+            for_each_overlapping(edge_boxes, &rough, |k| {
+                let (e, eb) = (&moved_edges[k], &edge_boxes[k]);
+                let b = precise.get_or_insert_with(|| point_box(x));
+                if eb.overlaps(b) && e.i != x && e.j != x {
+                    pairs.push((x as u32, *e));
                 }
-            }
+            });
         }
         let around_points = point_boxes.iter().copied().reduce(|a, b| a.union(&b));
         r.for_each_edge(|e| {
@@ -458,11 +457,7 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
             if !around_points.is_some_and(|a| a.overlaps(&b)) {
                 return;
             }
-            for (&x, xb) in moved_points.iter().zip(point_boxes) {
-                if xb.overlaps(&b) {
-                    pairs.push((x as u32, e));
-                }
-            }
+            for_each_overlapping(point_boxes, &b, |k| pairs.push((moved_points[k] as u32, e)));
         });
         return pairs;
     }
@@ -510,6 +505,23 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
         edge_pairs(k, &mut stamp, &mut pairs);
     }
     pairs
+}
+
+/// Calls `f(k)` for each box `boxes[k]` that overlaps `b`, in order. The tests of 64
+/// boxes at a time run without branches, into a mask (most fail, but which ones is a
+/// coin toss for the branch predictor, and one by one they were most of the search).
+fn for_each_overlapping(boxes: &[Box2], b: &Box2, mut f: impl FnMut(usize)) {
+    for (c, chunk) in boxes.chunks(64).enumerate() {
+        let mut hits = 0u64;
+        for (k, o) in chunk.iter().enumerate() {
+            let hit = (o.x0 <= b.x1) & (b.x0 <= o.x1) & (o.y0 <= b.y1) & (b.y0 <= o.y1);
+            hits |= u64::from(hit) << k;
+        }
+        while hits != 0 {
+            f(64 * c + hits.trailing_zeros() as usize);
+            hits &= hits - 1;
+        }
+    }
 }
 
 /// Up to this many box tests (points and edges times moved items) [`near_pairs`] makes
