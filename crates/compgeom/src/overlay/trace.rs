@@ -303,11 +303,6 @@ pub(super) fn traced_boolean(
     Ok(canonical_order(settled))
 }
 
-/// A point as a hash key, -0 and 0 one value.
-fn point_key(q: Point2) -> (u64, u64) {
-    ((q.x + 0.0).to_bits(), (q.y + 0.0).to_bits())
-}
-
 /// The polygons of `context` (by number, ascending) whose boxes meet the box of `segs`
 /// widened by 2⁻⁴⁰ of its largest coordinate (and the smallest normal `f64`): more than
 /// the ten float gaps within which the rounding check looks for near pairs, so a
@@ -767,7 +762,7 @@ fn traced(
     // (Sized once: the result's points, then the near context's.)
     let points = boundary + near_points().count();
     context_points.reserve(points - boundary);
-    context_points.extend(near_points().map(|&q| point_key(q)));
+    context_points.extend(near_points().map(|q| (okey(q.x), okey(q.y))));
     let mut rounded = RoundedRings {
         points: Vec::with_capacity(points),
         ids: Vec::with_capacity(points),
@@ -881,7 +876,8 @@ fn traced(
                     };
                     // (A point of the context stays: a polygon there touches this ring.)
                     let q = ring_r[j].point();
-                    let touched = !context.is_empty() && context_points.contains(&point_key(q));
+                    let touched =
+                        !context.is_empty() && context_points.contains(&(okey(q.x), okey(q.y)));
                     if straight && !touched {
                         continue;
                     }
