@@ -7,8 +7,9 @@
 //! `r` it has the homogeneous coordinates `((a - r)·den + (b - a)·num, den)`: a
 //! numerator of degree 3 over a denominator of degree 2. Every decision below is the
 //! sign of a polynomial in differences of input coordinates built from these
-//! (degree 3 for crossing vs point, 4 for an orientation with two input points, 5 for
-//! crossing vs crossing, up to 8 for an orientation of three crossings).
+//! (degree 3 for crossing vs point, 4 for an orientation with two input points or with
+//! two points on one input segment, 5 for crossing vs crossing, up to 8 for an
+//! orientation of three crossings otherwise).
 //!
 //! Each sign is first evaluated in `f64` with a rigorous running error bound
 //! ([`super::filter::Bounded`]), then, when that bound does not exclude zero, in
@@ -292,6 +293,97 @@ fn orient_with<T: Arith>(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint) -> Opti
     signs(&[&det, &ha.w, &hb.w, &hc.w])
 }
 
+/// Where `p` lies along segment `l` when it does by construction (an end of `l`, or a
+/// crossing one of whose segments is `l`): its parameter from `l.a` towards `l.b` as
+/// `(num, den)`, else `None`.
+fn along<T: Arith>(p: &ExactPoint, l: Segment2) -> Option<(T, T)> {
+    match p {
+        ExactPoint::Input(q) if *q == l.a => Some((T::val(0.0), T::val(1.0))),
+        ExactPoint::Input(q) if *q == l.b => Some((T::val(1.0), T::val(1.0))),
+        ExactPoint::Input(_) => None,
+        ExactPoint::Crossing(c) => {
+            let other = if c.s == l {
+                c.t
+            } else if c.t == l {
+                c.s
+            } else {
+                return None;
+            };
+            let Param { num, den, .. } = param::<T>(&Crossing { s: l, t: other });
+            Some((num, den))
+        }
+    }
+}
+
+/// A segment on whose line both `a` and `b` lie by construction ([`along`]).
+fn common_segment(a: &ExactPoint, b: &ExactPoint) -> Option<Segment2> {
+    let segments = |p: &ExactPoint| match p {
+        ExactPoint::Crossing(c) => [Some(c.s), Some(c.t)],
+        ExactPoint::Input(_) => [None, None],
+    };
+    let on = |p: &ExactPoint, l: Segment2| match p {
+        ExactPoint::Input(q) => *q == l.a || *q == l.b,
+        ExactPoint::Crossing(c) => c.s == l || c.t == l,
+    };
+    segments(a)
+        .into_iter()
+        .chain(segments(b))
+        .flatten()
+        .find(|&l| on(a, l) && on(b, l))
+}
+
+/// `orient(a, b, c)` for `a` and `b` on the line of segment `l` ([`common_segment`]):
+/// `(μ_b − μ_a) · orient(l.a, l.b, c)` for their parameters `μ` along `l`, since the
+/// orientation is linear in each point. For a crossing `c` of `p` with another segment,
+/// `orient(l.a, l.b, c)` is affine along `p`: `(A·(den − num) + B·num) / den` with
+/// `A`, `B` the orientations of `p`'s ends. Degree 4 where the general form has
+/// degree up to 8, and no homogeneous coordinates: the rounding check asks this of
+/// every vertex near an edge, whose ends are crossings along one input segment.
+fn orient_along_with<T: Arith>(
+    a: &ExactPoint,
+    b: &ExactPoint,
+    c: &ExactPoint,
+    l: Segment2,
+) -> Option<Ordering> {
+    let (na, da) = along::<T>(a, l)?;
+    let (nb, db) = along::<T>(b, l)?;
+    // μ_b − μ_a = nb/db − na/da has the sign of (nb·da − na·db)·da·db.
+    let step = nb.times(&da).minus(&na.times(&db));
+    let direction = signs(&[&step, &da, &db])?;
+    let (lx, ly) = (T::diff(l.b.x, l.a.x), T::diff(l.b.y, l.a.y));
+    let side_of = |q: Point2| {
+        lx.times(&T::diff(q.y, l.a.y))
+            .minus(&ly.times(&T::diff(q.x, l.a.x)))
+    };
+    let side = match c {
+        ExactPoint::Input(q) => side_of(*q).sign()?,
+        ExactPoint::Crossing(x) => {
+            let Param { num, den, .. } = param::<T>(x);
+            let (first, second) = (side_of(x.s.a), side_of(x.s.b));
+            let value = first.times(&den.minus(&num)).plus(&second.times(&num));
+            signs(&[&value, &den])?
+        }
+    };
+    Some(mul_sign(direction, side))
+}
+
+/// [`orient_along_with`] through the filters, then exactly (a crossing with one of its
+/// segments on `l`'s line is on it: decided by orientations of input points first).
+fn orient_along(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint, l: Segment2) -> Ordering {
+    decide(
+        || orient_along_with::<Bounded>(a, b, c, l),
+        || orient_along_with::<DoubleDouble>(a, b, c, l),
+        || {
+            if let ExactPoint::Crossing(x) = c {
+                if same_line(l, x.s) || same_line(l, x.t) {
+                    return Some(Ordering::Equal);
+                }
+            }
+            orient_along_with::<Dyadic>(a, b, c, l)
+        },
+    )
+}
+
 /// The exact orientation of three points, each an input point or a crossing.
 ///
 /// ```
@@ -313,23 +405,35 @@ pub fn orient_exact(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint) -> Orientati
         {
             Ordering::Equal
         }
-        _ => decide(
-            || orient_with::<Bounded>(a, b, c),
-            || orient_with::<DoubleDouble>(a, b, c),
-            || {
-                if same_lines(a, b) || same_lines(b, c) || same_lines(a, c) || on_one_line(a, b, c)
-                {
-                    return Some(Ordering::Equal);
-                }
-                orient_with::<Dyadic>(a, b, c)
-            },
-        ),
+        _ => match [(a, b, c), (b, c, a), (c, a, b)]
+            .into_iter()
+            .find_map(|(p, q, r)| common_segment(p, q).map(|l| (p, q, r, l)))
+        {
+            // Two of them on one input segment (taken in cyclic order, which keeps the
+            // sign).
+            Some((p, q, r, l)) => orient_along(p, q, r, l),
+            None => orient_general(a, b, c),
+        },
     };
     match sign {
         Ordering::Greater => Orientation::CounterClockwise,
         Ordering::Less => Orientation::Clockwise,
         Ordering::Equal => Orientation::Collinear,
     }
+}
+
+/// [`orient_exact`] by homogeneous coordinates, through the filters, then exactly.
+fn orient_general(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint) -> Ordering {
+    decide(
+        || orient_with::<Bounded>(a, b, c),
+        || orient_with::<DoubleDouble>(a, b, c),
+        || {
+            if same_lines(a, b) || same_lines(b, c) || same_lines(a, c) || on_one_line(a, b, c) {
+                return Some(Ordering::Equal);
+            }
+            orient_with::<Dyadic>(a, b, c)
+        },
+    )
 }
 
 fn cross_sign_with<T: Arith>(s: Segment2, t: Segment2) -> Option<Ordering> {
@@ -709,6 +813,96 @@ mod tests {
         );
     }
 
+    /// Orientations with two points on one input segment (its ends, its crossings with
+    /// other segments) go by that segment's line (`orient_along`) and agree with the
+    /// general exact evaluation: the third point a crossing within a few floats of the
+    /// line, exactly on it (crossings of segments sharing its line, or of lines through
+    /// grid points on it), or an input point; the two on the segment in either order,
+    /// and each triple in all three cyclic orders, at scales from 1e-300 to 1e300.
+    #[test]
+    fn orientation_along_a_segment_agrees_with_exact() {
+        let mut unit = crate::testing::units(0x5851_f42d_4c95_7f2d);
+        let to_orientation = |o: Ordering| match o {
+            Ordering::Greater => Orientation::CounterClockwise,
+            Ordering::Less => Orientation::Clockwise,
+            Ordering::Equal => Orientation::Collinear,
+        };
+        let (mut along, mut near, mut zero) = (0usize, 0usize, 0usize);
+        for k in 0..240 {
+            let scale = [1.0, 1e-300, 1e300, 3.0e-7, 1e30, 0.1][k % 6];
+            let grid = k % 3 == 0;
+            let t = unit();
+            let mut pt = || {
+                let (x, y) = (unit(), unit());
+                if grid {
+                    Point2::new((x * 16.0).floor() * scale, (y * 16.0).floor() * scale)
+                } else {
+                    Point2::new(x * scale, y * scale)
+                }
+            };
+            let l = Segment2::new(pt(), pt());
+            if l.a == l.b {
+                continue;
+            }
+            let at = |t: f64| Point2::new(l.a.x + t * (l.b.x - l.a.x), l.a.y + t * (l.b.y - l.a.y));
+            // Segments through points of l (rounded: within a float or so of its line;
+            // on it exactly for grid points at t = 0, 1/2, 1 where the halving is exact).
+            let mut through = |t: f64| {
+                let m = at(t);
+                let q = pt();
+                Segment2::new(Point2::new(2.0 * m.x - q.x, 2.0 * m.y - q.y), q)
+            };
+            let cuts: Vec<Segment2> = [0.25, 0.5, 0.75, 0.5, t]
+                .into_iter()
+                .map(&mut through)
+                .collect();
+            let mut on_l: Vec<ExactPoint> = vec![l.a.into(), l.b.into()];
+            let mut others: Vec<ExactPoint> = vec![pt().into(), at(0.5).into()];
+            for (i, &c) in cuts.iter().enumerate() {
+                if let Some(x) = Crossing::new(l, c) {
+                    on_l.push(x.into());
+                }
+                if let Some(x) = Crossing::new(c, l) {
+                    on_l.push(x.into());
+                }
+                for &d in &cuts[i + 1..] {
+                    if let Some(x) = Crossing::new(c, d) {
+                        others.push(x.into());
+                    }
+                }
+            }
+            // A segment on l's line (overlapping it): its crossings are on the line.
+            let shared = Segment2::new(at(0.5), l.b);
+            if let Some(x) = Crossing::new(shared, cuts[4]) {
+                others.push(x.into());
+            }
+            for (i, a) in on_l.iter().enumerate() {
+                for b in &on_l[i + 1..] {
+                    for c in &others {
+                        for (p, q, r) in [(a, b, c), (b, c, a), (c, a, b), (b, a, c)] {
+                            let exact = to_orientation(
+                                orient_with::<Dyadic>(p, q, r).unwrap_or(Ordering::Equal),
+                            );
+                            assert_eq!(orient_exact(p, q, r), exact, "{p:?} {q:?} {r:?}");
+                        }
+                        if common_segment(a, b).is_some() && !same_by_construction(a, b) {
+                            along += 1;
+                            let l = common_segment(a, b).unwrap();
+                            near += usize::from(orient_along_with::<Bounded>(a, b, c, l).is_none());
+                            zero += usize::from(
+                                orient_with::<Dyadic>(a, b, c) == Some(Ordering::Equal),
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            along > 50_000 && near > 20_000 && zero > 3_000,
+            "{along} triples along a segment, {near} left open by the f64 filter, {zero} on it"
+        );
+    }
+
     /// The double-double stage of `decide` agrees with the exact evaluation where the
     /// `f64` filter gives up: crossings within a few floats of a line through input
     /// points or through other crossings (the near pairs of the boolean operations'
@@ -807,6 +1001,7 @@ mod tests {
         for k in 0..6_000 {
             let scale = [1.0, 1e-200, 1e200, 3.0e-7, 1e-300, 1e250][k % 6];
             let grid = k % 3 == 0;
+            let t = unit();
             let mut pt = || {
                 let v = |u: f64| {
                     if grid {
