@@ -1001,7 +1001,6 @@ mod tests {
         for k in 0..6_000 {
             let scale = [1.0, 1e-200, 1e200, 3.0e-7, 1e-300, 1e250][k % 6];
             let grid = k % 3 == 0;
-            let t = unit();
             let mut pt = || {
                 let v = |u: f64| {
                     if grid {
