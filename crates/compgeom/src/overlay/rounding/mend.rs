@@ -155,7 +155,12 @@ pub(super) fn nudge(
             if let Some(Some(list)) = found.filter(|l| l.as_ref().is_some_and(|l| !l.is_empty())) {
                 if !movable.iter().any(|(l, _)| std::ptr::eq(*l, list)) {
                     let q = r.points[i];
-                    let (a, b) = (toward(id.enter, q), toward(id.leave, q));
+                    let a = toward(id.enter, q);
+                    let b = if id.leave == id.enter {
+                        a
+                    } else {
+                        toward(id.leave, q)
+                    };
                     // (A point for two vertices: only where both exact ones are.)
                     let same = |s: Ordering, t: Ordering| if s == t { s } else { Ordering::Equal };
                     movable.push((list, corners(q, (same(a.0, b.0), same(a.1, b.1)))));
