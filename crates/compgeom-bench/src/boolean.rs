@@ -522,6 +522,39 @@
 //! intersection 1.09–1.18 / 1.05–1.17, union 1.12–1.22 / 1.13–1.19, difference
 //! 1.13–1.15 / 1.11–1.15, xor 1.65–1.69 / 1.58–1.60; dissolve 1.25–1.30 / 1.14–1.20.
 //! Not met: the JTS rows and the dissolve.
+//!
+//! Session 39. Instructions as before (inclusive `boolean`, 5 calls), session-start
+//! binary against the end: an orientation with two of its points on one input segment
+//! goes by that segment's line (`kernel::crossing`: degree 4, no homogeneous
+//! coordinates; the rounding check's exact sides, 1 750 instructions each on the JTS
+//! xor before); pairs of a point and an edge it is an end of left out where they are
+//! found (rings touching at a vertex: about 3 000 a JTS xor round); the nudge moves one
+//! vertex at a time (every mend on the JTS pairs moved one; a pair nothing mends cost up
+//! to 64 tries, 183 k instructions a call on pg-2055's intersection); the one-by-one
+//! near-pair search sorts 16 or more moved items into strips per axis as bit sets and
+//! takes results up to 262 144 box tests (was 16 384). JTS×52 intersection 58.6 M →
+//! 57.3 M (−2.1%), union 67.4 M → 65.9 M (−2.2%), difference 63.1 M → 60.6 M (−3.9%),
+//! xor 99.7 M → 93.6 M (−6.1%); dissolve 26.7 M → 26.4 M (−1.1%); water intersection
+//! +0.1%, xor −0.4%; stars 1e3 union −2.3%, xor −3.4%. The same re-unions on the JTS
+//! pairs as before (1, 3, 3 and 19 results, 24 unions for the xor). Per call against the
+//! peers: JTS×52 intersection 11.48 M (/ i_overlay 1.15, / geo 1.13), union 13.21 M
+//! (1.21 / 1.17), difference 12.16 M (1.18 / 1.14), xor 18.79 M (1.62 / 1.54); dissolve
+//! 5.30 M (1.32 / 1.16). Tried and dropped: `lto = "fat"` with one codegen unit (all
+//! three contenders about 2% fewer instructions, the ratios the same); nudging where a
+//! ring rounded to fewer than three points (its polygon is dropped; only three vertices
+//! on one point make the merged ids depend on the numbering): xor −0.15%, the other rows
+//! +0.2% to +0.8%; tracing rings from their lowest vertex so that merges are canonical
+//! and nudging always (the same, about ±0); a sweep over the boxes' left sides instead
+//! of the one-by-one search and the grid (xor +7%, water xor +32%: long moved edges
+//! scan every point in their x-range); the one-by-one search's boxes side by side for
+//! vectorized tests (the tests −35%, the search +9%: four more arrays per call); a look
+//! at the grid cells before visiting each unmoved edge (dissolve +0.2%). Code layout
+//! moves these counts by ±0.5% (splitting the near-pair search into two functions
+//! changed which calls were inlined): differences below that are noise here. Where a
+//! JTS xor call goes now: the noding 6.7 M instructions, the rounding check 4.7 M (near
+//! pairs 2.6 M, the decisions 1.3 M, the nudge 1.1 M), the re-unions about 2.5 M
+//! (misc-2#0, isochrone#4 and misc-4#1 unite most of their result again), the tracing
+//! the rest. Table: see the closing note of the session.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};

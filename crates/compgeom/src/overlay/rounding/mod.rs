@@ -386,7 +386,7 @@ fn near_pairs(r: &RoundedRings) -> Vec<Pair> {
 enum Search {
     /// One by one when there are few ([`BRUTE_FORCE_TESTS`]), else on a grid.
     Auto,
-    /// Every box test, one by one.
+    /// Each point and edge against the moved items' boxes ([`Near`]).
     OneByOne,
     /// On a grid.
     Grid,
