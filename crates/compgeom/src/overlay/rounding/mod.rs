@@ -36,11 +36,13 @@
 //! and no ring is carried across another's edge: the rounded rings keep the exact
 //! result's topology.
 //!
-//! Where a pair fails on a side flip, [`nudge`] moves its crossings to other floats
-//! around their exact points (at most one float away per axis, so within the reach the
-//! argument allows) until the pair passes without another failing: a corner of the
-//! float box around the exact point is always on the exact side of a line, so a pair
-//! failing alone is mended so unless that float is a neighbour's point. On the GEOS-837
+//! Where a pair fails on a side flip, [`nudge`] moves its crossings, one at a time, to
+//! other floats around their exact points (at most one float away per axis, so within
+//! the reach the argument allows) until the pair passes without another failing: a
+//! corner of the float box around the exact point is always on the exact side of a
+//! line, so a pair failing alone with one of its points moved is mended so unless that
+//! float is a neighbour's point (a pair needing two points moved together is united
+//! again). On the GEOS-837
 //! dissolve this mends both failing pairs.
 //!
 //! The test sees the points a ring keeps. Where two consecutive vertices of a ring round
