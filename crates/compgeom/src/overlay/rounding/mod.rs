@@ -184,6 +184,11 @@ impl RoundedRings {
         self.ids[i].moved
     }
 
+    /// Whether an end of edge `e` moved.
+    fn edge_moved(&self, e: &Edge) -> bool {
+        self.moved(e.i) || self.moved(e.j)
+    }
+
     /// Whether point `x` is an end of edge `e`: the same arrangement vertex (rings
     /// touching at a point share it; a point standing for a collapsed edge is both of
     /// its vertices). Such a pair always passes: it is not a pair at all.
@@ -397,7 +402,7 @@ enum Search {
 /// [`near_pairs`] by the search `how`: the same pairs either way.
 fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
     let point_box = |i: usize| point_box(r, i);
-    let moves = |e: &Edge| r.moved(e.i) || r.moved(e.j);
+    let moves = |e: &Edge| r.edge_moved(e);
     let edge_box = |e: &Edge| {
         let (a, b) = (r.points[e.i], r.points[e.j]);
         if moves(e) {
@@ -456,7 +461,7 @@ fn near_pairs_one_by_one(
     moved_edges: &[Edge],
     boxes: &[Box2],
 ) -> Vec<Pair> {
-    let moves = |e: &Edge| r.moved(e.i) || r.moved(e.j);
+    let moves = |e: &Edge| r.edge_moved(e);
     // (About as many pairs as moved items, mostly.)
     let mut pairs = Vec::with_capacity(boxes.len());
     let (edge_boxes, point_boxes) = boxes.split_at(moved_edges.len());
@@ -504,7 +509,7 @@ fn near_pairs_on_grid(
     moved_edges: &[Edge],
     boxes: &[Box2],
 ) -> Vec<Pair> {
-    let moves = |e: &Edge| r.moved(e.i) || r.moved(e.j);
+    let moves = |e: &Edge| r.edge_moved(e);
     let grid = Grid::new(boxes);
     // Each point against the moved edges near it, then each unmoved edge (query
     // `points + k` for the k-th) against the moved points near it; `stamp` as in
