@@ -746,10 +746,9 @@ fn traced(
     // vertices, whether it moved), and all rings' points.
     let mut ids: Vec<PointIds> = Vec::with_capacity(boundary);
     let mut pts: Vec<Point2> = Vec::with_capacity(boundary);
-    // The regions where rounding made three vertices of a ring one point, or left a ring
-    // fewer than three points (the check does not follow these: they are always united
-    // again).
-    let mut collapsed: Vec<usize> = Vec::new();
+    // The regions where rounding made three vertices of a ring one point (the check does
+    // not follow these: they are always united again).
+    let mut three_on_one: Vec<usize> = Vec::new();
     // Per ring checked, its region (then the context's polygons).
     let mut owner: Vec<usize> = Vec::with_capacity(rings_hint);
     // The context's polygons that may touch or come near this result (the others
@@ -889,7 +888,7 @@ fn traced(
                     // collapsed.
                     Some(last) if pts.last() == Some(&q) => {
                         if !last.merge(id) {
-                            collapsed.push(k);
+                            three_on_one.push(k);
                         }
                     }
                     _ => {
@@ -903,12 +902,16 @@ fn traced(
                 // (The ring's last point is its first: entered at the last's vertex.)
                 let mut last = ids.pop().expect("one per point");
                 if !last.merge(ids[0]) {
-                    collapsed.push(k);
+                    three_on_one.push(k);
                 }
                 ids[0] = last;
             }
             if pts.len() < 3 {
-                collapsed.push(k);
+                // The ring rounded to a point or a segment: it was thinner than the
+                // rounding (a sliver between near-coincident edges) and is dropped, as
+                // a union again would drop it. What is left is the exact result without
+                // that ring, valid, and the check below decides its rounded rings as
+                // any others.
                 continue;
             }
             // (A popped last point equals the first.)
@@ -949,14 +952,14 @@ fn traced(
     };
     let mut suspect = vec![false; regions.len()];
     let mut context_suspect = vec![false; context.len()];
-    for &k in &collapsed {
+    for &k in &three_on_one {
         suspect[k] = true;
     }
     // Points are moved off their nearest floats only where no three vertices of a ring
     // rounded onto one point: which two of them the tracing merged depends on where it
     // started the ring, and the points moved should not (those results are united
     // again anyway).
-    let exact_points = collapsed.is_empty().then_some(ExactPoints {
+    let exact_points = three_on_one.is_empty().then_some(ExactPoints {
         toward: |v: u32, q: Point2| exact(v).compare_with_point(q),
         order: |u: u32, v: u32| exact(u).compare_xy(&exact(v)),
     });
@@ -1816,6 +1819,75 @@ mod tests {
                 )
             },
         )
+    }
+
+    /// A hole thinner than the rounding: the square with a triangular hole H, united
+    /// with a dart B covering H but for a sliver between H's bottom side and B's apex
+    /// just above it. The exact union is the square with that sliver as its hole; the
+    /// sliver's crossings round so that it keeps two points. It is dropped, and the
+    /// square is not flagged for a second union (nothing else moved); and every such
+    /// union, the apex a few floats above or below the side, comes out valid.
+    #[test]
+    fn a_ring_rounded_to_two_points_is_dropped_without_a_second_union() {
+        let f = Point2::new;
+        let square = vec![
+            f(-10.0, -10.0),
+            f(10.0, -10.0),
+            f(10.0, 10.0),
+            f(-10.0, 10.0),
+        ];
+        let hole = vec![f(0.0, 0.0), f(0.677, 1.241), f(1.433, 0.09160000000000001)];
+        let dart = |apex: Point2| {
+            vec![
+                f(apex.x - 3.319, -0.80391992),
+                apex,
+                f(apex.x + 3.319, -1.46891992),
+                f(apex.x + 0.304, 5.0),
+            ]
+        };
+        let a = MultiPolygon(vec![Polygon::new(square.clone(), vec![hole.clone()])]);
+        let b = MultiPolygon(vec![Polygon::new(
+            vec![
+                f(-2.9266446, -0.80391992),
+                f(0.3923554, 0.025080080000000008),
+                f(3.7113554, -1.46891992),
+                f(0.6963554000000001, 5.0),
+            ],
+            vec![],
+        )]);
+        let (segs, na) = oriented_segments(&a, &b, FillRule::EvenOdd).unwrap();
+        let t = super::traced(
+            &segs,
+            na,
+            |wa, wb| wa % 2 != 0 || wb % 2 != 0,
+            false,
+            true,
+            &[],
+        )
+        .unwrap();
+        assert_eq!(t.polygons.len(), 1);
+        let (polygon, suspect) = &t.polygons[0];
+        assert!(!suspect, "flagged for a second union");
+        assert_eq!((&polygon.exterior, polygon.holes.len()), (&square, 0));
+        let union = boolean_with(&a, &b, BooleanOp::Union, &BooleanOptions::default()).unwrap();
+        assert_eq!(union, MultiPolygon(vec![polygon.clone()]));
+        // The apex on the side's line at nine x, moved up to four floats either way.
+        for i in 1..10 {
+            let s = f64::from(i) / 10.0;
+            let on_side = f(1.433 * s, 0.09160000000000001 * s);
+            let mut apex = on_side;
+            for _ in 0..4 {
+                apex.y = apex.y.next_down();
+            }
+            for _ in 0..9 {
+                let b = MultiPolygon(vec![Polygon::new(dart(apex), vec![])]);
+                let union =
+                    boolean_with(&a, &b, BooleanOp::Union, &BooleanOptions::default()).unwrap();
+                let problems = crate::overlay::validity_problems(&union).unwrap();
+                assert!(problems.is_empty(), "{apex:?}: {problems:?}");
+                apex.y = apex.y.next_up();
+            }
+        }
     }
 
     #[test]
