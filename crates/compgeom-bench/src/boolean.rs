@@ -555,6 +555,23 @@
 //! pairs 2.6 M, the decisions 1.3 M, the nudge 1.1 M), the re-unions about 2.5 M
 //! (misc-2#0, isochrone#4 and misc-4#1 unite most of their result again), the tracing
 //! the rest. Table: see the closing note of the session.
+//!
+//! Session 40. A ring of a result that rounds to fewer than three points (a sliver
+//! thinner than the rounding) is dropped without flagging its polygon, and no longer
+//! keeps the check from nudging elsewhere in that result; only three vertices rounded
+//! onto one point still do. Before, a dropped sliver hole sent its whole polygon to a
+//! second union (misc-2#0's xor: 192 points, 0.53 M instructions a call), and any
+//! dropped sliver left that result's mendable pairs to a union. Re-unions on the JTS
+//! pairs: 1, 1, 1 and 14 results (was 1, 3, 3 and 19), 18 unions for the xor (was 24).
+//! Instructions (inclusive `boolean`, 5 calls): JTS×52 xor 93.6 M → 90.3 M (−3.5%),
+//! difference −0.4%, union −0.2%, intersection and dissolve ±0.05%, water the same.
+//! Per call: JTS xor 18.13 M (/ i_overlay 1.56, / geo 1.48; was 1.62 / 1.54). Wall,
+//! three interleaved runs of the maps rows: JTS xor / i_overlay 1.57–1.60 → 1.52–1.57.
+//! What the xor's re-unions still cost: 1.6 M a call, isochrone#4 0.37 M of it (two
+//! shells failing against each other: a union of 129 points), misc-4#1 0.29 M and
+//! pg-4538#0 0.27 M (two rounds each). Tried and dropped: `orient_along` returning
+//! collinear at once when the third point is on the segment by construction (xor
+//! −0.26%, but the dissolve +1.3% from the near-pair search being compiled differently).
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
