@@ -43,7 +43,7 @@
 //! sorts at vertices of degree > 2, plus, with several components, the strips (O(V + E)
 //! and a few tests per component on map-like data) or the hole sweep.
 use super::boolean::{oriented_segments, FillRule};
-use super::rounding::{failing_rings, ExactPoints, PointIds, RoundedRings, REPAIRS};
+use super::rounding::{down, failing_rings, up, ExactPoints, PointIds, RoundedRings, REPAIRS};
 use crate::dcel::{compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounded};
 use crate::kernel::arith::ordered_key as okey;
 use crate::kernel::steps::Steps;
@@ -749,6 +749,9 @@ fn traced(
     // The regions where rounding made three vertices of a ring one point (the check does
     // not follow these: they are always united again).
     let mut three_on_one: Vec<usize> = Vec::new();
+    // The holes rounded away (below), by region, each with a box holding the exact hole:
+    // a polygon inside one would now overlap that region.
+    let mut holes_gone: Vec<(usize, [f64; 4])> = Vec::new();
     // Per ring checked, its region (then the context's polygons).
     let mut owner: Vec<usize> = Vec::with_capacity(rings_hint);
     // The context's polygons that may touch or come near this result (the others
@@ -910,8 +913,15 @@ fn traced(
                 // The ring rounded to a point or a segment: it was thinner than the
                 // rounding (a sliver between near-coincident edges) and is dropped, as
                 // a union again would drop it. What is left is the exact result without
-                // that ring, valid, and the check below decides its rounded rings as
-                // any others.
+                // that ring, valid (but for polygons inside a dropped hole, below), and
+                // the check decides its rounded rings as any others.
+                if !ccw {
+                    // (Its exact vertices are each within a float of one of these
+                    // points, and the hole is in their hull.)
+                    let b = box_of(&pts);
+                    let around = [down(b[0]), up(b[1]), down(b[2]), up(b[3])];
+                    holes_gone.push((k, around));
+                }
                 continue;
             }
             // (A popped last point equals the first.)
@@ -954,6 +964,34 @@ fn traced(
     let mut context_suspect = vec![false; context.len()];
     for &k in &three_on_one {
         suspect[k] = true;
+    }
+    // A polygon inside a hole that rounded away (an island in a sliver of a lake) would
+    // overlap the hole's polygon: both are united again, which merges them. Rounding to
+    // nearest is monotone, so the island's rounded points are in the hole's box too.
+    if !holes_gone.is_empty() {
+        let within = |b: &[f64; 4], c: [f64; 4]| {
+            b[0] <= c[0] && c[1] <= b[1] && b[2] <= c[2] && c[3] <= b[3]
+        };
+        let shells: Vec<Option<[f64; 4]>> = regions
+            .iter()
+            .map(|(shell, _)| {
+                shell.map(|s| box_of(&rounded.points[rounded.starts[s]..rounded.starts[s + 1]]))
+            })
+            .collect();
+        let near_shells: Vec<[f64; 4]> =
+            near.iter().map(|&c| box_of(&context[c].exterior)).collect();
+        for &(k, b) in &holes_gone {
+            for (j, shell) in shells.iter().enumerate() {
+                if j != k && shell.is_some_and(|s| within(&b, s)) {
+                    (suspect[j], suspect[k]) = (true, true);
+                }
+            }
+            for (&c, &shell) in near.iter().zip(&near_shells) {
+                if within(&b, shell) {
+                    (context_suspect[c], suspect[k]) = (true, true);
+                }
+            }
+        }
     }
     // Points are moved off their nearest floats only where no three vertices of a ring
     // rounded onto one point: which two of them the tracing merged depends on where it
@@ -1003,6 +1041,20 @@ fn traced(
         context_suspect,
         nudged: rounded.nudged,
     })
+}
+
+/// `[min x, max x, min y, max y]` of `points`.
+fn box_of(points: &[Point2]) -> [f64; 4] {
+    let mut b = [
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for p in points {
+        b = [b[0].min(p.x), b[1].max(p.x), b[2].min(p.y), b[3].max(p.y)];
+    }
+    b
 }
 
 /// The polygons in a canonical order, independent of how the arrangement numbered its

@@ -53,7 +53,9 @@
 //! thinner than the rounding (a sliver between near-coincident edges): the tracing
 //! drops it, as a second union would, and the check decides the rings left (the exact
 //! result without a ring of it is still valid: a polygon without one of its holes, or
-//! the other polygons without one).
+//! the other polygons without one). Except where other polygons lie inside a dropped
+//! hole (an island in a sliver of a lake, which rounding need not flatten): they would
+//! overlap the hole's polygon, so they and that polygon are united again (merged).
 //!
 //! Otherwise [`super::trace::traced_boolean`] unites the polygons of the failing rings
 //! again with the [`super::FillRule::Positive`] rule (the arrangement of their rounded
@@ -214,7 +216,7 @@ fn gap(v: f64) -> f64 {
 }
 
 /// The next `f64` above `x` (`x` itself for +∞ and NaN).
-fn up(x: f64) -> f64 {
+pub(super) fn up(x: f64) -> f64 {
     if x.is_nan() || x == f64::INFINITY {
         x
     } else if x == 0.0 {
@@ -227,7 +229,7 @@ fn up(x: f64) -> f64 {
 }
 
 /// The next `f64` below `x`.
-fn down(x: f64) -> f64 {
+pub(super) fn down(x: f64) -> f64 {
     -up(-x)
 }
 
