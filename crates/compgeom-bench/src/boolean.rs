@@ -569,9 +569,24 @@
 //! three interleaved runs of the maps rows: JTS xor / i_overlay 1.57–1.60 → 1.52–1.57.
 //! What the xor's re-unions still cost: 1.6 M a call, isochrone#4 0.37 M of it (two
 //! shells failing against each other: a union of 129 points), misc-4#1 0.29 M and
-//! pg-4538#0 0.27 M (two rounds each). Tried and dropped: `orient_along` returning
-//! collinear at once when the third point is on the segment by construction (xor
-//! −0.26%, but the dissolve +1.3% from the near-pair search being compiled differently).
+//! pg-4538#0 0.27 M (two rounds each). Of a small re-union's cost, the context (the
+//! kept polygons near it: their points in the check, and the second round when one of
+//! them fails) is more than half: pg-4538#0 0.27 M → 0.10 M with none (not a valid
+//! change, a measure). A review then found a bug older than this change: an island
+//! inside a hole that rounds away overlapped the hole's polygon; both are now united
+//! again (no change in the counts above: no JTS result has one). Tried and dropped:
+//! `orient_along` returning collinear at once when the third point is on the segment
+//! by construction (xor −0.26%, but the dissolve +1.3% from the near-pair search being
+//! compiled differently); a second nudge, of a point of the one pair a first nudge
+//! broke (xor +3.4%, the other rows +0.7% to +1.2%: collecting the pairs around every
+//! failing pair's points costs more than the unions it saves). Where the xor's check
+//! goes (5.0 M a call over 58 checks of about 87 points each): the near-pair search
+//! 2.5 M, spread over per-point box work with no single hot spot, the nudge 1.6 M
+//! (its O(points) set-up in every result with a failing pair, and the exact tests of
+//! its candidates), the decisions the rest. Full table at the end of the session
+//! (/ i_overlay, / geo): stars 0.55–0.85 / 0.55–0.86, squares 0.77 / 0.74, water
+//! 0.86–0.98 / 0.80–0.90, JTS×52 intersection 1.11 / 1.10, union 1.11 / 1.10,
+//! difference 1.13 / 1.07, xor 1.54 / 1.46, dissolve 1.28 / 1.18.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
