@@ -5,9 +5,9 @@ mod common;
 
 use compgeom::intersect::{
     any_intersection, brute_force_intersections, count_intersections, count_intersections_with,
-    find_intersections, is_simple, pairwise_intersections, red_blue_intersections,
-    sweep_intersections, sweep_intersections_with_stats, sweep_status_at, verify_intersections,
-    IntersectAlgorithm, IntersectionCount, Intersections, Overlap,
+    find_intersections, find_intersections_with, is_simple, pairwise_intersections,
+    red_blue_intersections, sweep_intersections, sweep_intersections_with_stats, sweep_status_at,
+    verify_intersections, IntersectAlgorithm, IntersectionCount, Intersections, Overlap,
 };
 use compgeom::kernel::{orient2d, segment_intersection, Orientation, SegmentIntersection};
 use compgeom::{Error, Point2, Polygon, Segment2};
@@ -109,6 +109,51 @@ fn a_proper_crossing_is_rounded_to_nearest() {
     assert_eq!(found.points[0].point, p(0.5, 0.5));
     let found = checked(&[s(0.0, 0.0, 2.0, 2.0), s(0.0, 2.0, 3.0, 0.0)]);
     assert_eq!(found.points[0].point, p(1.2, 1.2));
+}
+
+/// Crossings on a grid of the smallest subnormals, many at a coordinate between
+/// −½ and 0 of a float gap: every method reports `-0.0` there, bit for bit the nearest
+/// float as [`Crossing::approx`] rounds it (the pair scans key points with `-0.0` as
+/// `0.0` to group them, and once reported `0.0`).
+#[test]
+fn a_crossing_rounded_to_zero_keeps_its_sign() {
+    use compgeom::kernel::Crossing;
+    let tiny = f64::from_bits(1);
+    let mut seed = 99u64;
+    let mut grid = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        ((seed >> 11) % 41) as f64 * tiny - 20.0 * tiny
+    };
+    let mut negative_zeros = 0;
+    for _ in 0..8000 {
+        let mut seg = || Segment2::new(p(grid(), grid()), p(grid(), grid()));
+        let (a, b) = (seg(), seg());
+        let Some(c) = Crossing::new(a, b) else {
+            continue;
+        };
+        // (Only where the segments cross properly: in the interior of both.)
+        if !matches!(segment_intersection(a, b), SegmentIntersection::Crossing(_)) {
+            continue;
+        }
+        let q = c.approx();
+        negative_zeros += usize::from(q.x.is_sign_negative() && q.x == 0.0);
+        negative_zeros += usize::from(q.y.is_sign_negative() && q.y == 0.0);
+        let bits = |r: Point2| (r.x.to_bits(), r.y.to_bits());
+        for how in [
+            IntersectAlgorithm::Default,
+            IntersectAlgorithm::Pairwise,
+            IntersectAlgorithm::Sweep,
+        ] {
+            let found = find_intersections_with(&[a, b], how).unwrap();
+            let crossing = found.points.iter().find(|x| x.interior() == [0, 1]);
+            if let Some(x) = crossing {
+                assert_eq!(bits(x.point), bits(q), "{how:?} {a:?} {b:?}");
+            }
+        }
+    }
+    assert!(negative_zeros > 40, "{negative_zeros}");
 }
 
 #[test]

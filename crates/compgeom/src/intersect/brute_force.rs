@@ -668,13 +668,30 @@ fn exact_groups(segments: &[Segment2], run: &mut [Record]) -> Vec<usize> {
     starts
 }
 
+/// The rounded point of crossing record `r`, with the sign of a zero coordinate that
+/// rounding the exact one gives (`-0.0` for a tiny negative one, as
+/// [`Crossing::approx`] and the sweep give): the record's keys hold `-0.0` as `0.0`
+/// so that the two group together.
+fn crossing_point(segments: &[Segment2], r: &Record) -> Point2 {
+    let p = r.point();
+    if p.x != 0.0 && p.y != 0.0 {
+        return p;
+    }
+    let c = Crossing {
+        s: segments[r.i()],
+        t: segments[r.j()],
+    };
+    c.approx()
+}
+
 /// One intersection point from the records of the pairs that meet there.
 #[inline]
 fn point_of(segments: &[Segment2], segs: &[Oriented], group: &[Record]) -> IntersectionPoint {
     let first = group[0];
     if group.len() == 1 && first.is_crossing() {
         // The common case, without allocating: two segments crossing properly.
-        return IntersectionPoint::crossing(first.point(), first.i(), first.j());
+        let p = crossing_point(segments, &first);
+        return IntersectionPoint::crossing(p, first.i(), first.j());
     }
     shared_point_of(segments, segs, group)
 }
@@ -707,7 +724,9 @@ fn shared_point_of(
     let lower = pick(&|r| r.1);
     let interior = pick(&|r| r == (false, false));
     let second = at.is_none().then(|| defining_second(&all, |k| segments[k]));
-    IntersectionPoint::new(first.point(), &all, [&upper, &lower, &interior], second)
+    // (A crossing of three or more segments: all of them round to the same point.)
+    let point = at.unwrap_or_else(|| crossing_point(segments, &first));
+    IntersectionPoint::new(point, &all, [&upper, &lower, &interior], second)
 }
 
 fn find(parent: &mut [usize], mut i: usize) -> usize {
