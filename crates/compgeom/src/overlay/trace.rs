@@ -323,11 +323,7 @@ fn near_context(segs: &[Segment2], context: &[Polygon]) -> Vec<usize> {
     (0..context.len())
         .filter(|&c| {
             // (Holes are inside the exterior: its box is the polygon's.)
-            let ring = &context[c].exterior;
-            let xs = ring.iter().map(|p| p.x);
-            let ys = ring.iter().map(|p| p.y);
-            let (lo_x, hi_x) = xs.fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
-            let (lo_y, hi_y) = ys.fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
+            let [lo_x, hi_x, lo_y, hi_y] = box_of(&context[c].exterior);
             lo_x <= x1 && x0 <= hi_x && lo_y <= y1 && y0 <= hi_y
         })
         .collect()
