@@ -370,6 +370,15 @@ fn orient_along_with<T: Arith>(
 /// [`orient_along_with`] through the filters, then exactly (a crossing with one of its
 /// segments on `l`'s line is on it: decided by orientations of input points first).
 fn orient_along(a: &ExactPoint, b: &ExactPoint, c: &ExactPoint, l: Segment2) -> Ordering {
+    // `c` on `l` by construction too (an end of it, or a crossing of it): collinear,
+    // which the filters cannot tell (a zero is only certain exactly).
+    let on_l = match c {
+        ExactPoint::Input(q) => *q == l.a || *q == l.b,
+        ExactPoint::Crossing(x) => x.s == l || x.t == l,
+    };
+    if on_l {
+        return Ordering::Equal;
+    }
     decide(
         || orient_along_with::<Bounded>(a, b, c, l),
         || orient_along_with::<DoubleDouble>(a, b, c, l),
@@ -827,7 +836,7 @@ mod tests {
             Ordering::Less => Orientation::Clockwise,
             Ordering::Equal => Orientation::Collinear,
         };
-        let (mut along, mut near, mut zero) = (0usize, 0usize, 0usize);
+        let (mut along, mut near, mut zero, mut all_on) = (0usize, 0usize, 0usize, 0usize);
         for k in 0..240 {
             let scale = [1.0, 1e-300, 1e300, 3.0e-7, 1e30, 0.1][k % 6];
             let grid = k % 3 == 0;
@@ -896,10 +905,25 @@ mod tests {
                     }
                 }
             }
+            // Three points on l by construction (its ends, its crossings): collinear
+            // at once, as the exact evaluation says, in every order.
+            for (i, a) in on_l.iter().enumerate() {
+                for (j, b) in on_l.iter().enumerate().skip(i + 1) {
+                    for c in &on_l[j + 1..] {
+                        for (p, q, r) in [(a, b, c), (b, c, a), (c, a, b), (b, a, c)] {
+                            let exact = orient_with::<Dyadic>(p, q, r);
+                            assert_eq!(exact, Some(Ordering::Equal), "{p:?} {q:?} {r:?}");
+                            assert_eq!(orient_exact(p, q, r), Orientation::Collinear);
+                            all_on += 1;
+                        }
+                    }
+                }
+            }
         }
         assert!(
-            along > 50_000 && near > 20_000 && zero > 3_000,
-            "{along} triples along a segment, {near} left open by the f64 filter, {zero} on it"
+            along > 50_000 && near > 20_000 && zero > 3_000 && all_on > 10_000,
+            "{along} triples along a segment, {near} left open by the f64 filter, {zero} on \
+             it, {all_on} with all three on it"
         );
     }
 
