@@ -574,10 +574,16 @@
 //! them fails) is more than half: pg-4538#0 0.27 M → 0.10 M with none (not a valid
 //! change, a measure). A review then found a bug older than this change: an island
 //! inside a hole that rounds away overlapped the hole's polygon; both are now united
-//! again (no change in the counts above: no JTS result has one). Tried and dropped:
-//! `orient_along` returning collinear at once when the third point is on the segment
-//! by construction (xor −0.26%, but the dissolve +1.3% from the near-pair search being
-//! compiled differently); a second nudge, of a point of the one pair a first nudge
+//! again (no change in the counts above: no JTS result has one). The dissolve's +1.3%
+//! after unrelated edits was the rounding grid's `visit` and `may_meet` becoming calls
+//! (5 000 a call): both are now always inlined. With that, `orient_along` answering
+//! collinear at once for a third point on the segment by construction: intersection
+//! −0.3%, xor −0.25%, dissolve ±0. Session start to end: JTS×52 intersection 57.30 M →
+//! 57.13 M (−0.3%), union ±0, difference −0.5%, xor 93.56 M → 90.20 M (−3.6%),
+//! dissolve +0.2%, water +0.1%. Per call: intersection 11.45 M (/ i_overlay 1.15, /
+//! geo 1.13), union 13.20 M (1.21 / 1.17), difference 12.10 M (1.17 / 1.13), xor
+//! 18.11 M (1.56 / 1.48), dissolve 5.31 M (1.32 / 1.16). Tried and dropped: a second
+//! nudge, of a point of the one pair a first nudge
 //! broke (xor +3.4%, the other rows +0.7% to +1.2%: collecting the pairs around every
 //! failing pair's points costs more than the unions it saves). Where the xor's check
 //! goes (5.0 M a call over 58 checks of about 87 points each): the near-pair search
