@@ -569,6 +569,7 @@ fn near_pairs_on_grid(
 /// Calls `f(k)` for each box `boxes[k]` that overlaps `b`, in order. The tests of 64
 /// boxes at a time run without branches, into a mask (most fail, but which ones is a
 /// coin toss for the branch predictor, and one by one they were most of the search).
+#[inline(always)]
 fn for_each_overlapping(boxes: &[Box2], b: &Box2, mut f: impl FnMut(usize)) {
     for (c, chunk) in boxes.chunks(64).enumerate() {
         let mut hits = 0u64;
@@ -605,6 +606,7 @@ impl<'a> Near<'a> {
     }
 
     /// Calls `f(k)` for each box `k` that overlaps `b`, in increasing order.
+    #[inline(always)]
     fn for_each_overlapping(&self, b: &Box2, f: impl FnMut(usize)) {
         match self {
             Near::Few(boxes) => for_each_overlapping(boxes, b, f),

@@ -62,6 +62,7 @@ impl<'a> Strips<'a> {
     }
 
     /// Calls `f(k)` for each box `k` that overlaps `b`, in increasing order.
+    #[inline(always)]
     pub(super) fn for_each_overlapping(&self, b: &Box2, mut f: impl FnMut(usize)) {
         let (x0, x1) = (self.xs.index(b.x0), self.xs.index(b.x1));
         let (y0, y1) = (self.ys.index(b.y0), self.ys.index(b.y1));
