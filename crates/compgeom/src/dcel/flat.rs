@@ -29,10 +29,10 @@
 //! per edge; they differ only in numbering (tested against each other and against a
 //! brute-force oracle).
 use super::build::Source;
-use super::holes::{compare_xy_filtered, Rounded};
+use super::holes::{compare_xy_filtered_by, Rounded};
 use crate::intersect::find_intersections;
 use crate::kernel::arith::ordered_key as okey;
-use crate::kernel::{orient2d, ExactPoint, Orientation, Point2, Segment2};
+use crate::kernel::{orient2d, Crossing, ExactPoint, Orientation, Point2, Segment2};
 use crate::{Error, Result};
 use std::cmp::Ordering;
 use std::collections::HashMap;
@@ -50,41 +50,99 @@ pub(crate) struct Flat {
     pub sources: Vec<Source>,
 }
 
-/// The vertices of a [`Flat`]: exact points, or, when every vertex is an input point (the
-/// axis-parallel path), plain points (16 bytes instead of 72 each: the largest array of
-/// the arrangement, written once and read again by every later pass).
+/// The vertices of a [`Flat`], each with its nearest `f64` point: exact points stored
+/// compactly (a crossing's two segments only where the vertex is one), or, when every
+/// vertex is an input point (the axis-parallel path), plain points.
 ///
-/// Exact points come with their nearest `f64` points when their maker had them (the
-/// noding rounds every crossing it finds, with its fast fused rounding): `approx` is then
-/// one point per vertex, else empty and [`ExactPoint::approx`] is asked (about 1.8 k
-/// instructions per crossing) where a point is looked at.
+/// The vertices are the largest array of the arrangement, written once and read again by
+/// every later pass; most are input points, so a crossing's 64 bytes are kept apart, for
+/// the crossings only, and an input vertex takes 20 bytes instead of 88 (its exact point
+/// and its nearest point). On large input that is most of the memory an overlay touches
+/// at its peak.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Vertices {
+    /// Vertex `i` is the input point `approx[i]` where `crossing[i]` is
+    /// [`NOT_A_CROSSING`], else the crossing `crossings[crossing[i]]`, whose correctly
+    /// rounded point is `approx[i]` (the exact tests filter on it).
     Exact {
-        points: Vec<ExactPoint>,
         approx: Vec<Point2>,
+        crossing: Vec<u32>,
+        crossings: Vec<Crossing>,
     },
     Input(Vec<Point2>),
 }
 
+/// [`Vertices::Exact`]'s mark of an input vertex.
+const NOT_A_CROSSING: u32 = u32::MAX;
+
 impl Default for Vertices {
     fn default() -> Self {
-        Vec::<ExactPoint>::new().into()
+        Vertices::Input(Vec::new())
     }
 }
 
 impl From<Vec<ExactPoint>> for Vertices {
+    /// (Each crossing rounded here: about 1.8 k instructions each.)
     fn from(points: Vec<ExactPoint>) -> Self {
-        Vertices::Exact {
-            points,
-            approx: Vec::new(),
+        let mut v = ExactVertices::with_capacity(points.len(), 0);
+        for p in points {
+            v.push(p, p.approx());
         }
+        v.into()
     }
 }
 
 impl From<Vec<Point2>> for Vertices {
     fn from(v: Vec<Point2>) -> Self {
         Vertices::Input(v)
+    }
+}
+
+/// [`Vertices::Exact`] built vertex by vertex.
+pub(crate) struct ExactVertices {
+    approx: Vec<Point2>,
+    crossing: Vec<u32>,
+    crossings: Vec<Crossing>,
+}
+
+impl ExactVertices {
+    /// Room for `n` vertices, `crossings` of them crossings.
+    pub(crate) fn with_capacity(n: usize, crossings: usize) -> ExactVertices {
+        ExactVertices {
+            approx: Vec::with_capacity(n),
+            crossing: Vec::with_capacity(n),
+            crossings: Vec::with_capacity(crossings),
+        }
+    }
+
+    /// The next vertex, `p`, whose nearest `f64` point is `approx` (correctly rounded:
+    /// the exact tests filter on it).
+    #[inline]
+    pub(crate) fn push(&mut self, p: ExactPoint, approx: Point2) {
+        debug_assert!(p.approx() == approx);
+        self.approx.push(approx);
+        match p {
+            ExactPoint::Input(_) => self.crossing.push(NOT_A_CROSSING),
+            ExactPoint::Crossing(c) => {
+                self.crossing.push(self.crossings.len() as u32);
+                self.crossings.push(c);
+            }
+        }
+    }
+
+    /// The number of vertices so far.
+    pub(crate) fn len(&self) -> usize {
+        self.approx.len()
+    }
+}
+
+impl From<ExactVertices> for Vertices {
+    fn from(v: ExactVertices) -> Self {
+        Vertices::Exact {
+            approx: v.approx,
+            crossing: v.crossing,
+            crossings: v.crossings,
+        }
     }
 }
 
@@ -105,15 +163,18 @@ impl Vertices {
     /// correctly rounded: the exact tests filter on it).
     pub(crate) fn rounded_exact(points: Vec<ExactPoint>, approx: Vec<Point2>) -> Self {
         debug_assert_eq!(points.len(), approx.len());
-        debug_assert!(points.iter().zip(&approx).all(|(p, a)| p.approx() == *a));
-        Vertices::Exact { points, approx }
+        let mut v = ExactVertices::with_capacity(points.len(), 0);
+        for (p, a) in points.into_iter().zip(approx) {
+            v.push(p, a);
+        }
+        v.into()
     }
 
     /// The number of vertices.
     #[inline]
     pub(crate) fn len(&self) -> usize {
         match self {
-            Vertices::Exact { points, .. } => points.len(),
+            Vertices::Exact { approx, .. } => approx.len(),
             Vertices::Input(v) => v.len(),
         }
     }
@@ -122,10 +183,9 @@ impl Vertices {
     #[inline]
     pub(crate) fn input(&self, i: usize) -> Option<Point2> {
         match self {
-            Vertices::Exact { points, .. } => match points[i] {
-                ExactPoint::Input(p) => Some(p),
-                ExactPoint::Crossing(_) => None,
-            },
+            Vertices::Exact {
+                approx, crossing, ..
+            } => (crossing[i] == NOT_A_CROSSING).then(|| approx[i]),
             Vertices::Input(v) => Some(v[i]),
         }
     }
@@ -134,30 +194,39 @@ impl Vertices {
     #[inline]
     pub(crate) fn approx(&self, i: usize) -> Point2 {
         match self {
-            Vertices::Exact { points, approx } => match approx.get(i) {
-                Some(&a) => a,
-                None => points[i].approx(),
-            },
+            Vertices::Exact { approx, .. } => approx[i],
             Vertices::Input(v) => v[i],
         }
     }
 
     /// The rounded point of vertex `i` with its exactness flags.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn rounded(&self, i: usize) -> Rounded {
         match self {
-            Vertices::Exact { points, approx } => {
-                let p = &points[i];
-                Rounded::of(p, approx.get(i).copied().unwrap_or_else(|| p.approx()))
-            }
-            Vertices::Input(v) => Rounded::of(&ExactPoint::Input(v[i]), v[i]),
+            Vertices::Exact {
+                approx,
+                crossing,
+                crossings,
+            } => match crossing[i] {
+                NOT_A_CROSSING => Rounded::input(approx[i]),
+                k => Rounded::crossing(&crossings[k as usize], approx[i]),
+            },
+            Vertices::Input(v) => Rounded::input(v[i]),
         }
     }
 
     /// Vertex `i` as an exact point.
+    #[inline(always)]
     pub(crate) fn exact_point(&self, i: usize) -> ExactPoint {
         match self {
-            Vertices::Exact { points, .. } => points[i],
+            Vertices::Exact {
+                approx,
+                crossing,
+                crossings,
+            } => match crossing[i] {
+                NOT_A_CROSSING => ExactPoint::Input(approx[i]),
+                k => ExactPoint::Crossing(crossings[k as usize]),
+            },
             Vertices::Input(v) => ExactPoint::Input(v[i]),
         }
     }
@@ -165,39 +234,26 @@ impl Vertices {
     /// Whether vertex `i`'s rounded point `r` (from [`Vertices::rounded`]) differs from
     /// its exact point, exactly: a crossing is `r` iff `r` lies on both its lines.
     pub(crate) fn moved(&self, i: usize, r: &Rounded) -> bool {
-        if r.surely_exact() {
-            return false;
-        }
-        match self {
-            Vertices::Exact { points, .. } => rounded_away(&points[i], r.point()),
-            Vertices::Input(_) => false,
-        }
+        !r.surely_exact() && rounded_away(&self.exact_point(i), r.point())
     }
 
     /// [`compare_xy_filtered`] of vertices `a` and `b` with their rounded points (the
-    /// exact points are read, by reference, only where the rounded ones do not decide).
+    /// exact points are made from the compact ones, and read only where the rounded ones
+    /// do not decide).
     #[inline]
     pub(crate) fn compare_xy(&self, a: usize, ra: &Rounded, b: usize, rb: &Rounded) -> Ordering {
-        match self {
-            Vertices::Exact { points: v, .. } => compare_xy_filtered(&v[a], ra, &v[b], rb),
-            Vertices::Input(v) => {
-                compare_xy_filtered(&ExactPoint::Input(v[a]), ra, &ExactPoint::Input(v[b]), rb)
-            }
-        }
+        compare_xy_filtered_by(ra, rb, || (self.exact_point(a), self.exact_point(b)))
     }
 
-    /// All vertices as exact points, borrowed when they are stored so.
-    pub(crate) fn exact(&self) -> std::borrow::Cow<'_, [ExactPoint]> {
-        match self {
-            Vertices::Exact { points, .. } => points.as_slice().into(),
-            Vertices::Input(v) => v.iter().map(|&p| ExactPoint::Input(p)).collect(),
-        }
+    /// All vertices as exact points.
+    pub(crate) fn exact(&self) -> Vec<ExactPoint> {
+        (0..self.len()).map(|i| self.exact_point(i)).collect()
     }
 
     /// All vertices as exact points.
     pub(crate) fn into_exact(self) -> Vec<ExactPoint> {
         match self {
-            Vertices::Exact { points, .. } => points,
+            Vertices::Exact { .. } => self.exact(),
             Vertices::Input(v) => v.into_iter().map(ExactPoint::Input).collect(),
         }
     }

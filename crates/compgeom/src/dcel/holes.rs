@@ -19,7 +19,7 @@
 //! at most s edges (a vector: s is small for polygon data — the number of edges a
 //! horizontal line meets).
 use super::Carrier;
-use crate::kernel::{orient_exact, ExactPoint, Orientation, Point2};
+use crate::kernel::{orient_exact, Crossing, ExactPoint, Orientation, Point2};
 use std::cmp::Ordering;
 
 /// For every vertex `v` with `query[v]`, the half-edge whose face contains the points
@@ -178,16 +178,28 @@ impl Rounded {
     /// The rounded point of `e` (`approx` is its nearest `f64` point).
     pub(crate) fn of(e: &ExactPoint, approx: Point2) -> Rounded {
         match e {
-            ExactPoint::Input(_) => Rounded {
-                p: approx,
-                x_exact: true,
-                y_exact: true,
-            },
-            ExactPoint::Crossing(c) => Rounded {
-                p: approx,
-                x_exact: c.s.a.x == c.s.b.x || c.t.a.x == c.t.b.x,
-                y_exact: c.s.a.y == c.s.b.y || c.t.a.y == c.t.b.y,
-            },
+            ExactPoint::Input(p) => Rounded::input(*p),
+            ExactPoint::Crossing(c) => Rounded::crossing(c, approx),
+        }
+    }
+
+    /// An input point (exact).
+    #[inline]
+    pub(crate) fn input(p: Point2) -> Rounded {
+        Rounded {
+            p,
+            x_exact: true,
+            y_exact: true,
+        }
+    }
+
+    /// The crossing `c` rounded to `approx`.
+    #[inline]
+    pub(crate) fn crossing(c: &Crossing, approx: Point2) -> Rounded {
+        Rounded {
+            p: approx,
+            x_exact: c.s.a.x == c.s.b.x || c.t.a.x == c.t.b.x,
+            y_exact: c.s.a.y == c.s.b.y || c.t.a.y == c.t.b.y,
         }
     }
 }
@@ -227,6 +239,26 @@ pub(crate) fn compare_y_filtered(
     rb: &Rounded,
 ) -> Ordering {
     compare_filtered(ra.p.y, rb.p.y, ra.y_exact && rb.y_exact, || a.compare_y(b))
+}
+
+/// [`compare_xy_filtered`] of two points with rounded points `ra` and `rb`, the exact
+/// points made by `exact` only where the rounded ones do not decide.
+#[inline]
+pub(crate) fn compare_xy_filtered_by(
+    ra: &Rounded,
+    rb: &Rounded,
+    exact: impl Fn() -> (ExactPoint, ExactPoint),
+) -> Ordering {
+    compare_filtered(ra.p.x, rb.p.x, ra.x_exact && rb.x_exact, || {
+        let (a, b) = exact();
+        a.compare_x(&b)
+    })
+    .then_with(|| {
+        compare_filtered(ra.p.y, rb.p.y, ra.y_exact && rb.y_exact, || {
+            let (a, b) = exact();
+            a.compare_y(&b)
+        })
+    })
 }
 
 /// Exact lexicographic (x, then y) comparison, filtered as [`compare_x_filtered`].

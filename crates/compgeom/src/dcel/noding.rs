@@ -53,7 +53,7 @@
 //! (expected, for the hash of the ends; near-linear union–find); the work over all
 //! segments is a few plain passes.
 use super::build::Source;
-use super::flat::{Flat, Pieces, Vertices};
+use super::flat::{ExactVertices, Flat, Pieces, Vertices};
 use super::holes::{compare_xy_filtered, Rounded};
 use crate::delaunay::EdgeMap;
 use crate::intersect::{prefer_pairwise, round_crossing, PARALLEL_SCAN_FROM};
@@ -1315,16 +1315,15 @@ fn assemble<const EXACT: bool>(
     }
     // The pieces, segment by segment; a class gets its vertex at its first use.
     let mut vertex_of = vec![NONE; total];
-    let mut vertices: Vec<ExactPoint> = Vec::with_capacity(m + k_count);
-    // Their nearest f64 points, handed to the tracer (which would round them again).
-    let mut approx: Vec<Point2> = Vec::with_capacity(m + k_count);
+    // (With their nearest f64 points, handed to the tracer, which would round them
+    // again.)
+    let mut vertices = ExactVertices::with_capacity(m + k_count, k_count);
     let mut vertex = |item: u32, parent: &mut [u32]| {
         let r = find(parent, item) as usize;
         if vertex_of[r] == NONE {
             vertex_of[r] = vertices.len() as u32;
             let (p, a) = point_of(r);
-            vertices.push(p);
-            approx.push(a);
+            vertices.push(p, a);
         }
         vertex_of[r]
     };
@@ -1424,7 +1423,7 @@ fn assemble<const EXACT: bool>(
             ));
         }
     }
-    (pieces, Vertices::rounded_exact(vertices, approx))
+    (pieces, vertices.into())
 }
 
 #[cfg(test)]

@@ -1274,9 +1274,8 @@ fn faces_left_by(
     queries: &[u32],
     direct_up_to: usize,
 ) -> Option<Vec<u32>> {
-    let points = flat.vertices.exact();
-    let points: &[ExactPoint] = &points;
-    // (Rounded points are kept in the arrangement: no cache over all vertices.)
+    // (Exact and rounded points are kept in the arrangement: no copy of all vertices.)
+    let point = |v: u32| flat.vertices.exact_point(v as usize);
     let rounded = |v: u32| flat.vertices.rounded(v as usize);
     let ne = flat.edge_count();
     let (mut ranges, mut xr) = (Vec::with_capacity(ne), Vec::with_capacity(ne));
@@ -1285,14 +1284,7 @@ fn faces_left_by(
         ranges.push((s.a.y.min(s.b.y), s.a.y.max(s.b.y)));
         xr.push((s.a.x.min(s.b.x), s.a.x.max(s.b.x)));
     }
-    let cmp_y = |a: u32, b: u32| {
-        compare_y_filtered(
-            &points[a as usize],
-            &rounded(a),
-            &points[b as usize],
-            &rounded(b),
-        )
-    };
+    let cmp_y = |a: u32, b: u32| compare_y_filtered(&point(a), &rounded(a), &point(b), &rounded(b));
     // The side of vertex v of edge i (non-horizontal); an end of the edge is on it.
     let side_of = |v: u32, i: usize| {
         let [a, b] = flat.edges[i];
@@ -1305,7 +1297,7 @@ fn faces_left_by(
         } else {
             (s.b, s.a)
         };
-        side(&points[v as usize], rounded(v).point(), up, low)
+        side(&point(v), rounded(v).point(), up, low)
     };
     // (edge, lower end, upper end); true when c lies east of b along the line.
     let east_of = |(ci, cl, cu): (usize, u32, u32), (bi, bl, bu): (usize, u32, u32)| {

@@ -353,6 +353,7 @@ pub(super) struct ExactPoints<T, O> {
 /// telling on which side of the rounded point the exact one is (see [`nudge`]): the
 /// points are changed in `r`. Conservative: a ring listed only may have been broken.
 /// Empty when no point moved.
+#[inline(never)]
 pub(super) fn failing_rings(
     r: &mut RoundedRings,
     exact_side: impl Fn(u32, u32, u32) -> Orientation,
