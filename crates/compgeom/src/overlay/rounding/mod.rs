@@ -537,15 +537,20 @@ fn near_pairs_on_grid(
             }
         });
     };
-    let mut unmoved: Vec<Edge> = Vec::new();
+    // (Their ends only, sized once: on large results a list of whole edges, grown, was
+    // among the largest arrays at the peak.)
+    let mut unmoved: Vec<[u32; 2]> = Vec::with_capacity(r.points.len());
     r.for_each_edge(|e| {
         if !moves(&e) {
-            unmoved.push(e);
+            unmoved.push([e.i as u32, e.j as u32]);
         }
     });
     let points = r.points.len();
     let edge_pairs = |k: usize, stamp: &mut [usize], pairs: &mut Vec<Pair>| {
-        let e = unmoved[k];
+        let [i, j] = unmoved[k].map(|v| v as usize);
+        // (An unmoved edge is a ring edge: collapsed ones moved.)
+        let (a, b) = (r.ids[i].leave, r.ids[j].enter);
+        let e = Edge { i, j, a, b };
         let b = Box2::of(r.points[e.i], r.points[e.j]);
         grid.visit(&b, points + k, stamp, |item| {
             if item >= moved_edges.len() && boxes[item].overlaps(&b) {
