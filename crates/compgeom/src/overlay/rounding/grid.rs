@@ -119,37 +119,11 @@ impl Grid {
         self.wide = wide_items;
     }
 
-    /// Whether [`Grid::visit`] with a box inside `b` may call its function: a cell
-    /// `b`'s cells lists an item, or an item is wide, or `b` covers many cells (then
-    /// `true` without a look). (Inlined: called for every point and edge of a result;
-    /// as a call it cost the GEOS-837 dissolve about 1%.)
-    #[inline(always)]
-    pub(super) fn may_meet(&self, b: &Box2) -> bool {
-        if !b.overlaps(&self.extent) {
-            return false;
-        }
-        if !self.wide.is_empty() {
-            return true;
-        }
-        let (x0, x1, y0, y1) = self.range(b);
-        if (x1 - x0 + 1) * (y1 - y0 + 1) > 4 {
-            return true;
-        }
-        for y in y0..y1 + 1 {
-            let row = y * self.nx;
-            // (The cells of a row are consecutive: one of them lists an item when their
-            // first and last starts differ.)
-            if self.starts[row + x0] != self.starts[row + x1 + 1] {
-                return true;
-            }
-        }
-        false
-    }
-
     /// Calls `f` once for each item whose cells box `b` overlaps (and for each wide
     /// item), or for every item when `b` covers more cells than there are items;
-    /// `stamp[item] == query` marks an item already met by this query. (Inlined, as
-    /// [`Grid::may_meet`].)
+    /// `stamp[item] == query` marks an item already met by this query. (Inlined: called
+    /// for every point and edge of a result; as a call it cost the GEOS-837 dissolve
+    /// about 1%.)
     #[inline(always)]
     pub(super) fn visit(
         &self,

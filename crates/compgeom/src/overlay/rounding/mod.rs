@@ -522,16 +522,18 @@ fn near_pairs_on_grid(
     // Each point against the moved edges near it, then each unmoved edge (query
     // `points + k` for the k-th) against the moved points near it; `stamp` as in
     // [`Grid::visit`].
+    // (The cells of the rough box, which holds the precise one; the precise box only
+    // where an edge's box meets the rough one: most points on a large result have moved
+    // edges in their cells, few near them.)
     let point_pairs = |x: usize, stamp: &mut [usize], pairs: &mut Vec<Pair>| {
-        if !grid.may_meet(&rough_box(r.points[x])) {
-            return;
-        }
-        let b = point_box(r, x);
-        grid.visit(&b, x, stamp, |item| {
-            if item < moved_edges.len() && boxes[item].overlaps(&b) {
+        let rough = rough_box(r.points[x]);
+        let mut precise = None;
+        grid.visit(&rough, x, stamp, |item| {
+            if item < moved_edges.len() && boxes[item].overlaps(&rough) {
+                let b = precise.get_or_insert_with(|| point_box(r, x));
                 // (Not against its own edges.)
                 let e = moved_edges[item];
-                if !r.is_end(x, &e) {
+                if boxes[item].overlaps(b) && !r.is_end(x, &e) {
                     pairs.push((x as u32, e));
                 }
             }
