@@ -485,8 +485,8 @@ fn near_pairs_one_by_one(
         let mut precise = None;
         edge_strips.for_each_overlapping(&rough, |k| {
             let (e, eb) = (&moved_edges[k], &edge_boxes[k]);
-            let b = precise.get_or_insert_with(|| point_box(r, x));
-            if eb.overlaps(b) && !r.is_end(x, e) {
+            // (Its own edges first: a point next to a moved one meets them.)
+            if !r.is_end(x, e) && eb.overlaps(precise.get_or_insert_with(|| point_box(r, x))) {
                 pairs.push((x as u32, *e));
             }
         });
@@ -529,12 +529,15 @@ fn near_pairs_on_grid(
         let rough = rough_box(r.points[x]);
         let mut precise = None;
         grid.visit(&rough, x, stamp, |item| {
-            if item < moved_edges.len() && boxes[item].overlaps(&rough) {
+            // (Not against its own edges, which every point next to a moved one meets:
+            // looked at before the precise box is made.)
+            if item < moved_edges.len()
+                && boxes[item].overlaps(&rough)
+                && !r.is_end(x, &moved_edges[item])
+            {
                 let b = precise.get_or_insert_with(|| point_box(r, x));
-                // (Not against its own edges.)
-                let e = moved_edges[item];
-                if boxes[item].overlaps(b) && !r.is_end(x, &e) {
-                    pairs.push((x as u32, e));
+                if boxes[item].overlaps(b) {
+                    pairs.push((x as u32, moved_edges[item]));
                 }
             }
         });
