@@ -1067,11 +1067,21 @@ fn canonical_order(mut polygons: Vec<Polygon>) -> MultiPolygon {
             .find(|o| o.is_ne())
             .unwrap_or_else(|| a.len().cmp(&b.len()))
     }
+    // (Rings are told apart by their first, lowest, points as integer keys, made once
+    // per polygon; only rings sharing that point are compared further.)
+    let first = |ring: &[Point2]| ring.first().map_or((0, 0), |p| (okey(p.x), okey(p.y)));
     for p in &mut polygons {
-        p.holes.sort_unstable_by(|a, b| by_points(a, b));
+        p.holes
+            .sort_unstable_by(|a, b| first(a).cmp(&first(b)).then_with(|| by_points(a, b)));
     }
-    polygons.sort_unstable_by(|a, b| by_points(&a.exterior, &b.exterior));
-    MultiPolygon(polygons)
+    let mut keyed: Vec<((u64, u64), Polygon)> = polygons
+        .into_iter()
+        .map(|p| (first(&p.exterior), p))
+        .collect();
+    keyed.sort_unstable_by(|(ka, a), (kb, b)| {
+        ka.cmp(kb).then_with(|| by_points(&a.exterior, &b.exterior))
+    });
+    MultiPolygon(keyed.into_iter().map(|(_, p)| p).collect())
 }
 
 /// The winding numbers `(w_A, w_B)` of the rings `segs` (the first `na` from A) at the
