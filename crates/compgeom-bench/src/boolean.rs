@@ -597,6 +597,47 @@
 //! (/ i_overlay, / geo): stars 0.55–0.85 / 0.55–0.86, squares 0.77 / 0.74, water
 //! 0.86–0.98 / 0.80–0.90, JTS×52 intersection 1.11 / 1.10, union 1.11 / 1.10,
 //! difference 1.13 / 1.07, xor 1.54 / 1.46, dissolve 1.28 / 1.18.
+//!
+//! Session 41. Wall time on the large inputs turned out to be lost to page faults,
+//! which callgrind does not see: 40 water intersections took 0.57 s with glibc's
+//! defaults and 0.49 s with its trimming and mmap thresholds raised out of reach
+//! (`GLIBC_TUNABLES`), 42 957 minor faults against 3 434, about 2 µs a fault on this
+//! machine; the peers barely moved. glibc returns the top of the heap beyond about
+//! twice the largest block freed so far, so an overlay whose peak exceeds that pays a
+//! fault for every page above it, every call. Page faults for 20 water calls
+//! (`/usr/bin/time`, ours at the session start → end; i_overlay): intersection
+//! 23 067 → 4 461 (9 328), union 7 209 → 4 165 (11 267), difference 23 166 → 4 837
+//! (9 600), xor 29 456 → 17 037 (13 132). What did it: the arrangement's vertices
+//! stored compactly (an input vertex 20 bytes instead of 88: the largest array of the
+//! overlay, alive through the tracing and the check), the grid search's list of
+//! unmoved edges as their ends only, sized once. Freeing the tracing's arrays before
+//! the check, tried too, lowered the peak but made glibc trim in the middle of the
+//! call: union faults 4 166 → 35 179, dropped. The instructions moved little: the
+//! grid search visiting the cells of the rough box and making the precise box only
+//! for edges there (water intersection −0.6%, dissolve −0.9%), a point's own edges
+//! set aside before its precise box (JTS rows −0.6%, water xor −2.2%), the output
+//! sorted by integer keys of the shells' lowest points (water xor −1.0%). Session
+//! start to end (inclusive `boolean`, 5 calls): JTS×52 intersection 57.03 M → 56.68 M
+//! (−0.6%), union 65.71 M → 65.11 M (−0.9%), difference 60.23 M → 59.96 M (−0.4%),
+//! xor 89.94 M → 89.01 M (−1.0%); water intersection −2.1%, xor −3.3%; dissolve
+//! 26.45 M → 26.10 M (−1.3%). Wall, the maps rows of two interleaved runs, start → end
+//! (/ geo): water intersection 0.86–0.97 → 0.73–0.82, union 0.98–1.01 → 0.80–0.83,
+//! difference 1.02–1.08 → 0.73–0.74, xor 1.14–1.24 → 1.01–1.02 (all four water rows
+//! had crept over geo on this machine). Tried and dropped: the near-pair search on
+//! small results as scans of every point against each moved edge and every edge
+//! against each moved point, 64 box tests at a time (intersection +2.5%, xor +7.6%
+//! with up to 8 192 tests a result; ±0.7% with up to 1 024); the search from the
+//! moved items on a grid of all points and edges (intersection +6.6%, xor +16%: a
+//! moved edge's box holds many points, each needing its precise box); two and eight
+//! grid cells per moved item instead of about two (water xor +1.5% and +5%). Per JTS
+//! pair (`BOOLEAN_ONE=pairs`, intersection, µs, ours / geo): pg-4538#0 92 / 67 (685
+//! points, many a few floats apart), pg-2055#0 17 / 0.9 (a spike of a hole: 8 of the
+//! 13 near pairs of its 7-point result fail and the nudge tries them all), misc-2#1
+//! 18 / 5.4 and misc-2#0 22 / 11: four pairs make two thirds of the gap to geo on that
+//! row; pg-list#1 36 / 108 and misc-4#1 31 / 41 are the other way. Full table at the
+//! end: stars 0.54–0.83 / 0.53–0.83, squares 0.76 / 0.75, water 0.77–0.87 / 0.70–0.85,
+//! JTS×52 intersection 1.13 / 1.11, union 1.14 / 1.14, difference 1.13 / 1.07, xor
+//! 1.54 / 1.46, dissolve 1.23 / 1.15.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
