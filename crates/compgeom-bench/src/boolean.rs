@@ -628,13 +628,14 @@
 //! against each moved point, 64 box tests at a time (intersection +2.5%, xor +7.6%
 //! with up to 8 192 tests a result; ±0.7% with up to 1 024); the search from the
 //! moved items on a grid of all points and edges (intersection +6.6%, xor +16%: a
-//! moved edge's box holds many points, each needing its precise box); two and eight
+//! moved edge's box holds many points, each needing its precise box); one and eight
 //! grid cells per moved item instead of about two (water xor +1.5% and +5%). Per JTS
 //! pair (`BOOLEAN_ONE=pairs`, intersection, µs, ours / geo): pg-4538#0 92 / 67 (685
 //! points, many a few floats apart), pg-2055#0 17 / 0.9 (a spike of a hole: 8 of the
 //! 13 near pairs of its 7-point result fail and the nudge tries them all), misc-2#1
-//! 18 / 5.4 and misc-2#0 22 / 11: four pairs make two thirds of the gap to geo on that
-//! row; pg-list#1 36 / 108 and misc-4#1 31 / 41 are the other way. Full table at the
+//! 18 / 5.4 and misc-2#0 22 / 11: these four are more than the row's whole gap to geo
+//! (740 against 679 µs summed); pg-list#1 36 / 108 and misc-4#1 31 / 41 go the other
+//! way. Full table at the
 //! end: stars 0.54–0.83 / 0.53–0.83, squares 0.76 / 0.75, water 0.77–0.87 / 0.70–0.85,
 //! JTS×52 intersection 1.13 / 1.11, union 1.14 / 1.14, difference 1.13 / 1.07, xor
 //! 1.54 / 1.46, dissolve 1.23 / 1.15.
