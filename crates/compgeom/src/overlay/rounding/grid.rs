@@ -18,6 +18,25 @@ pub(super) struct Grid {
     count: usize,
 }
 
+/// Columns and rows for `count` items over an extent of width `w` and height `h`:
+/// about two cells per item, cut in proportion to the sides, at most `2 · count + 1`
+/// along either (so never more than about `4 · count + 3` cells). From the sides' ratio,
+/// not their product or their sizes: at extreme scales (coordinates near 1e-300 or
+/// subnormal) those under- or overflow, which once made grids of billions of cells.
+fn cells_for(w: f64, h: f64, count: usize) -> (usize, usize) {
+    let most = 2 * count + 1;
+    let target = (2 * count.max(1)) as f64;
+    let ratio = w / h;
+    if ratio.is_nan() {
+        // (0 / 0, or both sides infinite: one cell. A negative side, for no boxes, makes
+        // square roots of NaN below: one cell too.)
+        return (1, 1);
+    }
+    // (`as usize` saturates: infinity gives the cap, zero one.)
+    let along = |v: f64| (v.sqrt().ceil() as usize).clamp(1, most);
+    (along(target * ratio), along(target / ratio))
+}
+
 /// An item's box over more cells than this is `wide`.
 const WIDE_CELLS: usize = 64;
 
@@ -36,21 +55,19 @@ impl Grid {
             extent.y1 = extent.y1.max(b.y1);
         }
         let count = boxes.len();
-        // Square cells, about two per item (the longer side cut into at most 2·count + 1).
         let (w, h) = (extent.x1 - extent.x0, extent.y1 - extent.y0);
-        let longest = w.max(h);
-        let by_area = ((w * h) / (2 * count.max(1)) as f64).sqrt();
-        let side = by_area.max(longest / (2 * count + 1) as f64);
-        let inv = if side > 0.0 && side.is_finite() {
-            1.0 / side
-        } else {
-            0.0
+        let (nx, ny) = cells_for(w, h, count);
+        // (A zero or overflowing side, or one so small that its scale overflows
+        // (subnormal extents), gives steps that put everything in one: still monotone,
+        // so still right, only slower.)
+        let steps = |lo: f64, len: f64, n: usize| {
+            let per_unit = n as f64 / len;
+            let per_unit = if per_unit.is_finite() { per_unit } else { 0.0 };
+            Steps::per_unit(lo, per_unit, n as u32)
         };
-        let cells = |len: f64| ((len * inv) as usize).clamp(0, 2 * count) + 1;
-        let (nx, ny) = (cells(w), cells(h));
         let mut grid = Grid {
-            xs: Steps::per_unit(extent.x0, inv, nx as u32),
-            ys: Steps::per_unit(extent.y0, inv, ny as u32),
+            xs: steps(extent.x0, w, nx),
+            ys: steps(extent.y0, h, ny),
             nx,
             ny,
             extent,
@@ -161,6 +178,65 @@ impl Grid {
                         f(item);
                     }
                 }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The grid keeps about two cells per item at every scale (coordinates near 1e-300,
+    /// subnormal ones, near 1e300, extents flat in x or in y, all boxes on one point):
+    /// never more than `4 · count + 3` cells, where the product or the quotients of the
+    /// sides once under- or overflowed into grids of billions of cells. And each query
+    /// meets every box that overlaps it.
+    #[test]
+    fn cells_stay_about_two_per_item_at_every_scale() {
+        let mut below = crate::testing::below(0x9_12d5);
+        type Scale = fn(u64) -> f64;
+        let scales: [(Scale, Scale); 7] = [
+            (|k| k as f64, |k| k as f64),
+            (|k| k as f64 * 1e-300, |k| k as f64 * 1e-300),
+            (|k| f64::from_bits(k * 1000), |k| f64::from_bits(k * 1000)),
+            (|k| k as f64 * 1e300, |k| k as f64 * 1e300),
+            (|k| k as f64, |k| k as f64 * 1e-300),
+            (|k| f64::from_bits(k), |k| k as f64),
+            (|_| 3.0, |_| 3.0),
+        ];
+        for (round, (sx, sy)) in scales.into_iter().enumerate() {
+            let count = 500;
+            let boxes: Vec<Box2> = (0..count)
+                .map(|_| {
+                    let (x, y) = (below(100_000), below(100_000));
+                    let (w, h) = (below(300), below(300));
+                    Box2 {
+                        x0: sx(x),
+                        x1: sx(x + w),
+                        y0: sy(y),
+                        y1: sy(y + h),
+                    }
+                })
+                .collect();
+            let grid = Grid::new(&boxes);
+            assert!(
+                grid.nx * grid.ny <= 4 * count + 3,
+                "round {round}: {} x {}",
+                grid.nx,
+                grid.ny
+            );
+            let mut stamp = vec![usize::MAX; count];
+            for (q, b) in boxes.iter().enumerate().step_by(7) {
+                let mut got = Vec::new();
+                grid.visit(b, q, &mut stamp, |k| {
+                    if boxes[k].overlaps(b) {
+                        got.push(k);
+                    }
+                });
+                got.sort_unstable();
+                let want: Vec<usize> = (0..count).filter(|&k| boxes[k].overlaps(b)).collect();
+                assert_eq!(got, want, "round {round}, query {q}");
             }
         }
     }
