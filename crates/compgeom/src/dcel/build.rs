@@ -54,7 +54,7 @@ impl Arrangement {
     /// edge). Non-finite coordinates are an error naming the segment.
     pub fn of_segments(segments: &[Segment2]) -> Result<Arrangement> {
         let flat = Flat::of_segments(segments)?;
-        let vertices = flat.vertices.clone().into_exact();
+        let vertices = flat.vertices.exact();
         let edges = (0..flat.edge_count())
             .map(|i| {
                 let [u, v] = flat.edges[i];

@@ -64,7 +64,9 @@ pub(crate) struct Flat {
 pub(crate) enum Vertices {
     /// Vertex `i` is the input point `approx[i]` where `crossing[i]` is
     /// [`NOT_A_CROSSING`], else the crossing `crossings[crossing[i]]`, whose correctly
-    /// rounded point is `approx[i]` (the exact tests filter on it).
+    /// rounded point is `approx[i]` (the exact tests filter on it). (Fewer than 2³² − 1
+    /// crossings: the noding caps its contacts below 2³¹, and more would not fit in
+    /// memory, at 64 bytes each.)
     Exact {
         approx: Vec<Point2>,
         crossing: Vec<u32>,
@@ -238,7 +240,7 @@ impl Vertices {
         !r.surely_exact() && rounded_away(&self.exact_point(i), r.point())
     }
 
-    /// [`compare_xy_filtered`] of vertices `a` and `b` with their rounded points (the
+    /// [`compare_xy_filtered_by`] of vertices `a` and `b` with their rounded points (the
     /// exact points are made from the compact ones, and read only where the rounded ones
     /// do not decide).
     #[inline]

@@ -547,6 +547,8 @@ fn near_pairs_on_grid(
     let mut unmoved: Vec<[u32; 2]> = Vec::with_capacity(r.points.len());
     r.for_each_edge(|e| {
         if !moves(&e) {
+            // (A point standing for two vertices is moved: see `PointIds::merge`.)
+            debug_assert!(e.i != e.j, "a collapsed edge that did not move");
             unmoved.push([e.i as u32, e.j as u32]);
         }
     });
@@ -719,8 +721,9 @@ fn passes(
 ///
 /// Then they never touch as the vertices move from their exact points: rounding to
 /// nearest (correctly, ties to even: the arrangement's rounded points are bit for bit
-/// [`crate::kernel::ExactPoint`]'s nearest ones, which `Vertices::rounded_exact` checks
-/// in debug builds and the noding's tests check) is monotone, so from `r(x) > r(end)` follows `x > end` for the exact
+/// [`crate::kernel::ExactPoint`]'s nearest ones, which `ExactVertices::push` checks in
+/// debug builds, up to the sign of zero, and the noding's tests check) is monotone, so
+/// from `r(x) > r(end)` follows `x > end` for the exact
 /// coordinates (equal ones round alike). Along the straight moves, the difference of
 /// two vertices' coordinates is linear in time, positive at both ends, so positive
 /// throughout: x stays strictly beyond the edge's shadow on that axis. (For a point
