@@ -883,13 +883,16 @@ proptest! {
 }
 
 /// Two stars of 500 vertices at random radii, scaled down to coordinates near 1e-301
-/// and to subnormal ones (about 23 bits left): every operation gives a valid result.
-/// (When the rounding check's grid was sized from the product of its extent's sides,
-/// which underflows there, this took 1.1 GB and 2.7 s instead of 40 MB and 0.3 s, and
-/// three times as many vertices failed to allocate 8.7 GB; the grid's bound on its
-/// cells is tested with the grid.)
+/// and to subnormal ones (about 23 bits left), and up to coordinates from about
+/// −1.2e308 to 1.5e308 (whose differences overflow): every operation gives a valid
+/// result. (When the rounding check's grid was sized from the product of its extent's
+/// sides, which underflows there, the tiny ones took 1.1 GB and 2.7 s instead of 40 MB
+/// and 0.3 s, and three times as many vertices failed to allocate 8.7 GB. When a
+/// subnormal or overflowing extent made the grid one cell, stars of 5 000 vertices took
+/// 490 s at 5e-318 and at 8e307 instead of 19 s, against 15 s at scale 1. The grid's
+/// bounds on its cells and their fill are tested with the grid.)
 #[test]
-fn tiny_coordinates_are_overlaid_in_bounded_memory() {
+fn extreme_coordinates_are_overlaid_in_bounded_memory() {
     let mut state = 0x5eed_u64;
     let mut unit = move || {
         state = state
@@ -910,7 +913,7 @@ fn tiny_coordinates_are_overlaid_in_bounded_memory() {
             .collect();
         mp(vec![ring])
     };
-    for scale in [2f64.powi(-1000), 5e-318] {
+    for scale in [2f64.powi(-1000), 5e-318, 8e307] {
         let (a, b) = (star(0.0, scale), star(0.4, scale));
         for op in [
             BooleanOp::Intersection,

@@ -9,6 +9,9 @@ use crate::kernel::steps::Steps;
 pub(super) struct Grid {
     xs: Steps,
     ys: Steps,
+    /// The powers of two the coordinates are scaled by before their steps ([`prescale`]).
+    sx: f64,
+    sy: f64,
     nx: usize,
     ny: usize,
     extent: Box2,
@@ -18,15 +21,15 @@ pub(super) struct Grid {
     count: usize,
 }
 
-/// Columns and rows for `count` items over an extent of width `w` and height `h`:
-/// about two cells per item, cut in proportion to the sides, at most `2 · count + 1`
-/// along either (so never more than about `4 · count + 3` cells). From the sides' ratio,
-/// not their product or their sizes: at extreme scales (coordinates near 1e-300 or
-/// subnormal) those under- or overflow, which once made grids of billions of cells.
-fn cells_for(w: f64, h: f64, count: usize) -> (usize, usize) {
+/// Columns and rows for `count` items over an extent whose width is `ratio` times its
+/// height: about two cells per item, cut in proportion to the sides, at most
+/// `2 · count + 1` along either (so never more than about `4 · count + 3` cells). From
+/// the sides' ratio, not their product or their sizes: at extreme scales (coordinates
+/// near 1e-300 or subnormal) those under- or overflow, which once made grids of
+/// billions of cells.
+fn cells_for(ratio: f64, count: usize) -> (usize, usize) {
     let most = 2 * count + 1;
     let target = (2 * count.max(1)) as f64;
-    let ratio = w / h;
     if ratio.is_nan() {
         // (0 / 0, or both sides infinite: one cell. A negative side, for no boxes, makes
         // square roots of NaN below: one cell too.)
@@ -35,6 +38,26 @@ fn cells_for(w: f64, h: f64, count: usize) -> (usize, usize) {
     // (`as usize` saturates: infinity gives the cap, zero one.)
     let along = |v: f64| (v.sqrt().ceil() as usize).clamp(1, most);
     (along(target * ratio), along(target / ratio))
+}
+
+/// A power of two that brings the side `lo..=hi` of an extent to a size whose steps
+/// are finite: ½ where `hi − lo` overflows (coordinates near ±`f64::MAX` on both sides),
+/// 2¹⁰⁰⁰ where it is positive and below 2⁻⁹⁰⁰ (subnormal coordinates: `count / side`
+/// could overflow), else 1. Without it such an extent was one cell, and the search
+/// quadratic. Scaling by a power of two is exact, or monotone where it under- or
+/// overflows (a query far outside a tiny extent goes to ±∞, into the first or last
+/// cell), so the cells stay monotone in the coordinates and overlapping boxes still
+/// share one. (A positive side is at least a float gap of its ends, so scaled by
+/// 2¹⁰⁰⁰ the ends stay far below the overflow.)
+fn prescale(lo: f64, hi: f64) -> f64 {
+    let side = hi - lo;
+    if side == f64::INFINITY {
+        0.5
+    } else if side > 0.0 && side < 2f64.powi(-900) {
+        2f64.powi(1000)
+    } else {
+        1.0
+    }
 }
 
 /// An item's box over more cells than this is `wide`.
@@ -55,19 +78,26 @@ impl Grid {
             extent.y1 = extent.y1.max(b.y1);
         }
         let count = boxes.len();
-        let (w, h) = (extent.x1 - extent.x0, extent.y1 - extent.y0);
-        let (nx, ny) = cells_for(w, h, count);
-        // (A zero or overflowing side, or one so small that its scale overflows
-        // (subnormal extents), gives steps that put everything in one: still monotone,
-        // so still right, only slower.)
+        let (sx, sy) = (
+            prescale(extent.x0, extent.x1),
+            prescale(extent.y0, extent.y1),
+        );
+        let (x0, y0) = (extent.x0 * sx, extent.y0 * sy);
+        let (w, h) = (extent.x1 * sx - x0, extent.y1 * sy - y0);
+        // (The ratio of the true sides, w / sx over h / sy.)
+        let (nx, ny) = cells_for(w / h * (sy / sx), count);
+        // (A zero side gives steps that put everything in one: still monotone, so still
+        // right, and the one cell that side needs.)
         let steps = |lo: f64, len: f64, n: usize| {
             let per_unit = n as f64 / len;
             let per_unit = if per_unit.is_finite() { per_unit } else { 0.0 };
             Steps::per_unit(lo, per_unit, n as u32)
         };
         let mut grid = Grid {
-            xs: steps(extent.x0, w, nx),
-            ys: steps(extent.y0, h, ny),
+            xs: steps(x0, w, nx),
+            ys: steps(y0, h, ny),
+            sx,
+            sy,
             nx,
             ny,
             extent,
@@ -83,12 +113,12 @@ impl Grid {
     /// The cell range of a box, clamped to the grid (monotone in the box's bounds, so
     /// boxes that overlap share a cell).
     fn range(&self, b: &Box2) -> (usize, usize, usize, usize) {
-        let (xs, ys) = (&self.xs, &self.ys);
+        let (xs, ys, sx, sy) = (&self.xs, &self.ys, self.sx, self.sy);
         (
-            xs.index(b.x0),
-            xs.index(b.x1),
-            ys.index(b.y0),
-            ys.index(b.y1),
+            xs.index(b.x0 * sx),
+            xs.index(b.x1 * sx),
+            ys.index(b.y0 * sy),
+            ys.index(b.y1 * sy),
         )
     }
 
@@ -188,23 +218,30 @@ mod tests {
     use super::*;
 
     /// The grid keeps about two cells per item at every scale (coordinates near 1e-300,
-    /// subnormal ones, near 1e300, extents flat in x or in y, all boxes on one point):
-    /// never more than `4 · count + 3` cells, where the product or the quotients of the
-    /// sides once under- or overflowed into grids of billions of cells. And each query
-    /// meets every box that overlaps it.
+    /// subnormal ones, near 1e300, from near −`f64::MAX` to near `f64::MAX`, extents
+    /// flat in x or in y, all boxes on one point): never more than `4 · count + 3`
+    /// cells, where the product or the quotients of the sides once under- or overflowed
+    /// into grids of billions of cells, and, but for the boxes on one point, at least
+    /// one per item, where a subnormal or overflowing extent once made one cell (and the
+    /// search quadratic). And each query meets every box that overlaps it.
     #[test]
     fn cells_stay_about_two_per_item_at_every_scale() {
         let mut below = crate::testing::below(0x9_12d5);
         type Scale = fn(u64) -> f64;
-        let scales: [(Scale, Scale); 7] = [
+        // (Coordinates 0 to about 100 300 apart from the scales' origins.)
+        let huge: Scale = |k| (k as f64 - 50_150.0) * 3.5e303;
+        let scales: [(Scale, Scale); 9] = [
             (|k| k as f64, |k| k as f64),
             (|k| k as f64 * 1e-300, |k| k as f64 * 1e-300),
             (|k| f64::from_bits(k * 1000), |k| f64::from_bits(k * 1000)),
             (|k| k as f64 * 1e300, |k| k as f64 * 1e300),
             (|k| k as f64, |k| k as f64 * 1e-300),
             (|k| f64::from_bits(k), |k| k as f64),
+            (huge, huge),
+            (huge, |k| f64::from_bits(k)),
             (|_| 3.0, |_| 3.0),
         ];
+        let one_point = scales.len() - 1;
         for (round, (sx, sy)) in scales.into_iter().enumerate() {
             let count = 500;
             let boxes: Vec<Box2> = (0..count)
@@ -220,9 +257,13 @@ mod tests {
                 })
                 .collect();
             let grid = Grid::new(&boxes);
+            let cells = grid.nx * grid.ny;
+            // (The boxes are about 1/300 of the extent per side: a few in a cell.)
+            let fullest = grid.starts.windows(2).map(|w| w[1] - w[0]).max();
             assert!(
-                grid.nx * grid.ny <= 4 * count + 3,
-                "round {round}: {} x {}",
+                cells <= 4 * count + 3
+                    && (round == one_point || cells >= count && fullest < Some(20)),
+                "round {round}: {} x {}, at most {fullest:?} in a cell",
                 grid.nx,
                 grid.ny
             );
