@@ -52,7 +52,7 @@ const FILTER_FLOOR: f64 = 1e-290;
 /// The sign of the orientation of `(a, b, c)` (`1` counter-clockwise, `-1` clockwise) when
 /// plain `f64` arithmetic decides it, else `0` (collinear or too close to tell).
 #[inline(always)]
-fn orient_filtered(a: Point2, b: Point2, c: Point2) -> i8 {
+pub(crate) fn orient_filtered(a: Point2, b: Point2, c: Point2) -> i8 {
     let l = (b.x - a.x) * (c.y - a.y);
     let r = (b.y - a.y) * (c.x - a.x);
     let det = l - r;

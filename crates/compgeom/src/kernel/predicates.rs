@@ -43,6 +43,16 @@
 //! Otherwise (mixed extreme magnitudes) the determinant is evaluated exactly with
 //! dyadic big-integer arithmetic ([`super::exact`]).
 //!
+//! ## A float filter first (orient2d)
+//!
+//! Before the range check, `orient2d` evaluates its determinant once in plain `f64`
+//! and takes the sign where it exceeds Shewchuk's first error bound (plus an absolute
+//! term covering the underflow of a product, for sums of the products' magnitudes from
+//! 1e-290 up to `f64::MAX`): the test `robust` starts with, without the range check in
+//! front of it. It decides all but nearly collinear triples: on the intersections of
+//! the JTS robustness pairs the orientations took half the instructions they did
+//! (1.5% of the whole). Segment intersection used the same filter already.
+//!
 //! ## Non-finite input
 //!
 //! All coordinates are assumed finite (algorithms call [`super::ensure_finite`] first).
@@ -287,6 +297,14 @@ fn insphere_det<T: Arith>(a: Point3, b: Point3, c: Point3, d: Point3, e: Point3)
 
 #[inline]
 fn orient2d_sign(a: Point2, b: Point2, c: Point2) -> Ordering {
+    // Plain `f64` with Shewchuk's first error bound decides all but nearly collinear
+    // triples and extreme magnitudes, in a dozen instructions; the range check and
+    // `robust` (which starts with the same test) the rest.
+    match super::intersection::orient_filtered(a, b, c) {
+        1 => return Ordering::Greater,
+        -1 => return Ordering::Less,
+        _ => {}
+    }
     match route(&[a.x, a.y, b.x, b.y, c.x, c.y], ORIENT2D_RANGE) {
         Route::Robust => sign_of(robust::orient2d(c2(a), c2(b), c2(c))),
         Route::Scaled(k) => sign_of(robust::orient2d(c2(s2(a, k)), c2(s2(b, k)), c2(s2(c, k)))),
