@@ -639,6 +639,38 @@
 //! end: stars 0.54–0.83 / 0.53–0.83, squares 0.76 / 0.75, water 0.77–0.87 / 0.70–0.85,
 //! JTS×52 intersection 1.13 / 1.11, union 1.14 / 1.14, difference 1.13 / 1.07, xor
 //! 1.54 / 1.46, dissolve 1.23 / 1.15.
+//!
+//! Session 42. Where the JTS rows lose: per pair, geo's instruction counts are within
+//! 1–3% of i_overlay's (it runs i_overlay), so faster than geo means within a few
+//! percent of i_overlay. Per call on the 52 intersections (callgrind, per pair): ours
+//! 11.36 M, i_overlay 9.95 M, geo 10.18 M. A call on two squares (`BOOLEAN_INPUT=ngons
+//! BOOLEAN_K=4`) costs 38 k instructions against i_overlay's 22 k, 27% of it malloc
+//! and free (75 blocks a call; glibc's free took 88 instructions on average here):
+//! that fixed excess, 16 k over 52 calls, is most of the row's gap (about 0.8 M of
+//! 1.2 M). The rest is in few pairs: pg-2055#0 219 k against 13 k (its nudge 97 k),
+//! misc-2#0 342 k / 158 k, misc-2#1 258 k / 86 k; pg-4538#0 1 543 k / 1 066 k has no
+//! pathology (2 250 instructions a point against 1 550). The xor's extra over the
+//! intersection is mostly the rounding check (failing_rings 27% of the xor): at each
+//! crossing four result edges meet, and the far end of each is near the other ring's
+//! edges there (1 274 near pairs for the 52 results against 233). Changed: `orient2d`
+//! evaluates in plain `f64` with Shewchuk's first bound before its range check and
+//! `robust` (the orientations took half the instructions); the rounding grid scales
+//! coordinates by a power of two where an extent's side overflows or is subnormal
+//! (stars of 5 000 vertices at 8e307 or 5e-318: 490 s → 19 s, against 15 s at scale
+//! 1; water intersection +0.4%, dissolve +0.2%). Session start to end (inclusive
+//! `boolean`, 5 calls): JTS×52 intersection 56.68 M → 55.84 M (−1.5%), union 65.12 M →
+//! 64.25 M (−1.3%), difference 59.98 M → 58.96 M (−1.7%), xor 89.01 M → 87.05 M
+//! (−2.2%); water intersection −0.1%, xor −0.3%; dissolve 26.09 M → 25.66 M (−1.6%).
+//! Tried and dropped: strips from 3 looked-at pairs per segment instead of 8 (JTS
+//! intersection +4.6%); the sweep's box tests into a bit mask (+0.6%); the nudge's
+//! order of failing pairs compared by rounded points first (xor −0.1%); the bench's
+//! counting allocator forwarding zeroed allocations to `calloc` (ours +1.2%
+//! instructions, wall the same). Not done: a per-thread pool of the tracing's
+//! temporary arrays (about 40% of the blocks; mimalloc, all blocks, was −4%). Two full
+//! tables at the end (/ i_overlay, / geo): stars 0.52–0.84 / 0.51–0.84, squares
+//! 0.72–0.77 / 0.71, water 0.72–0.92 / 0.71–0.90, JTS×52 intersection 1.08 /
+//! 1.06–1.07, union 1.15–1.16 / 1.12–1.13, difference 1.10 / 1.09–1.10, xor 1.51–1.54
+//! / 1.44–1.46, dissolve 1.23 / 1.14–1.15.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
