@@ -1,7 +1,7 @@
 //! `compgeom-bench kernel`: the cost of exactness in the kernel.
 //!
-//! * `orient2d`: compgeom's range-checked predicate against raw `robust::orient2d`
-//!   (what spade and geo call) on the same random triples.
+//! * `orient2d`: compgeom's predicate (a float filter, then a range check and `robust`)
+//!   against raw `robust::orient2d` (what spade and geo call) on the same random triples.
 //! * crossing comparisons: `Crossing::compare_xy` on random crossings (the interval
 //!   filter decides) and on crossings that all coincide (every comparison falls back
 //!   to exact arithmetic), with the measured fallback rate.
@@ -157,7 +157,7 @@ pub fn run() {
         black_box(run_orient(&pts, calls, robust_sign));
     });
     row(
-        "orient2d, compgeom (range check + robust)",
+        "orient2d, compgeom (float filter, range check, robust)",
         t_ours,
         calls,
         "1e7 triples from 1e6 random points in [0,1)²",

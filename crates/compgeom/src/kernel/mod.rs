@@ -6,7 +6,7 @@
 //!
 //! | operation | exact? | how |
 //! |---|---|---|
-//! | [`orient2d`], [`incircle`], [`orient3d`], [`insphere`] on input points | yes, for every finite `f64` input | `robust` (Shewchuk) inside a per-predicate safe exponent range, exact power-of-two scaling into it, else exact dyadic arithmetic |
+//! | [`orient2d`], [`incircle`], [`orient3d`], [`insphere`] on input points | yes, for every finite `f64` input | for `orient2d` a plain `f64` evaluation with Shewchuk's error bound first; `robust` (Shewchuk) inside a per-predicate safe exponent range, exact power-of-two scaling into it, else exact dyadic arithmetic |
 //! | [`compare_xy`], [`compare_xyz`] and coordinate comparisons | yes | they only compare values |
 //! | [`Crossing::new`] (are the lines parallel?), [`compare_slopes`] | yes | floating-point filter, exact fallback |
 //! | [`Crossing::compare_xy_point`], [`Crossing::compare_xy`], [`Crossing::orient`], [`ExactPoint::compare_xy`], [`ExactPoint::compare_x`], [`orient_exact`], [`compare_y_at_x`], [`on_segment`] | yes, for every finite input | floating-point filter, exact dyadic fallback (decided from the defining segments) |

@@ -46,12 +46,14 @@
 //! ## A float filter first (orient2d)
 //!
 //! Before the range check, `orient2d` evaluates its determinant once in plain `f64`
-//! and takes the sign where it exceeds Shewchuk's first error bound (plus an absolute
-//! term covering the underflow of a product, for sums of the products' magnitudes from
-//! 1e-290 up to `f64::MAX`): the test `robust` starts with, without the range check in
-//! front of it. It decides all but nearly collinear triples: on the intersections of
-//! the JTS robustness pairs the orientations took half the instructions they did
-//! (1.5% of the whole). Segment intersection used the same filter already.
+//! and takes the sign where it exceeds Shewchuk's first error bound `ccwerrboundA`
+//! (plus an absolute term covering the underflow of a product, for sums of the
+//! products' magnitudes from 1e-290 up to `f64::MAX`; non-finite values fail that
+//! range and go on). Only what it cannot decide, nearly collinear triples, pays for the
+//! range check and `robust` (which then evaluates its own float filter again). On the
+//! intersections of the JTS robustness pairs the orientations took half the
+//! instructions they did (1.5% of the whole). Segment intersection used the same
+//! filter already ([`super::intersection`]).
 //!
 //! ## Non-finite input
 //!

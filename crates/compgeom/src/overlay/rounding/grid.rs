@@ -78,12 +78,29 @@ impl Grid {
             extent.y1 = extent.y1.max(b.y1);
         }
         let count = boxes.len();
-        let (sx, sy) = (
-            prescale(extent.x0, extent.x1),
-            prescale(extent.y0, extent.y1),
-        );
-        let (x0, y0) = (extent.x0 * sx, extent.y0 * sy);
-        let (w, h) = (extent.x1 * sx - x0, extent.y1 * sy - y0);
+        // The steps span the finite coordinates: boxes widened outward from points
+        // within a few floats of ±`f64::MAX` end at ±∞, which would stretch a side to
+        // infinity (one cell); those ends go to the first or last cell, still in order.
+        let (mut ex0, mut ex1, mut ey0, mut ey1) = (extent.x0, extent.x1, extent.y0, extent.y1);
+        if [ex0, ex1, ey0, ey1].iter().any(|v| v.is_infinite()) && count > 0 {
+            (ex0, ex1, ey0, ey1) = (
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+            );
+            for b in boxes {
+                for x in [b.x0, b.x1].into_iter().filter(|v| v.is_finite()) {
+                    (ex0, ex1) = (ex0.min(x), ex1.max(x));
+                }
+                for y in [b.y0, b.y1].into_iter().filter(|v| v.is_finite()) {
+                    (ey0, ey1) = (ey0.min(y), ey1.max(y));
+                }
+            }
+        }
+        let (sx, sy) = (prescale(ex0, ex1), prescale(ey0, ey1));
+        let (x0, y0) = (ex0 * sx, ey0 * sy);
+        let (w, h) = (ex1 * sx - x0, ey1 * sy - y0);
         // (The ratio of the true sides, w / sx over h / sy.)
         let (nx, ny) = cells_for(w / h * (sy / sx), count);
         // (A zero side gives steps that put everything in one: still monotone, so still
@@ -242,9 +259,12 @@ mod tests {
             (|_| 3.0, |_| 3.0),
         ];
         let one_point = scales.len() - 1;
-        for (round, (sx, sy)) in scales.into_iter().enumerate() {
+        // (And the scales near ±`f64::MAX` again, with one box ending at +∞ in x and one
+        // at −∞ in y, as boxes widened outward from points next to `f64::MAX` do.)
+        let rounds = scales.iter().chain(&scales[6..8]).enumerate();
+        for (round, &(sx, sy)) in rounds {
             let count = 500;
-            let boxes: Vec<Box2> = (0..count)
+            let mut boxes: Vec<Box2> = (0..count)
                 .map(|_| {
                     let (x, y) = (below(100_000), below(100_000));
                     let (w, h) = (below(300), below(300));
@@ -256,6 +276,10 @@ mod tests {
                     }
                 })
                 .collect();
+            if round > one_point {
+                boxes[0].x1 = f64::INFINITY;
+                boxes[1].y0 = f64::NEG_INFINITY;
+            }
             let grid = Grid::new(&boxes);
             let cells = grid.nx * grid.ny;
             // (The boxes are about 1/300 of the extent per side: a few in a cell.)
