@@ -654,23 +654,25 @@
 //! crossing four result edges meet, and the far end of each is near the other ring's
 //! edges there (1 274 near pairs for the 52 results against 233). Changed: `orient2d`
 //! evaluates in plain `f64` with Shewchuk's first bound before its range check and
-//! `robust` (the orientations took half the instructions); the rounding grid scales
-//! coordinates by a power of two where an extent's side overflows or is subnormal
-//! (stars of 5 000 vertices at 8e307 or 5e-318: 490 s → 19 s, against 15 s at scale
-//! 1; water intersection +0.4%, dissolve +0.2%). Session start to end (inclusive
-//! `boolean`, 5 calls): JTS×52 intersection 56.68 M → 55.84 M (−1.5%), union 65.12 M →
-//! 64.25 M (−1.3%), difference 59.98 M → 58.96 M (−1.7%), xor 89.01 M → 87.05 M
-//! (−2.2%); water intersection −0.1%, xor −0.3%; dissolve 26.09 M → 25.66 M (−1.6%).
-//! Tried and dropped: strips from 3 looked-at pairs per segment instead of 8 (JTS
-//! intersection +4.6%); the sweep's box tests into a bit mask (+0.6%); the nudge's
-//! order of failing pairs compared by rounded points first (xor −0.1%); the bench's
-//! counting allocator forwarding zeroed allocations to `calloc` (ours +1.2%
-//! instructions, wall the same). Not done: a per-thread pool of the tracing's
+//! `robust` (the orientations took half the instructions); up to 24 segments the
+//! noding tests every pair's boxes without building the sweep (two squares 38.4 k →
+//! 35.6 k instructions a call); the rounding grid scales coordinates by a power of two
+//! where an extent's side overflows or is subnormal, and spans the finite box ends only
+//! (stars of 5 000 vertices at 8e307 or 5e-318: 490 s → 19 s, against 15 s at scale 1).
+//! Session start to end (inclusive `boolean`, 5 calls): JTS×52 intersection 56.68 M →
+//! 55.49 M (−2.1%), union 65.12 M → 63.95 M (−1.8%), difference 59.98 M → 58.69 M
+//! (−2.2%), xor 89.01 M → 86.52 M (−2.8%); water intersection −0.1%, xor −0.5%;
+//! dissolve 26.09 M → 25.61 M (−1.8%). Tried and dropped: strips from 3 looked-at
+//! pairs per segment instead of 8 (JTS intersection +4.6%); the sweep's box tests into
+//! a bit mask (+0.6%); every pair up to 40 or 64 segments (+0.2%, +1.2% against 24);
+//! the nudge's order of failing pairs compared by rounded points first (xor −0.1%);
+//! the bench's counting allocator forwarding zeroed allocations to `calloc` (ours
+//! +1.2% instructions, wall the same). Not done: a per-thread pool of the tracing's
 //! temporary arrays (about 40% of the blocks; mimalloc, all blocks, was −4%). Two full
-//! tables at the end (/ i_overlay, / geo): stars 0.52–0.84 / 0.51–0.84, squares
-//! 0.72–0.77 / 0.71, water 0.72–0.92 / 0.71–0.90, JTS×52 intersection 1.08 /
-//! 1.06–1.07, union 1.15–1.16 / 1.12–1.13, difference 1.10 / 1.09–1.10, xor 1.51–1.54
-//! / 1.44–1.46, dissolve 1.23 / 1.14–1.15.
+//! tables at the end (/ i_overlay, / geo): stars 0.49–0.79 / 0.52–0.85, squares
+//! 0.72–0.75 / 0.64–0.72, water 0.68–0.91 / 0.67–0.90, JTS×52 intersection 1.09–1.10 /
+//! 1.06–1.08, union 1.09–1.13 / 1.06–1.08, difference 1.11–1.12 / 1.06, xor 1.50–1.52
+//! / 1.43, dissolve 1.21–1.22 / 1.12–1.14.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
