@@ -235,6 +235,18 @@ impl Found {
         }
     }
 
+    /// Test segments `s` = number `i` < `j` = `t` with the `ends` (by their vertices where
+    /// those are exact, else by their points).
+    #[inline]
+    fn test_with(&mut self, s: Segment2, t: Segment2, i: u32, j: u32, ends: &Ends, bound: f64) {
+        if ends.exact {
+            let (ei, ej) = (ends.of[i as usize], ends.of[j as usize]);
+            self.test_by_vertices(s, t, i, j, ei, ej, bound)
+        } else {
+            self.test_by_points(s, t, i, j, bound)
+        }
+    }
+
     /// Test segments `s` = number `i` < `j` = `t`, with end vertices `ei` and `ej` (exact
     /// [`Ends`]: equal points are equal vertices), exactly and record the cuts they
     /// give. `bound` is the [`static_orient_bound`] of the input.
@@ -1097,12 +1109,7 @@ fn found_by_picked<const PICK: bool>(
                 } else {
                     (p, q)
                 };
-                let (s, t, iu, ju) = (sub[i], sub[j], i as u32, j as u32);
-                if ends.exact {
-                    f.test_by_vertices(s, t, iu, ju, ends.of[i], ends.of[j], bound);
-                } else {
-                    f.test_by_points(s, t, iu, ju, bound);
-                }
+                f.test_with(sub[i], sub[j], i as u32, j as u32, ends, bound);
             }
         }
         return Some(f);
@@ -1152,13 +1159,7 @@ fn found_by_picked<const PICK: bool>(
         let grid = prefer_pairwise(&once)?;
         let num = |i: usize| if PICK { pick[i] as usize } else { i };
         let test = |f: &mut Found, i: usize, j: usize| {
-            let (s, t, i, j) = (once[i], once[j], num(i) as u32, num(j) as u32);
-            if ends.exact {
-                let (ei, ej) = (ends.of[i as usize], ends.of[j as usize]);
-                f.test_by_vertices(s, t, i, j, ei, ej, bound)
-            } else {
-                f.test_by_points(s, t, i, j, bound)
-            }
+            f.test_with(once[i], once[j], num(i) as u32, num(j) as u32, ends, bound)
         };
         let entries = grid.entry_count();
         if grid.candidates() < PARALLEL_SCAN_FROM {

@@ -301,7 +301,7 @@ fn insphere_det<T: Arith>(a: Point3, b: Point3, c: Point3, d: Point3, e: Point3)
 fn orient2d_sign(a: Point2, b: Point2, c: Point2) -> Ordering {
     // Plain `f64` with Shewchuk's first error bound decides all but nearly collinear
     // triples and extreme magnitudes, in a dozen instructions; the range check and
-    // `robust` (which starts with the same test) the rest.
+    // `robust` (with its own float filter) the rest.
     match super::intersection::orient_filtered(a, b, c) {
         1 => return Ordering::Greater,
         -1 => return Ordering::Less,
