@@ -53,6 +53,7 @@ pub mod lp;
 pub mod overlay;
 pub mod range;
 pub mod render;
+mod scratch;
 #[cfg(test)]
 mod testing;
 pub mod triangulate;

@@ -928,3 +928,61 @@ fn extreme_coordinates_are_overlaid_in_bounded_memory() {
         }
     }
 }
+
+/// The operations reuse their temporary arrays from call to call on a thread (the
+/// library's scratch pool): a result must not depend on what ran before it. Inputs of
+/// many sizes (random float stars from 3 to 3 000 vertices, nested diamonds whose
+/// crossings need the rounding check, and a union of many squares), each operation on
+/// each, are computed on fresh threads in three orders (forward, backward, and each
+/// input twice in a row); every result must be the same.
+#[test]
+fn results_do_not_depend_on_earlier_calls_on_the_thread() {
+    let star = |n: usize, cx: f64, seed: u64| {
+        let mut unit = common::units(seed);
+        let ring: Vec<Point2> = (0..n)
+            .map(|i| {
+                let a = std::f64::consts::TAU * i as f64 / n as f64;
+                let r = 0.5 + unit();
+                pt(cx + r * a.cos(), r * a.sin())
+            })
+            .collect();
+        mp(vec![ring])
+    };
+    let mut inputs: Vec<(MultiPolygon, MultiPolygon)> = [3, 7, 40, 300, 3000, 12, 900]
+        .iter()
+        .enumerate()
+        .map(|(k, &n)| {
+            (
+                star(n, 0.0, 2 * k as u64 + 1),
+                star(n, 0.3, 2 * k as u64 + 2),
+            )
+        })
+        .collect();
+    inputs.push((
+        nested_diamonds(&[(0, 1, 5, true)], (0.0, 0.0)),
+        nested_diamonds(&[(1, 1, 1, false), (2, 1, 4, false)], (1.0 / 3.0, 0.5)),
+    ));
+    let squares: Vec<Vec<Point2>> = (0..200)
+        .map(|k| square(f64::from(k % 20) * 0.7, f64::from(k / 20) * 0.7, 1.0))
+        .collect();
+    inputs.push((mp(squares), MultiPolygon::default()));
+    let run = |order: Vec<usize>| {
+        let inputs = inputs.clone();
+        std::thread::spawn(move || {
+            let mut results = vec![Vec::new(); inputs.len()];
+            for k in order {
+                let (a, b) = &inputs[k];
+                let out: Vec<MultiPolygon> =
+                    OPS.iter().map(|&op| boolean(a, b, op).unwrap()).collect();
+                results[k] = out;
+            }
+            results
+        })
+        .join()
+        .expect("a thread of calls")
+    };
+    let n = inputs.len();
+    let forward = run((0..n).collect());
+    assert_eq!(forward, run((0..n).rev().collect()));
+    assert_eq!(forward, run((0..n).flat_map(|k| [k, k]).collect()));
+}

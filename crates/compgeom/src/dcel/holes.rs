@@ -162,6 +162,7 @@ pub(crate) struct Rounded {
     x_exact: bool,
     y_exact: bool,
 }
+crate::scratch::reusable!(Rounded);
 
 impl Rounded {
     /// The rounded point.

@@ -62,6 +62,7 @@ use crate::kernel::{
     compare_xy, orient2d, orient_static, quick_crossing_static, static_orient_bound, Crossing,
     ExactPoint, Orientation, Point2, Segment2, SegmentIntersection,
 };
+use crate::scratch::{self, Scratch};
 use crate::Result;
 use rayon::prelude::*;
 use std::borrow::Cow;
@@ -82,6 +83,7 @@ struct Contact {
     /// For an input point: the vertex (see [`Ends`]) of the segment end it is, or `NONE`.
     end: u32,
 }
+scratch::reusable!(Contact);
 
 /// A segment, its number and its end vertices.
 type Seg = (Segment2, u32, [u32; 2]);
@@ -211,11 +213,11 @@ impl PointTable {
 /// What the scanned pairs contribute.
 #[derive(Default)]
 struct Found {
-    contacts: Vec<Contact>,
+    contacts: Scratch<Contact>,
     /// Pairs overlapping collinearly.
-    overlapping: Vec<(u32, u32)>,
+    overlapping: Scratch<(u32, u32)>,
     /// Pairs of different vertices at one point (only when the [`Ends`] are not exact).
-    same: Vec<(u32, u32)>,
+    same: Scratch<(u32, u32)>,
     /// When not empty, per segment the first segment with its two end vertices when it is
     /// a copy, else `NONE` (see [`Copies`]): its pieces are its first's.
     copies: Vec<u32>,
@@ -228,9 +230,13 @@ impl Found {
     fn for_segments(n: usize, exact: bool) -> Found {
         let n = n.min(1 << 16);
         Found {
-            contacts: Vec::with_capacity(n / 4 + 16),
-            overlapping: Vec::with_capacity(n / 8 + 8),
-            same: Vec::with_capacity(if exact { 0 } else { n / 2 + 16 }),
+            contacts: scratch::with_capacity(n / 4 + 16),
+            overlapping: scratch::with_capacity(n / 8 + 8),
+            same: if exact {
+                Scratch::default()
+            } else {
+                scratch::with_capacity(n / 2 + 16)
+            },
             copies: Vec::new(),
         }
     }
@@ -451,9 +457,9 @@ struct Plan {
     rows: u32,
     cols: u32,
     /// Per segment `[first strip, last strip, bucket of min x, bucket of max x]`.
-    spans: Vec<[u32; 4]>,
+    spans: Scratch<[u32; 4]>,
     /// `start[c]`: the entries in the cells before `c` (`rows · cols + 1` values).
-    start: Vec<u32>,
+    start: Scratch<u32>,
     entries: usize,
     /// The pairs the scan will look at (box tests).
     looked: u64,
@@ -463,10 +469,10 @@ impl Plan {
     /// Count the entries (a segment is an entry in every strip its box spans) and the
     /// pairs the scan would look at, without placing them; `None` beyond `max_entries`.
     /// O(n + cells).
-    fn new(spans: Vec<[u32; 4]>, rows: u32, cols: u32, max_entries: usize) -> Option<Plan> {
+    fn new(spans: Scratch<[u32; 4]>, rows: u32, cols: u32, max_entries: usize) -> Option<Plan> {
         let cells = rows as usize * cols as usize;
         let cols_ = cols as usize;
-        let mut start = vec![0u32; cells + 1];
+        let mut start = scratch::filled(cells + 1, 0u32);
         let mut entries = 0usize;
         let mut looked = 0u64;
         if rows == 1 {
@@ -542,12 +548,12 @@ enum Layout {
 /// are apart in y (columns of map tiles, long horizontal edges).
 struct XSweep {
     /// `[min x, max x, min y, max y]`, in sweep order.
-    boxes: Vec<[f64; 4]>,
-    segs: Vec<Segment2>,
-    ids: Vec<u32>,
-    stop: Vec<u32>,
+    boxes: Scratch<[f64; 4]>,
+    segs: Scratch<Segment2>,
+    ids: Scratch<u32>,
+    stop: Scratch<u32>,
     /// Whether the entry is in the first strip of its segment (empty for one strip).
-    lead: Vec<bool>,
+    lead: Scratch<bool>,
 }
 
 /// The smaller of two finite values (a plain compare: no NaN to care for).
@@ -591,15 +597,15 @@ fn strips_for(e: &[f64; 4], heights: f64, n: usize) -> u32 {
 }
 
 /// `map` over `items` in order, on the rayon pool when `parallel`.
-fn map_vec<T: Sync, U: Send>(
+fn map_scratch<T: Sync, U: scratch::Reusable + Send>(
     items: &[T],
     parallel: bool,
     f: impl Fn(&T) -> U + Sync + Send,
-) -> Vec<U> {
+) -> Scratch<U> {
     if parallel {
-        items.par_iter().map(f).collect()
+        Scratch::from(items.par_iter().map(f).collect::<Vec<U>>())
     } else {
-        items.iter().map(f).collect()
+        scratch::collected(items.iter().map(f))
     }
 }
 
@@ -624,9 +630,9 @@ impl XSweep {
         let picked = || (0..n).map(|i| &sub[if PICK { pick[i] as usize } else { i }]);
         // About one bucket per segment in one strip.
         let xs = Steps::new(e[0], e[1], n as u32);
-        let spans = picked()
-            .map(|s| [0, 0, xs.of(min2(s.a.x, s.b.x)), xs.of(max2(s.a.x, s.b.x))])
-            .collect();
+        let spans = scratch::collected(
+            picked().map(|s| [0, 0, xs.of(min2(s.a.x, s.b.x)), xs.of(max2(s.a.x, s.b.x))]),
+        );
         let mut plan = Plan::new(spans, 1, n as u32, usize::MAX)?;
         let many = plan.looked > STRIPS_FROM_PAIRS_PER_SEGMENT * n as u64;
         let rows = match layout {
@@ -641,13 +647,10 @@ impl XSweep {
             let shift = (rows / 2).max(1).ilog2();
             let cols = ((n as u32 - 1) >> shift) + 1;
             let ys = Steps::new(e[2], e[3], rows);
-            let spans = picked()
-                .zip(&plan.spans)
-                .map(|(s, sp)| {
-                    let (lo, hi) = (min2(s.a.y, s.b.y), max2(s.a.y, s.b.y));
-                    [ys.of(lo), ys.of(hi), sp[2] >> shift, sp[3] >> shift]
-                })
-                .collect();
+            let spans = scratch::collected(picked().zip(plan.spans.iter()).map(|(s, sp)| {
+                let (lo, hi) = (min2(s.a.y, s.b.y), max2(s.a.y, s.b.y));
+                [ys.of(lo), ys.of(hi), sp[2] >> shift, sp[3] >> shift]
+            }));
             // Auto takes the strips only when they copy few boxes and look at fewer pairs.
             let cap = if layout == Layout::Auto {
                 2 * n
@@ -676,9 +679,9 @@ impl XSweep {
         } = plan;
         let cols = cols as usize;
         let strips = rows > 1;
-        let mut ids = vec![0u32; entries];
-        let mut stop = vec![0u32; entries];
-        let mut lead = vec![false; if strips { entries } else { 0 }];
+        let mut ids = scratch::filled(entries, 0u32);
+        let mut stop = scratch::filled(entries, 0u32);
+        let mut lead = scratch::filled(if strips { entries } else { 0 }, false);
         for (i, &[r0, r1, c0, c1]) in spans.iter().enumerate() {
             let i = if PICK { pick[i] as usize } else { i };
             if !strips {
@@ -706,9 +709,9 @@ impl XSweep {
         }
         drop(start);
         let parallel = entries >= PARALLEL_SWEEP_FROM;
-        let segs: Vec<Segment2> = map_vec(&ids, parallel, |&i| sub[i as usize]);
+        let segs = map_scratch(&ids, parallel, |&i| sub[i as usize]);
         // The boxes only in sweep order (built here, not permuted: less memory).
-        let boxes: Vec<[f64; 4]> = map_vec(&ids, parallel, |&i| box_of(&sub[i as usize]));
+        let boxes = map_scratch(&ids, parallel, |&i| box_of(&sub[i as usize]));
         XSweep {
             boxes,
             segs,
@@ -1224,7 +1227,7 @@ fn assemble<const EXACT: bool>(
     // has one. A contact at an input point starts in that vertex's class.
     let nv = ends.count;
     let total = nv + k_count;
-    let mut parent: Vec<u32> = Vec::with_capacity(total);
+    let mut parent: Scratch<u32> = scratch::with_capacity(total);
     if EXACT {
         parent.extend(0..nv as u32);
     } else {
@@ -1251,26 +1254,24 @@ fn assemble<const EXACT: bool>(
         union(&mut parent, u, v);
     }
     // The exact contact points.
-    let exact: Vec<ExactPoint> = contacts
-        .iter()
-        .map(|c| {
-            if c.crossing {
-                ExactPoint::Crossing(Crossing {
-                    s: sub[c.a as usize],
-                    t: sub[c.b as usize],
-                })
-            } else {
-                ExactPoint::Input(c.point)
-            }
-        })
-        .collect();
-    let rounded: Vec<Rounded> = exact
-        .iter()
-        .zip(contacts)
-        .map(|(e, c)| Rounded::of(e, c.point))
-        .collect();
+    let exact: Scratch<ExactPoint> = scratch::collected(contacts.iter().map(|c| {
+        if c.crossing {
+            ExactPoint::Crossing(Crossing {
+                s: sub[c.a as usize],
+                t: sub[c.b as usize],
+            })
+        } else {
+            ExactPoint::Input(c.point)
+        }
+    }));
+    let rounded: Scratch<Rounded> = scratch::collected(
+        exact
+            .iter()
+            .zip(contacts.iter())
+            .map(|(e, c)| Rounded::of(e, c.point)),
+    );
     // The cuts (segment << 32 | contact), grouped by segment.
-    let mut cuts: Vec<u64> = Vec::with_capacity(2 * k_count);
+    let mut cuts: Scratch<u64> = scratch::with_capacity(2 * k_count);
     for (c, contact) in contacts.iter().enumerate() {
         for s in [contact.a, contact.b] {
             if s != NONE {
@@ -1315,7 +1316,7 @@ fn assemble<const EXACT: bool>(
     // not depend on the contacts' order.
     let is_crossing = |c: u32| contacts[c as usize].crossing;
     let pair = |c: u32| (contacts[c as usize].a, contacts[c as usize].b);
-    let mut rep = vec![NONE; k_count];
+    let mut rep = scratch::filled(k_count, NONE);
     for c in 0..k_count as u32 {
         let r = find(&mut parent, nv as u32 + c) as usize;
         if r < nv {
@@ -1342,13 +1343,13 @@ fn assemble<const EXACT: bool>(
             (exact[c], contacts[c].point)
         }
     };
-    let mut shared = vec![false; m];
+    let mut shared = scratch::filled(m, false);
     for &(i, j) in &found.overlapping {
         shared[i as usize] = true;
         shared[j as usize] = true;
     }
     // The pieces, segment by segment; a class gets its vertex at its first use.
-    let mut vertex_of = vec![NONE; total];
+    let mut vertex_of = scratch::filled(total, NONE);
     // (With their nearest f64 points, handed to the tracer, which would round them
     // again.)
     let mut vertices = ExactVertices::with_capacity(m + k_count, k_count);
@@ -1368,12 +1369,13 @@ fn assemble<const EXACT: bool>(
         edges: Vec::with_capacity(m + cuts.len()),
         pairs: Vec::with_capacity(m + cuts.len()),
     };
-    let mut chain: Vec<u32> = Vec::new();
+    let mut chain: Scratch<u32> = scratch::with_capacity(16);
     let mut next_cut = 0;
     let mut prev_end = NONE;
     // With copies: where each segment's pairs start in `pieces.pairs` (one per piece).
     let copy_of = &found.copies;
-    let mut piece_from: Vec<u32> = Vec::with_capacity(if copy_of.is_empty() { 0 } else { m });
+    let mut piece_from: Scratch<u32> =
+        scratch::with_capacity(if copy_of.is_empty() { 0 } else { m });
     for k in 0..m {
         if EXACT && !copy_of.is_empty() {
             piece_from.push(pieces.pairs.len() as u32);

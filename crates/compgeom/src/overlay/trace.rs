@@ -51,6 +51,7 @@ use crate::kernel::{
     compare_xy, orient2d, orient_exact, ExactPoint, MultiPolygon, Orientation, Point2, Polygon,
     Segment2,
 };
+use crate::scratch::{self, Scratch};
 use crate::Result;
 use std::cmp::Ordering;
 
@@ -203,10 +204,10 @@ fn sort_by_keys(list: &mut [u32], dir: impl Fn(u32) -> (f64, f64)) -> bool {
 /// The half-edges leaving each vertex (half-edge `2i` runs `edges[i][0] → edges[i][1]`,
 /// `2i + 1` back) as `(starts, lists)`: vertex `v`'s are `lists[starts[v]..starts[v + 1]]`,
 /// in the order of the edges.
-fn outgoing(edges: &[[u32; 2]], nv: usize) -> (Vec<u32>, Vec<u32>) {
+fn outgoing(edges: &[[u32; 2]], nv: usize) -> (Scratch<u32>, Scratch<u32>) {
     // Counted one place up, so that starts[v + 1] is v's fill cursor and, once filled,
     // v's end, i.e. the start of v + 1 (no copy of the starts to fill with).
-    let mut starts = vec![0u32; nv + 2];
+    let mut starts = scratch::filled(nv + 2, 0u32);
     for [u, v] in edges {
         starts[*u as usize + 2] += 1;
         starts[*v as usize + 2] += 1;
@@ -214,7 +215,7 @@ fn outgoing(edges: &[[u32; 2]], nv: usize) -> (Vec<u32>, Vec<u32>) {
     for v in 0..nv {
         starts[v + 2] += starts[v + 1];
     }
-    let mut lists = vec![0u32; 2 * edges.len()];
+    let mut lists = scratch::filled(2 * edges.len(), 0u32);
     for (i, [u, v]) in edges.iter().enumerate() {
         for h in [2 * i as u32, 2 * i as u32 + 1] {
             let o = if h & 1 == 0 { *u } else { *v } as usize;
@@ -234,8 +235,12 @@ fn outgoing(edges: &[[u32; 2]], nv: usize) -> (Vec<u32>, Vec<u32>) {
 /// way would overlap, and the arrangement has none), read out vertex by vertex. The
 /// slots' buffer is returned too, for the caller's next array of numbers (on big input
 /// fresh pages cost as much as the work).
-fn outgoing_by_axis(edges: &[[u32; 2]], quads: &[u8], nv: usize) -> (Vec<u32>, Vec<u32>, Vec<u32>) {
-    let mut slots = vec![NONE; 4 * nv];
+fn outgoing_by_axis(
+    edges: &[[u32; 2]],
+    quads: &[u8],
+    nv: usize,
+) -> (Scratch<u32>, Scratch<u32>, Scratch<u32>) {
+    let mut slots = scratch::filled(4 * nv, NONE);
     for (i, ([u, v], &q)) in edges.iter().zip(quads).enumerate() {
         let q = q as usize;
         debug_assert!(q < 4);
@@ -244,8 +249,8 @@ fn outgoing_by_axis(edges: &[[u32; 2]], quads: &[u8], nv: usize) -> (Vec<u32>, V
         slots[4 * *u as usize + q] = 2 * i as u32;
         slots[4 * *v as usize + (q ^ 2)] = 2 * i as u32 + 1;
     }
-    let mut starts = Vec::with_capacity(nv + 1);
-    let mut lists = Vec::with_capacity(2 * edges.len());
+    let mut starts = scratch::with_capacity(nv + 1);
+    let mut lists = scratch::with_capacity(2 * edges.len());
     starts.push(0);
     for four in slots.chunks_exact(4) {
         lists.extend(four.iter().copied().filter(|&h| h != NONE));
@@ -380,34 +385,31 @@ fn traced(
     // 3 = −y (counter-clockwise order from +x), else AXIS_NONE.
     let sources: &[crate::dcel::Source] = &flat.sources;
     debug_assert!(flat.src_start.is_empty());
-    let quads: Vec<u8> = sources
-        .iter()
-        .map(|src| {
-            // The axis direction of the segment a → b (a ≠ b: the arrangement has no
-            // zero-length segments), turned for a half-edge running it backwards.
-            let (a, b) = (segs[src.segment].a, segs[src.segment].b);
-            let quad = if a.y == b.y {
-                if b.x > a.x {
-                    0
-                } else {
-                    2
-                }
-            } else if a.x == b.x {
-                if b.y > a.y {
-                    1
-                } else {
-                    3
-                }
+    let quads: Scratch<u8> = scratch::collected(sources.iter().map(|src| {
+        // The axis direction of the segment a → b (a ≠ b: the arrangement has no
+        // zero-length segments), turned for a half-edge running it backwards.
+        let (a, b) = (segs[src.segment].a, segs[src.segment].b);
+        let quad = if a.y == b.y {
+            if b.x > a.x {
+                0
             } else {
-                AXIS_NONE
-            };
-            if quad == AXIS_NONE || src.forward {
-                quad
-            } else {
-                quad ^ 2
+                2
             }
-        })
-        .collect();
+        } else if a.x == b.x {
+            if b.y > a.y {
+                1
+            } else {
+                3
+            }
+        } else {
+            AXIS_NONE
+        };
+        if quad == AXIS_NONE || src.forward {
+            quad
+        } else {
+            quad ^ 2
+        }
+    }));
     let carrier = |h: u32| {
         let e = &sources[(h >> 1) as usize];
         Carrier {
@@ -455,7 +457,7 @@ fn traced(
         outgoing_by_axis(&flat.edges, &quads, nv)
     } else {
         let (starts, lists) = outgoing(&flat.edges, nv);
-        (starts, lists, Vec::new())
+        (starts, lists, scratch::with_capacity(0))
     };
     let slice = |v: usize| (out_start[v] as usize, out_start[v + 1] as usize);
     let mut next = if spare.capacity() >= m {
@@ -464,7 +466,7 @@ fn traced(
         reused.resize(m, 0);
         reused
     } else {
-        vec![0u32; m]
+        scratch::filled(m, 0u32)
     };
     // One list's entries with their half-plane and carrier, each made once (the sort
     // compares them O(k log k) times).
@@ -490,14 +492,14 @@ fn traced(
         }
     }
     // Cycles labelled relative to their component (depth-first across twins).
-    let mut cyc = vec![NONE; m];
+    let mut cyc = scratch::filled(m, NONE);
     // (A connected plane graph has E − V + 2 face cycles; more components add cycles.)
     let cycles_hint = (ne + 2).saturating_sub(nv);
-    let mut label: Vec<(i32, i32)> = Vec::with_capacity(cycles_hint);
-    let mut comp_of: Vec<u32> = Vec::with_capacity(cycles_hint);
+    let mut label: Scratch<(i32, i32)> = scratch::with_capacity(cycles_hint);
+    let mut comp_of: Scratch<u32> = scratch::with_capacity(cycles_hint);
     let mut ncomp = 0u32;
     // (Sized once: at most one entry per edge; growing it was a few reallocations a call.)
-    let mut stack: Vec<(u32, i32, i32)> = Vec::with_capacity(ne);
+    let mut stack: Scratch<(u32, i32, i32)> = scratch::with_capacity(ne);
     for h0 in 0..m as u32 {
         if cyc[h0 as usize] != NONE {
             continue;
@@ -528,9 +530,9 @@ fn traced(
     }
     let ncycles = label.len();
     // Each component's smallest vertex (an input point, see the module docs).
-    let mut low = vec![NONE; ncomp as usize];
+    let mut low = scratch::filled(ncomp as usize, NONE);
     // The smallest point so far beside each (no second look-up of the vertex).
-    let mut low_p = vec![Point2::new(f64::INFINITY, f64::INFINITY); ncomp as usize];
+    let mut low_p = scratch::filled(ncomp as usize, Point2::new(f64::INFINITY, f64::INFINITY));
     for v in 0..nv {
         let (a, b) = slice(v);
         if a == b {
@@ -549,35 +551,29 @@ fn traced(
     drop(low_p);
     // The exterior cycle of each component: left of the out-edge at its smallest vertex
     // just clockwise of direction −x (all out-edges point into (−90°, 90°]).
-    let exterior: Vec<u32> = low
-        .iter()
-        .map(|&v| {
-            let (a, b) = slice(v as usize);
-            let mut best = out[a];
-            for &h in &out[a + 1..b] {
-                let (cb, ch) = (carrier(best), carrier(h));
-                let (hb, hh) = (half(&cb), half(&ch));
-                let later = if hb != hh {
-                    hh == 0
-                } else {
-                    cb.angle_cmp(&ch) == Ordering::Less
-                };
-                if later {
-                    best = h;
-                }
+    let exterior: Scratch<u32> = scratch::collected(low.iter().map(|&v| {
+        let (a, b) = slice(v as usize);
+        let mut best = out[a];
+        for &h in &out[a + 1..b] {
+            let (cb, ch) = (carrier(best), carrier(h));
+            let (hb, hh) = (half(&cb), half(&ch));
+            let later = if hb != hh {
+                hh == 0
+            } else {
+                cb.angle_cmp(&ch) == Ordering::Less
+            };
+            if later {
+                best = h;
             }
-            cyc[best as usize]
-        })
-        .collect();
+        }
+        cyc[best as usize]
+    }));
     // Offsets making the labels absolute: the exterior of a component gets the label of
     // the face around it.
-    let mut offset: Vec<(i32, i32)> = exterior
-        .iter()
-        .map(|&c| {
-            let (wa, wb) = label[c as usize];
-            (-wa, -wb)
-        })
-        .collect();
+    let mut offset: Scratch<(i32, i32)> = scratch::collected(exterior.iter().map(|&c| {
+        let (wa, wb) = label[c as usize];
+        (-wa, -wb)
+    }));
     // The cycle (of another component) whose face holds each component whose smallest
     // vertex is in `queries`, from the hole sweep: its exterior is joined to it in the
     // regions below.
@@ -620,7 +616,7 @@ fn traced(
             None => sweep_around(queries),
         }
     };
-    let mut around: Vec<u32> = vec![NONE; ncomp as usize];
+    let mut around: Scratch<u32> = scratch::filled(ncomp as usize, NONE);
     let mut swept = false;
     // Labels from the face around each component: components in lexicographic order of
     // their smallest vertex, so the face found for one (which lies left of it) is in a
@@ -657,30 +653,28 @@ fn traced(
                 offset[k] = (w[k].0 - ea, w[k].1 - eb);
             }
         } else {
-            around = faces_around(&low);
+            around.copy_from_slice(&faces_around(&low));
             swept = true;
             resolve(&around, &mut offset);
         }
     }
-    let chosen: Vec<bool> = (0..ncycles)
-        .map(|c| {
-            let (wa, wb) = label[c];
-            let o = offset[comp_of[c] as usize];
-            inside(wa + o.0, wb + o.1)
-        })
-        .collect();
+    let chosen: Scratch<bool> = scratch::collected((0..ncycles).map(|c| {
+        let (wa, wb) = label[c];
+        let o = offset[comp_of[c] as usize];
+        inside(wa + o.0, wb + o.1)
+    }));
     // Regions: chosen cycles joined across non-boundary edges and around holes.
-    let mut class: Vec<u32> = (0..ncycles as u32).collect();
-    let mut degree = vec![0u32; nv];
+    let mut class: Scratch<u32> = scratch::collected(0..ncycles as u32);
+    let mut degree = scratch::filled(nv, 0u32);
     // Per half-edge: 0 off the boundary, BOUNDARY when the result is on its left and
     // not on its right, TRACED once its ring is traced (one byte instead of the two
     // look-ups through `cyc` and `chosen`, and of a separate `seen` array).
     const BOUNDARY: u8 = 1;
     const TRACED: u8 = 2;
-    let mut state = vec![0u8; m];
+    let mut state = scratch::filled(m, 0u8);
     // (Boundary half-edges: each gives a ring at most one point.)
     let mut boundary = 0usize;
-    let mut has_boundary = vec![false; ncomp as usize];
+    let mut has_boundary = scratch::filled(ncomp as usize, false);
     for i in 0..ne {
         let (f, g) = (cyc[2 * i], cyc[2 * i + 1]);
         let (cf, cg) = (chosen[f as usize], chosen[g as usize]);
@@ -724,24 +718,24 @@ fn traced(
         }
     }
     let on_boundary = |state: &[u8], h: u32| state[h as usize] != 0;
-    let mut region_of = vec![NONE; ncycles];
+    let mut region_of = scratch::filled(ncycles, NONE);
     // (Rings have three points or more: room for that many rings, up to a few hundred,
     // saves the first reallocations of the lists per ring.)
     let rings_hint = (boundary / 3 + 2).min(256);
     let mut regions: Vec<Region> = Vec::with_capacity(rings_hint);
-    let mut pos = vec![NONE; nv];
+    let mut pos = scratch::filled(nv, NONE);
     // (A boundary cycle has at most one half-edge per edge: sized once, not grown.)
-    let mut cycle: Vec<u32> = Vec::with_capacity(ne);
-    let mut stack: Vec<u32> = Vec::with_capacity(ne);
-    let mut rings: Vec<(usize, usize)> = Vec::with_capacity(rings_hint);
-    let mut flat_rings: Vec<u32> = Vec::with_capacity(ne);
+    let mut cycle: Scratch<u32> = scratch::with_capacity(ne);
+    let mut stack: Scratch<u32> = scratch::with_capacity(ne);
+    let mut rings: Scratch<(usize, usize)> = scratch::with_capacity(rings_hint);
+    let mut flat_rings: Scratch<u32> = scratch::with_capacity(ne);
     // The rounded points (and exactness flags) of one ring's vertices, computed once per
     // ring: a vertex is on few rings, so no cache over all vertices is needed.
-    let mut ring_r: Vec<Rounded> = Vec::with_capacity(boundary);
+    let mut ring_r: Scratch<Rounded> = scratch::with_capacity(boundary);
     // What the check that rounding kept the result valid needs of each kept point (its
     // vertices, whether it moved), and all rings' points.
-    let mut ids: Vec<PointIds> = Vec::with_capacity(boundary);
-    let mut pts: Vec<Point2> = Vec::with_capacity(boundary);
+    let mut ids: Scratch<PointIds> = scratch::with_capacity(boundary);
+    let mut pts: Scratch<Point2> = scratch::with_capacity(boundary);
     // The regions where rounding made three vertices of a ring one point (the check does
     // not follow these: they are always united again).
     let mut three_on_one: Vec<usize> = Vec::new();
@@ -749,7 +743,7 @@ fn traced(
     // a polygon inside one would now overlap that region.
     let mut holes_gone: Vec<(usize, [f64; 4])> = Vec::new();
     // Per ring checked, its region (then the context's polygons).
-    let mut owner: Vec<usize> = Vec::with_capacity(rings_hint);
+    let mut owner: Scratch<usize> = scratch::with_capacity(rings_hint);
     // The context's polygons that may touch or come near this result (the others
     // cannot touch its rings, nor be near them in the check), and their points: where
     // they touch this result's rings.
@@ -762,9 +756,9 @@ fn traced(
     context_points.reserve(points - boundary);
     context_points.extend(near_points().map(|q| (okey(q.x), okey(q.y))));
     let mut rounded = RoundedRings {
-        points: Vec::with_capacity(points),
-        ids: Vec::with_capacity(points),
-        starts: Vec::with_capacity(rings_hint + 1),
+        points: scratch::with_capacity(points),
+        ids: scratch::with_capacity(points),
+        starts: scratch::with_capacity(rings_hint + 1),
         at_nearest: true,
         ..RoundedRings::default()
     };
@@ -956,7 +950,7 @@ fn traced(
         Some(c) => ExactPoint::Input(context_at[c]),
         None => flat.vertices.exact_point(i as usize),
     };
-    let mut suspect = vec![false; regions.len()];
+    let mut suspect = scratch::filled(regions.len(), false);
     let mut context_suspect = vec![false; context.len()];
     for &k in &three_on_one {
         suspect[k] = true;
@@ -1011,7 +1005,7 @@ fn traced(
     }
     let polygons = regions
         .into_iter()
-        .zip(suspect)
+        .zip(suspect.iter().copied())
         .filter_map(|((shell, holes), suspect)| {
             // Each ring from its lowest point (x, then y). The rings start at the rounded
             // point of their exact lowest vertex, which is not always the lowest rounded

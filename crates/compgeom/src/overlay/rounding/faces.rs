@@ -43,7 +43,7 @@ pub(in crate::overlay) fn suspect_faces<V, E, F>(d: &Dcel<V, E, F>) -> Vec<FaceI
 /// (with `mend`) the vertices to move and where.
 fn checked<V, E, F>(d: &Dcel<V, E, F>, mend: bool) -> (Vec<FaceId>, Vec<(usize, Point2)>) {
     let mut r = RoundedRings {
-        starts: vec![0],
+        starts: vec![0].into(),
         ..RoundedRings::default()
     };
     let mut owner: Vec<FaceId> = Vec::new();

@@ -80,6 +80,7 @@
 //! is left are reported.
 
 use crate::kernel::{orient2d, Orientation, Point2};
+use crate::scratch::{self, Scratch};
 use grid::Grid;
 use mend::nudge;
 use std::cmp::Ordering;
@@ -106,6 +107,7 @@ pub(super) struct PointIds {
     pub(super) leave: u32,
     pub(super) moved: bool,
 }
+crate::scratch::reusable!(PointIds);
 
 impl PointIds {
     /// A point of one vertex.
@@ -136,9 +138,9 @@ impl PointIds {
 /// each point.
 #[derive(Default)]
 pub(super) struct RoundedRings {
-    pub(super) points: Vec<Point2>,
-    pub(super) ids: Vec<PointIds>,
-    pub(super) starts: Vec<usize>,
+    pub(super) points: Scratch<Point2>,
+    pub(super) ids: Scratch<PointIds>,
+    pub(super) starts: Scratch<usize>,
     /// How many points [`failing_rings`] moved off their nearest floats.
     pub(super) nudged: usize,
     /// Whether every point was rounded to nearest from its exact vertices (as the
@@ -158,6 +160,7 @@ struct Edge {
     a: u32,
     b: u32,
 }
+scratch::reusable!(Edge, (u32, Edge), [Option<Orientation>; 2]);
 
 impl RoundedRings {
     /// Calls `f` with each ring edge, then each collapsed one (plain loops: the
@@ -251,6 +254,7 @@ struct Box2 {
     y0: f64,
     y1: f64,
 }
+scratch::reusable!(Box2);
 
 impl Box2 {
     /// The bounding box of `a` and `b`.
@@ -365,11 +369,10 @@ pub(super) fn failing_rings(
     let pairs = near_pairs(r);
     let mut sides = ExactSides {
         side: exact_side,
-        known: vec![[None; 2]; pairs.len()],
+        known: scratch::filled(pairs.len(), [None; 2]),
     };
-    let mut failing: Vec<usize> = (0..pairs.len())
-        .filter(|&k| !passes(r, &pairs, k, &mut sides))
-        .collect();
+    let mut failing: Scratch<usize> = scratch::with_capacity(16);
+    failing.extend((0..pairs.len()).filter(|&k| !passes(r, &pairs, k, &mut sides)));
     if let Some(exact) = exact.filter(|_| !failing.is_empty()) {
         nudge(r, &pairs, &mut failing, &mut sides, &exact);
     }
@@ -391,7 +394,7 @@ type Pair = (u32, Edge);
 /// The pairs [`passes`] has to decide: every point against the moved edges near it,
 /// every edge whose ends did not move against the moved points near it (a moved edge
 /// against a point is in the first), each pair once, with boxes that overlap.
-fn near_pairs(r: &RoundedRings) -> Vec<Pair> {
+fn near_pairs(r: &RoundedRings) -> Scratch<Pair> {
     near_pairs_by(r, Search::Auto)
 }
 
@@ -408,7 +411,7 @@ enum Search {
 }
 
 /// [`near_pairs`] by the search `how`: the same pairs either way.
-fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
+fn near_pairs_by(r: &RoundedRings, how: Search) -> Scratch<Pair> {
     let point_box = |i: usize| point_box(r, i);
     let moves = |e: &Edge| r.edge_moved(e);
     let edge_box = |e: &Edge| {
@@ -422,21 +425,19 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Vec<Pair> {
         }
     };
     let moved = r.ids.iter().filter(|id| id.moved).count();
-    let mut moved_points: Vec<usize> = Vec::with_capacity(moved);
+    let mut moved_points: Scratch<usize> = scratch::with_capacity(moved);
     moved_points.extend((0..r.points.len()).filter(|&i| r.moved(i)));
     // (Two ring edges at each moved point, fewer where they share one: sized once,
     // mostly.)
-    let mut moved_edges: Vec<Edge> = Vec::with_capacity(2 * moved_points.len());
+    let mut moved_edges: Scratch<Edge> = scratch::with_capacity(2 * moved_points.len());
     r.for_each_edge(|e| {
         if moves(&e) {
             moved_edges.push(e);
         }
     });
-    let boxes: Vec<Box2> = moved_edges
-        .iter()
-        .map(edge_box)
-        .chain(moved_points.iter().map(|&i| point_box(i)))
-        .collect();
+    let mut boxes: Scratch<Box2> = scratch::with_capacity(moved_edges.len() + moved_points.len());
+    boxes.extend(moved_edges.iter().map(edge_box));
+    boxes.extend(moved_points.iter().map(|&i| point_box(i)));
     // Few moved items against few points and edges (most results of small inputs):
     // every box against every box, cheaper than building the grid.
     // (Points, and edges: a ring has as many as points; collapsed edges left out.)
@@ -468,10 +469,10 @@ fn near_pairs_one_by_one(
     moved_points: &[usize],
     moved_edges: &[Edge],
     boxes: &[Box2],
-) -> Vec<Pair> {
+) -> Scratch<Pair> {
     let moves = |e: &Edge| r.edge_moved(e);
     // (About as many pairs as moved items, mostly.)
-    let mut pairs = Vec::with_capacity(boxes.len());
+    let mut pairs = scratch::with_capacity(boxes.len());
     let (edge_boxes, point_boxes) = boxes.split_at(moved_edges.len());
     let around_edges = edge_boxes.iter().copied().reduce(|a, b| a.union(&b));
     let (edge_strips, point_strips) = (Near::new(edge_boxes), Near::new(point_boxes));
@@ -516,7 +517,7 @@ fn near_pairs_on_grid(
     moved_points: &[usize],
     moved_edges: &[Edge],
     boxes: &[Box2],
-) -> Vec<Pair> {
+) -> Scratch<Pair> {
     let moves = |e: &Edge| r.edge_moved(e);
     let grid = Grid::new(boxes);
     // Each point against the moved edges near it, then each unmoved edge (query
@@ -568,8 +569,8 @@ fn near_pairs_on_grid(
             }
         });
     };
-    let mut stamp = vec![usize::MAX; boxes.len()];
-    let mut pairs = Vec::new();
+    let mut stamp = scratch::filled(boxes.len(), usize::MAX);
+    let mut pairs = scratch::with_capacity(boxes.len());
     for x in 0..points {
         point_pairs(x, &mut stamp, &mut pairs);
     }
@@ -759,7 +760,7 @@ fn apart_along_an_axis(r: &RoundedRings, x: usize, e: &Edge) -> bool {
 /// once: [`nudge`] decides pairs again.
 struct ExactSides<F> {
     side: F,
-    known: Vec<[Option<Orientation>; 2]>,
+    known: Scratch<[Option<Orientation>; 2]>,
 }
 
 #[cfg(test)]
@@ -778,7 +779,7 @@ mod tests {
     /// Rings from (point, vertex id, moved) lists.
     fn rings(list: &[&[(Point2, u32, bool)]]) -> RoundedRings {
         let mut r = RoundedRings {
-            starts: vec![0],
+            starts: vec![0].into(),
             ..RoundedRings::default()
         };
         for ring in list {
@@ -855,7 +856,7 @@ mod tests {
             let kind = round % 7;
             let moved_one_in = [2, 3, 10, 40][int(4) as usize];
             let mut r = RoundedRings {
-                starts: vec![0],
+                starts: vec![0].into(),
                 ..RoundedRings::default()
             };
             let mut id = 0;
@@ -890,8 +891,9 @@ mod tests {
                     let ring_start = *r.starts.last().expect("starts at 0");
                     if ring_start > 0 && int(6) == 0 {
                         let k = int(ring_start as u64) as usize;
-                        r.points.push(r.points[k]);
-                        r.ids.push(r.ids[k]);
+                        let (q, id) = (r.points[k], r.ids[k]);
+                        r.points.push(q);
+                        r.ids.push(id);
                     } else {
                         r.points.push(q);
                         r.ids.push(ids);
@@ -902,7 +904,7 @@ mod tests {
             }
             let want = every_near_pair(&r);
             for how in [Search::OneByOne, Search::Grid] {
-                let mut got: Vec<_> = near_pairs_by(&r, how).into_iter().map(key).collect();
+                let mut got: Vec<_> = near_pairs_by(&r, how).iter().copied().map(key).collect();
                 got.sort_unstable();
                 assert_eq!(got, want, "round {round}, {how:?}");
             }
@@ -997,7 +999,7 @@ mod tests {
             .iter()
             .flat_map(|ring| ring.iter())
             .map(|q| q.0)
-            .eq(r.points);
+            .eq(r.points.iter().copied());
         kept && unmoved
     }
 

@@ -1,0 +1,223 @@
+//! Temporary arrays reused from call to call on the same thread.
+//!
+//! A boolean operation on small polygons makes about eighty short-lived arrays (per
+//! vertex, per half-edge, per cycle, …); on the JTS robustness pairs, allocating and
+//! freeing them was about 7% of the instructions of a call. A [`Scratch`] array is a
+//! `Vec` taken from a per-thread pool and handed back to it when dropped, so the next
+//! call finds its arrays already allocated.
+//!
+//! The pool holds memory between calls, so it is bounded: an array larger than
+//! [`MAX_KEPT_BYTES`] is freed as usual, and each element type keeps at most
+//! [`MAX_KEPT`] arrays per thread (large inputs allocate as before). An array is always
+//! handed out cleared and filled as asked: nothing of an earlier call shows.
+//! Where the pool cannot be reached (a thread being torn down), arrays are allocated
+//! and freed as usual.
+use std::cell::RefCell;
+use std::ops::{Deref, DerefMut};
+use std::thread::LocalKey;
+
+/// Arrays above this many bytes are not kept.
+pub(crate) const MAX_KEPT_BYTES: usize = 64 * 1024;
+
+/// At most this many arrays of one element type are kept per thread.
+pub(crate) const MAX_KEPT: usize = 16;
+
+/// The arrays of one element type kept by this thread.
+pub(crate) type Pool<T> = RefCell<Vec<Vec<T>>>;
+
+/// An element type with a per-thread pool of arrays.
+pub(crate) trait Reusable: Copy + 'static {
+    /// This thread's pool of arrays of `Self`.
+    fn pool() -> &'static LocalKey<Pool<Self>>;
+}
+
+/// A `Vec<T>` that goes back to this thread's pool when dropped.
+pub(crate) struct Scratch<T: Reusable> {
+    vec: Vec<T>,
+}
+
+/// An empty array with room for at least `capacity` elements.
+pub(crate) fn with_capacity<T: Reusable>(capacity: usize) -> Scratch<T> {
+    // The last array handed back: the calls of one operation take and hand back their
+    // arrays in the same order each time, so a site mostly gets the array it had the
+    // last time, already large enough (a best fit among the kept ones cost more than it
+    // saved).
+    if capacity > MAX_KEPT_BYTES / std::mem::size_of::<T>().max(1) {
+        // (Too large to be kept: the pool's arrays stay for the small ones.)
+        return Scratch {
+            vec: Vec::with_capacity(capacity),
+        };
+    }
+    let kept = T::pool()
+        .try_with(|pool| pool.borrow_mut().pop())
+        .ok()
+        .flatten();
+    let mut vec = kept.unwrap_or_default();
+    vec.clear();
+    vec.reserve(capacity);
+    Scratch { vec }
+}
+
+/// An array of `len` copies of `value`.
+pub(crate) fn filled<T: Reusable>(len: usize, value: T) -> Scratch<T> {
+    let mut s = with_capacity(len);
+    s.vec.resize(len, value);
+    s
+}
+
+/// An array of the items of `items`.
+pub(crate) fn collected<T: Reusable>(items: impl ExactSizeIterator<Item = T>) -> Scratch<T> {
+    let mut s = with_capacity(items.len());
+    s.vec.extend(items);
+    s
+}
+
+impl<T: Reusable> Drop for Scratch<T> {
+    fn drop(&mut self) {
+        let vec = std::mem::take(&mut self.vec);
+        if vec.capacity() == 0 || vec.capacity() * std::mem::size_of::<T>() > MAX_KEPT_BYTES {
+            return;
+        }
+        // (Past the thread's teardown the array is simply freed.)
+        let _ = T::pool().try_with(|pool| {
+            let mut pool = pool.borrow_mut();
+            if pool.len() < MAX_KEPT {
+                pool.push(vec);
+            }
+        });
+    }
+}
+
+impl<T: Reusable> Deref for Scratch<T> {
+    type Target = Vec<T>;
+    fn deref(&self) -> &Vec<T> {
+        &self.vec
+    }
+}
+
+impl<T: Reusable> DerefMut for Scratch<T> {
+    fn deref_mut(&mut self) -> &mut Vec<T> {
+        &mut self.vec
+    }
+}
+
+impl<T: Reusable> Default for Scratch<T> {
+    /// An empty array, not taken from the pool (it goes to the pool if it grows).
+    fn default() -> Scratch<T> {
+        Scratch { vec: Vec::new() }
+    }
+}
+
+impl<T: Reusable> From<Vec<T>> for Scratch<T> {
+    /// `vec`, handed to the pool when dropped.
+    fn from(vec: Vec<T>) -> Scratch<T> {
+        Scratch { vec }
+    }
+}
+
+impl<'a, T: Reusable> IntoIterator for &'a Scratch<T> {
+    type Item = &'a T;
+    type IntoIter = std::slice::Iter<'a, T>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.vec.iter()
+    }
+}
+
+impl<'a, T: Reusable> IntoIterator for &'a mut Scratch<T> {
+    type Item = &'a mut T;
+    type IntoIter = std::slice::IterMut<'a, T>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.vec.iter_mut()
+    }
+}
+
+/// A pool per element type (a generic `thread_local!` is not possible): `reusable!(T, …)`
+/// next to the type's definition.
+macro_rules! reusable {
+    ($($t:ty),* $(,)?) => {$(
+        impl $crate::scratch::Reusable for $t {
+            fn pool() -> &'static ::std::thread::LocalKey<$crate::scratch::Pool<$t>> {
+                ::std::thread_local! {
+                    static POOL: $crate::scratch::Pool<$t> =
+                        const { ::std::cell::RefCell::new(Vec::new()) };
+                }
+                &POOL
+            }
+        }
+    )*};
+}
+pub(crate) use reusable;
+
+reusable!(
+    crate::kernel::Point2,
+    crate::kernel::Segment2,
+    crate::kernel::ExactPoint,
+    u64,
+    [u32; 4],
+    [f64; 4],
+    u8,
+    bool,
+    u32,
+    usize,
+    (i32, i32),
+    (u32, u32),
+    (usize, usize),
+    (u32, i32, i32),
+);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arrays_come_back_cleared_and_filled_as_asked() {
+        {
+            let mut a = filled(100, 7u32);
+            a[3] = 9;
+            a.push(11);
+        }
+        let a = filled(50, 1u32);
+        assert_eq!(a.len(), 50);
+        assert!(a.iter().all(|&x| x == 1));
+        let b = with_capacity::<u32>(10);
+        assert!(b.is_empty());
+        assert!(b.capacity() >= 10);
+        let c = collected([4u32, 5, 6].into_iter());
+        assert_eq!(&c[..], &[4, 5, 6]);
+    }
+
+    #[test]
+    fn the_last_array_handed_back_is_reused_and_the_pool_stays_bounded() {
+        // (A thread of its own: an empty pool to start from.)
+        std::thread::spawn(|| {
+            let a = with_capacity::<u8>(1000);
+            let at = a.as_ptr();
+            drop(a);
+            // The array handed back, not a new one (its room kept).
+            let b = with_capacity::<u8>(10);
+            assert_eq!(b.as_ptr(), at);
+            assert!(b.capacity() >= 1000);
+            drop(b);
+            // Too large to keep: not taken from the pool, not handed to it.
+            let large = with_capacity::<u8>(MAX_KEPT_BYTES + 1);
+            drop(large);
+            assert_eq!(u8::pool().with(|pool| pool.borrow().len()), 1);
+            let grown = {
+                let mut c = with_capacity::<u8>(10);
+                c.extend(std::iter::repeat_n(0, MAX_KEPT_BYTES + 1));
+                c
+            };
+            drop(grown);
+            assert_eq!(u8::pool().with(|pool| pool.borrow().len()), 0);
+            let kept: Vec<_> = (0..3 * MAX_KEPT).map(|_| with_capacity::<u8>(8)).collect();
+            drop(kept);
+            u8::pool().with(|pool| {
+                let pool = pool.borrow();
+                assert_eq!(pool.len(), MAX_KEPT);
+                assert!(pool.iter().all(|v| v.capacity() <= MAX_KEPT_BYTES));
+            });
+        })
+        .join()
+        .expect("the test thread");
+    }
+}
