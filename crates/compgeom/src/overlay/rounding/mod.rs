@@ -83,12 +83,14 @@ use crate::kernel::{orient2d, Orientation, Point2};
 use crate::scratch::{self, Scratch};
 use grid::Grid;
 use mend::nudge;
+use sieve::Sieve;
 use std::cmp::Ordering;
 use strips::Strips;
 
 mod faces;
 mod grid;
 mod mend;
+mod sieve;
 mod strips;
 
 pub(super) use faces::{mend_faces, suspect_faces};
@@ -163,22 +165,34 @@ struct Edge {
 scratch::reusable!(Edge, (u32, Edge), [Option<Orientation>; 2]);
 
 impl RoundedRings {
-    /// Calls `f` with each ring edge, then each collapsed one (plain loops: the
-    /// near-pair search walks every edge twice).
-    fn for_each_edge(&self, mut f: impl FnMut(Edge)) {
-        for w in self.starts.windows(2) {
-            let (s, e) = (w[0], w[1]);
-            for i in s..e {
-                let j = if i + 1 == e { s } else { i + 1 };
-                f(Edge {
-                    i,
-                    j,
-                    a: self.ids[i].leave,
-                    b: self.ids[j].enter,
-                });
-            }
+    /// The ring edge from point `i` to point `j`.
+    fn ring_edge(&self, i: usize, j: usize) -> Edge {
+        Edge {
+            i,
+            j,
+            a: self.ids[i].leave,
+            b: self.ids[j].enter,
         }
-        for (i, id) in self.ids.iter().enumerate() {
+    }
+
+    /// Calls `f` with each edge with a moved end, from `moved` (the moved points, in
+    /// increasing order): the ring edges at each (each edge once: from its start when
+    /// that moved, else from its end) and the collapsed edge a point stands for (such a
+    /// point is moved). O(moved + rings): the other edges are not looked at.
+    fn for_each_moved_edge(&self, moved: &[usize], mut f: impl FnMut(Edge)) {
+        let mut ring = 0;
+        for &i in moved {
+            while self.starts[ring + 1] <= i {
+                ring += 1;
+            }
+            let (s, e) = (self.starts[ring], self.starts[ring + 1]);
+            let prev = if i == s { e - 1 } else { i - 1 };
+            let next = if i + 1 == e { s } else { i + 1 };
+            if !self.moved(prev) {
+                f(self.ring_edge(prev, i));
+            }
+            f(self.ring_edge(i, next));
+            let id = self.ids[i];
             if id.enter != id.leave {
                 f(Edge {
                     i,
@@ -186,6 +200,20 @@ impl RoundedRings {
                     a: id.enter,
                     b: id.leave,
                 });
+            }
+        }
+    }
+
+    /// Calls `f(i, j)` for each ring edge from point `i` to point `j` neither of which
+    /// moved (collapsed edges are moved ones).
+    fn for_each_unmoved_edge(&self, mut f: impl FnMut(usize, usize)) {
+        for w in self.starts.windows(2) {
+            let (s, e) = (w[0], w[1]);
+            for i in s..e {
+                let j = if i + 1 == e { s } else { i + 1 };
+                if !self.moved(i) && !self.moved(j) {
+                    f(i, j);
+                }
             }
         }
     }
@@ -430,11 +458,7 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Scratch<Pair> {
     // (Two ring edges at each moved point, fewer where they share one: sized once,
     // mostly.)
     let mut moved_edges: Scratch<Edge> = scratch::with_capacity(2 * moved_points.len());
-    r.for_each_edge(|e| {
-        if moves(&e) {
-            moved_edges.push(e);
-        }
-    });
+    r.for_each_moved_edge(&moved_points, |e| moved_edges.push(e));
     let mut boxes: Scratch<Box2> = scratch::with_capacity(moved_edges.len() + moved_points.len());
     boxes.extend(moved_edges.iter().map(edge_box));
     boxes.extend(moved_points.iter().map(|&i| point_box(i)));
@@ -470,7 +494,6 @@ fn near_pairs_one_by_one(
     moved_edges: &[Edge],
     boxes: &[Box2],
 ) -> Scratch<Pair> {
-    let moves = |e: &Edge| r.edge_moved(e);
     // (About as many pairs as moved items, mostly.)
     let mut pairs = scratch::with_capacity(boxes.len());
     let (edge_boxes, point_boxes) = boxes.split_at(moved_edges.len());
@@ -493,14 +516,12 @@ fn near_pairs_one_by_one(
         });
     }
     let around_points = point_boxes.iter().copied().reduce(|a, b| a.union(&b));
-    r.for_each_edge(|e| {
-        if moves(&e) {
-            return;
-        }
-        let b = Box2::of(r.points[e.i], r.points[e.j]);
+    r.for_each_unmoved_edge(|i, j| {
+        let b = Box2::of(r.points[i], r.points[j]);
         if !around_points.is_some_and(|a| a.overlaps(&b)) {
             return;
         }
+        let e = r.ring_edge(i, j);
         point_strips.for_each_overlapping(&b, |k| {
             if !r.is_end(moved_points[k], &e) {
                 pairs.push((moved_points[k] as u32, e));
@@ -518,7 +539,6 @@ fn near_pairs_on_grid(
     moved_edges: &[Edge],
     boxes: &[Box2],
 ) -> Scratch<Pair> {
-    let moves = |e: &Edge| r.edge_moved(e);
     let grid = Grid::new(boxes);
     // Each point against the moved edges near it, then each unmoved edge (query
     // `points + k` for the k-th) against the moved points near it; `stamp` as in
@@ -543,25 +563,12 @@ fn near_pairs_on_grid(
             }
         });
     };
-    // (Their ends only, sized once: on large results a list of whole edges, grown, was
-    // among the largest arrays at the peak.)
-    let mut unmoved: Vec<[u32; 2]> = Vec::with_capacity(r.points.len());
-    r.for_each_edge(|e| {
-        if !moves(&e) {
-            // (A point standing for two vertices is moved: see `PointIds::merge`.)
-            debug_assert!(e.i != e.j, "a collapsed edge that did not move");
-            unmoved.push([e.i as u32, e.j as u32]);
-        }
-    });
     let points = r.points.len();
-    let edge_pairs = |k: usize, stamp: &mut [usize], pairs: &mut Vec<Pair>| {
-        let [i, j] = unmoved[k].map(|v| v as usize);
-        // (An unmoved edge is a ring edge: collapsed ones moved.)
-        let (a, b) = (r.ids[i].leave, r.ids[j].enter);
-        let e = Edge { i, j, a, b };
-        let b = Box2::of(r.points[e.i], r.points[e.j]);
-        grid.visit(&b, points + k, stamp, |item| {
-            if item >= moved_edges.len() && boxes[item].overlaps(&b) {
+    // The unmoved ring edge from point i to j, whose box is `b` (query `points + i`).
+    let edge_pairs = |i: usize, j: usize, b: &Box2, stamp: &mut [usize], pairs: &mut Vec<Pair>| {
+        let e = r.ring_edge(i, j);
+        grid.visit(b, points + i, stamp, |item| {
+            if item >= moved_edges.len() && boxes[item].overlaps(b) {
                 let x = moved_points[item - moved_edges.len()];
                 if !r.is_end(x, &e) {
                     pairs.push((x as u32, e));
@@ -571,12 +578,20 @@ fn near_pairs_on_grid(
     };
     let mut stamp = scratch::filled(boxes.len(), usize::MAX);
     let mut pairs = scratch::with_capacity(boxes.len());
+    // (Most points and edges of a large result are nowhere near a moved item: the
+    // sieve passes over those in a few instructions.)
+    let sieve = Sieve::new(boxes, points);
     for x in 0..points {
-        point_pairs(x, &mut stamp, &mut pairs);
+        if sieve.as_ref().map_or(true, |s| s.near_point(r.points[x])) {
+            point_pairs(x, &mut stamp, &mut pairs);
+        }
     }
-    for k in 0..unmoved.len() {
-        edge_pairs(k, &mut stamp, &mut pairs);
-    }
+    r.for_each_unmoved_edge(|i, j| {
+        let b = Box2::of(r.points[i], r.points[j]);
+        if sieve.as_ref().map_or(true, |s| s.near_box(&b)) {
+            edge_pairs(i, j, &b, &mut stamp, &mut pairs);
+        }
+    });
     pairs
 }
 
@@ -640,15 +655,20 @@ impl<'a> Near<'a> {
 /// the grid: one by one it counted 0.8% more.
 const BRUTE_FORCE_TESTS: usize = 262_144;
 
+/// The relative and absolute terms of [`rough_box`]'s half sizes: 2⁻⁴⁸ and 2⁻¹⁰⁶⁸.
+const REL_ROUGH: (f64, f64) = (
+    1.0 / (1u64 << 48) as f64,
+    f64::MIN_POSITIVE / (1u64 << 46) as f64,
+);
+
 /// A box around `c` holding its `point_box` in `near_pairs` (half sizes 4·reach + 2
 /// gaps, reach at most a gap, rounded outward by a float: at most 7 gaps per axis,
 /// and a gap is at most 2⁻⁵² |v|, or 2⁻¹⁰⁷⁴ below the normal range), from a few float
 /// operations: half sizes 2⁻⁴⁸ |v| + 2⁻¹⁰⁶⁸, whose own rounding is far below the
 /// margin.
 fn rough_box(c: Point2) -> Box2 {
-    const REL: f64 = 1.0 / (1u64 << 48) as f64;
-    const ABS: f64 = f64::MIN_POSITIVE / (1u64 << 46) as f64;
-    let (hx, hy) = (c.x.abs() * REL + ABS, c.y.abs() * REL + ABS);
+    let (rel, abs) = REL_ROUGH;
+    let (hx, hy) = (c.x.abs() * rel + abs, c.y.abs() * rel + abs);
     Box2 {
         x0: c.x - hx,
         x1: c.x + hx,
