@@ -673,6 +673,37 @@
 //! 0.72–0.75 / 0.64–0.72, water 0.68–0.91 / 0.67–0.90, JTS×52 intersection 1.09–1.10 /
 //! 1.06–1.08, union 1.09–1.13 / 1.06–1.08, difference 1.11–1.12 / 1.06, xor 1.50–1.52
 //! / 1.43, dissolve 1.21–1.22 / 1.12–1.14.
+//!
+//! Session 43. Two changes. (1) The boolean path's temporary arrays come from a
+//! per-thread pool (`compgeom::scratch`: at most 16 arrays of up to 64 KiB per element
+//! type are kept): on the JTS pairs 79 → 47 allocations a call; 98% of the pool's takes
+//! find an array large enough, because a call takes and hands back its arrays in the
+//! same order each time. Taking the nudge's arrays from it too broke that order (+0.9%
+//! on the JTS xor), and so did a fallback search for a larger kept array (+0.4%): both
+//! dropped. (2) The rounding check's near-pair search on the grid first asks a bitmap
+//! of the moved items' boxes, widened by twice the rough box of a point (so a point is
+//! looked up by its centre's cell), whether a point or edge can be near any; it is made
+//! only where there is at most one moved item per four points (water's results have
+//! one per two, half their points near one: a sieve there cost +3%, and a sieve
+//! dropped after 512 queries that kept a quarter still +0.5%). The moved edges now come
+//! from the moved points (O(moved + rings), not a walk over every edge), and the
+//! unmoved edges are walked without a list. Star 1e4 xor: 24 moved items among 40 000
+//! queries; the search went from 5.96 M to 4.12 M instructions a call with the sieve
+//! and to 2.64 M with both. Session start to end (inclusive `boolean`, 5 calls):
+//! JTS×52 intersection 55.52 M → 53.52 M (−3.6%), union 64.03 M → 60.46 M (−5.6%),
+//! difference 58.74 M → 56.29 M (−4.2%), xor 86.62 M → 82.16 M (−5.2%); dissolve
+//! 25.65 M → 24.43 M (−4.7%); water intersection 451.99 M → 442.72 M (−2.1%), xor
+//! 564.63 M → 550.83 M (−2.4%); stars 1e3 union −3.4%, xor −5.3%; stars 1e4 union
+//! −4.1%, xor −10%; squares 1e4 −1.5%. Also tried: a grid of 8 cells per item instead
+//! of 2 for the near-pair search (dissolve −0.4%, water xor +5%). Three full tables at
+//! the end, alternating with the session's starting build (/ i_overlay, / geo; start in
+//! brackets): JTS×52 intersection 1.02–1.03 / 1.01–1.02 (1.07–1.12 / 1.03–1.10), union
+//! 1.02 / 1.01–1.02 (1.10–1.15 / 1.08–1.11), difference 1.02–1.05 / 1.01 (1.07–1.17 /
+//! 1.07–1.14), xor 1.38–1.39 / 1.29–1.32 (1.47–1.50 / 1.39–1.42); dissolve 1.17–1.19 /
+//! 1.07–1.09 (1.22–1.23 / 1.13–1.15); water 0.79–0.95 / 0.76–0.97; squares 0.57–0.69 /
+//! 0.57–0.70; stars 1e3 0.65–0.77 / 0.66–0.78, 1e5 0.50–0.60 / 0.48–0.59, 1e4
+//! 0.55–0.78 / 0.55–0.80 but for one round of the difference at 0.95 / 1.11 (the 1e4
+//! rows are the noisiest here: 0.77–0.95 / 0.79–0.97 at the start).
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};

@@ -8,10 +8,19 @@
 //!
 //! The pool holds memory between calls, so it is bounded: an array larger than
 //! [`MAX_KEPT_BYTES`] is freed as usual, and each element type keeps at most
-//! [`MAX_KEPT`] arrays per thread (large inputs allocate as before). An array is always
-//! handed out cleared and filled as asked: nothing of an earlier call shows.
-//! Where the pool cannot be reached (a thread being torn down), arrays are allocated
-//! and freed as usual.
+//! [`MAX_KEPT`] arrays per thread (large inputs allocate as before). Blocks that small
+//! are below the allocator's mapping threshold, so a freed one would mostly stay in the
+//! process's heap anyway. An array is always handed out cleared and filled as asked:
+//! nothing of an earlier call shows (a test runs the same calls in different orders on
+//! fresh threads and compares every result). Arrays dropped on another thread (the
+//! rayon pool) go to that thread's pool. Where the pool cannot be reached (a thread
+//! being torn down), arrays are allocated and freed as usual.
+//!
+//! Measured on the bench's JTS pairs: 79 → 47 allocations a call, 2–3% fewer
+//! instructions, about 6% less time (the allocator's own work and the counting
+//! allocator's atomics). Which sites take from it is a matter of measure: the nudge of
+//! the rounding check, which runs in some calls only, made the others' arrays come back
+//! in the wrong sizes (+0.9% instructions on the JTS xor) and keeps plain vectors.
 use std::cell::RefCell;
 use std::ops::{Deref, DerefMut};
 use std::thread::LocalKey;
