@@ -69,6 +69,13 @@ pub(crate) fn with_capacity<T: Reusable>(capacity: usize) -> Scratch<T> {
 
 /// An array of `len` copies of `value`.
 pub(crate) fn filled<T: Reusable>(len: usize, value: T) -> Scratch<T> {
+    if len > MAX_KEPT_BYTES / std::mem::size_of::<T>().max(1) {
+        // (Too large to be kept, as in `with_capacity`; `vec!` of zeros gets fresh pages
+        // from the allocator already zeroed, where a resize would write every one.)
+        return Scratch {
+            vec: vec![value; len],
+        };
+    }
     let mut s = with_capacity(len);
     s.vec.resize(len, value);
     s

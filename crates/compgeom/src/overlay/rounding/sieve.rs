@@ -79,9 +79,12 @@ impl Sieve {
         };
         let (w, h) = (extent.x1 - extent.x0, extent.y1 - extent.y0);
         let target = (CELLS_PER_ITEM * boxes.len()) as f64;
-        // Columns and rows in proportion to the sides (both positive: `pad` is).
+        // Columns and rows in proportion to the sides (both positive: `pad` is), from
+        // their ratio: `target · w` and `target · h` can both overflow at large
+        // coordinates, which gave both axes the cap and (16 n)² cells.
+        let ratio = w / h;
         let along = |v: f64| (v.sqrt().ceil() as usize).clamp(1, CELLS_PER_ITEM * boxes.len());
-        let (nx, ny) = (along(target * w / h), along(target * h / w));
+        let (nx, ny) = (along(target * ratio), along(target / ratio));
         let xs = Steps::new(extent.x0, extent.x1, nx as u32);
         let ys = Steps::new(extent.y0, extent.y1, ny as u32);
         let mut bits = scratch::filled((nx * ny).div_ceil(64), 0u64);
@@ -208,5 +211,35 @@ mod tests {
             }
         }
         assert!(built > 2000, "{built} sieves");
+    }
+
+    /// About 16 cells per item at every scale, in both axes. (Sized from the product of
+    /// the count and each side, the sieve of 1 000 boxes spread over ±1e306 had
+    /// 256 · 1 000² cells: both products overflowed and both axes took their cap.)
+    #[test]
+    fn cells_stay_about_sixteen_per_item_at_every_scale() {
+        let mut unit = crate::testing::units(0x0051_57e7);
+        for scale in [1.0, 1e306, 4e307, 1e-300, 3e-320] {
+            for (sx, sy) in [(1.0, 1.0), (1.0, 1e-6), (1e-6, 1.0)] {
+                let n = 1000;
+                let boxes: Vec<Box2> = (0..n)
+                    .map(|_| {
+                        let c = Point2::new(
+                            (2.0 * unit() - 1.0) * scale * sx,
+                            (2.0 * unit() - 1.0) * scale * sy,
+                        );
+                        Box2::of(c, c)
+                    })
+                    .collect();
+                let Some(sieve) = Sieve::new(&boxes, 4 * n) else {
+                    continue;
+                };
+                let cells = sieve.bits.len() * 64;
+                assert!(
+                    cells <= 20 * n + 64,
+                    "{scale:e} ({sx}, {sy}): {cells} cells"
+                );
+            }
+        }
     }
 }
