@@ -695,15 +695,19 @@
 //! 25.65 M → 24.43 M (−4.7%); water intersection 451.99 M → 442.72 M (−2.1%), xor
 //! 564.63 M → 550.83 M (−2.4%); stars 1e3 union −3.4%, xor −5.3%; stars 1e4 union
 //! −4.1%, xor −10%; squares 1e4 −1.5%. Also tried: a grid of 8 cells per item instead
-//! of 2 for the near-pair search (dissolve −0.4%, water xor +5%). Three full tables at
-//! the end, alternating with the session's starting build (/ i_overlay, / geo; start in
-//! brackets): JTS×52 intersection 1.02–1.03 / 1.01–1.02 (1.07–1.12 / 1.03–1.10), union
-//! 1.02 / 1.01–1.02 (1.10–1.15 / 1.08–1.11), difference 1.02–1.05 / 1.01 (1.07–1.17 /
-//! 1.07–1.14), xor 1.38–1.39 / 1.29–1.32 (1.47–1.50 / 1.39–1.42); dissolve 1.17–1.19 /
-//! 1.07–1.09 (1.22–1.23 / 1.13–1.15); water 0.79–0.95 / 0.76–0.97; squares 0.57–0.69 /
-//! 0.57–0.70; stars 1e3 0.65–0.77 / 0.66–0.78, 1e5 0.50–0.60 / 0.48–0.59, 1e4
-//! 0.55–0.78 / 0.55–0.80 but for one round of the difference at 0.95 / 1.11 (the 1e4
-//! rows are the noisiest here: 0.77–0.95 / 0.79–0.97 at the start).
+//! of 2 for the near-pair search (dissolve −0.4%, water xor +5%). Review follow-ups:
+//! the sieve's columns and rows come from the ratio of its sides (near 1e306 both
+//! products with the count overflowed: 256 n² cells, 288 MB for 1 000 moved points);
+//! zero-filled arrays too large for the pool come from `vec!` again (zeroed pages, no
+//! write pass: squares 1e4 −1.6%, dissolve −0.8%). Three full tables at the end,
+//! alternating with the session's starting build (/ i_overlay, / geo; start in
+//! brackets): JTS×52 intersection 1.02 / 1.00–1.02 (1.06–1.09 / 1.07), union 1.01–1.06
+//! / 0.99–1.01 (1.09–1.14 / 1.08–1.09), difference 1.02–1.06 / 1.01–1.02 (1.08–1.11 /
+//! 1.06–1.07), xor 1.38–1.41 / 1.32–1.34 (1.47–1.50 / 1.40–1.43); dissolve 1.16–1.21 /
+//! 1.06–1.11 (1.22–1.24 / 1.12–1.16); water 0.69–0.94 / 0.69–0.90 (0.69–0.97 /
+//! 0.69–0.92); squares 0.69–0.78 / 0.73–0.84 (0.69–0.76 / 0.66–0.73); stars 1e3
+//! 0.64–0.79 / 0.65–0.79 (0.71–0.81 / 0.75–0.85), 1e4 0.51–0.59 / 0.51–0.56 (0.55–0.67
+//! / 0.52–0.71), 1e5 0.50–0.68 / 0.48–0.64 (0.57–0.65 / 0.56–0.65).
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
