@@ -45,13 +45,18 @@ pub(crate) struct Scratch<T: Reusable> {
     vec: Vec<T>,
 }
 
+/// Whether an array with room for `capacity` elements of `T` is small enough to keep.
+fn keepable<T>(capacity: usize) -> bool {
+    capacity <= MAX_KEPT_BYTES / std::mem::size_of::<T>().max(1)
+}
+
 /// An empty array with room for at least `capacity` elements.
 pub(crate) fn with_capacity<T: Reusable>(capacity: usize) -> Scratch<T> {
     // The last array handed back: the calls of one operation take and hand back their
     // arrays in the same order each time, so a site mostly gets the array it had the
     // last time, already large enough (a best fit among the kept ones cost more than it
     // saved).
-    if capacity > MAX_KEPT_BYTES / std::mem::size_of::<T>().max(1) {
+    if !keepable::<T>(capacity) {
         // (Too large to be kept: the pool's arrays stay for the small ones.)
         return Scratch {
             vec: Vec::with_capacity(capacity),
@@ -69,7 +74,7 @@ pub(crate) fn with_capacity<T: Reusable>(capacity: usize) -> Scratch<T> {
 
 /// An array of `len` copies of `value`.
 pub(crate) fn filled<T: Reusable>(len: usize, value: T) -> Scratch<T> {
-    if len > MAX_KEPT_BYTES / std::mem::size_of::<T>().max(1) {
+    if !keepable::<T>(len) {
         // (Too large to be kept, as in `with_capacity`; `vec!` of zeros gets fresh pages
         // from the allocator already zeroed, where a resize would write every one.)
         return Scratch {
@@ -91,7 +96,7 @@ pub(crate) fn collected<T: Reusable>(items: impl ExactSizeIterator<Item = T>) ->
 impl<T: Reusable> Drop for Scratch<T> {
     fn drop(&mut self) {
         let vec = std::mem::take(&mut self.vec);
-        if vec.capacity() == 0 || vec.capacity() * std::mem::size_of::<T>() > MAX_KEPT_BYTES {
+        if vec.capacity() == 0 || !keepable::<T>(vec.capacity()) {
             return;
         }
         // (Past the thread's teardown the array is simply freed.)

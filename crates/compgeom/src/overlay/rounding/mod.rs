@@ -541,7 +541,7 @@ fn near_pairs_on_grid(
 ) -> Scratch<Pair> {
     let grid = Grid::new(boxes);
     // Each point against the moved edges near it, then each unmoved edge (query
-    // `points + k` for the k-th) against the moved points near it; `stamp` as in
+    // `points + i` for the one from point i) against the moved points near it; `stamp` as in
     // [`Grid::visit`].
     // (The cells of the rough box, which holds the precise one; the precise box only
     // where an edge's box meets the rough one: most points on a large result have moved
