@@ -51,7 +51,9 @@ pub(crate) use build::push_ring_segments;
 pub use build::{polygon_segments, Arrangement, Carrier, PolygonLabel, Source};
 pub use export::exact_coords;
 pub(crate) use flat::{rounded_away, Flat};
-pub(crate) use holes::{compare_xy_filtered, compare_y_filtered, faces_left_of, side, Rounded};
+pub(crate) use holes::{
+    compare_xy_filtered, compare_xy_filtered_by, compare_y_filtered, faces_left_of, side, Rounded,
+};
 
 use crate::kernel::{ExactPoint, Point2};
 

@@ -44,7 +44,9 @@
 //! and a few tests per component on map-like data) or the hole sweep.
 use super::boolean::{oriented_segments, FillRule};
 use super::rounding::{down, failing_rings, up, ExactPoints, PointIds, RoundedRings, REPAIRS};
-use crate::dcel::{compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounded};
+use crate::dcel::{
+    compare_xy_filtered_by, compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounded,
+};
 use crate::kernel::arith::ordered_key as okey;
 use crate::kernel::steps::Steps;
 use crate::kernel::{
@@ -987,9 +989,17 @@ fn traced(
     // rounded onto one point: which two of them the tracing merged depends on where it
     // started the ring, and the points moved should not (those results are united
     // again anyway).
+    // (The order is decided on the rounded points where they differ: rounding to
+    // nearest is monotone.)
+    let rounded_of = |i: u32| match (i as usize).checked_sub(nv) {
+        Some(c) => Rounded::input(context_at[c]),
+        None => flat.vertices.rounded(i as usize),
+    };
     let exact_points = three_on_one.is_empty().then_some(ExactPoints {
         toward: |v: u32, q: Point2| exact(v).compare_with_point(q),
-        order: |u: u32, v: u32| exact(u).compare_xy(&exact(v)),
+        order: |u: u32, v: u32| {
+            compare_xy_filtered_by(&rounded_of(u), &rounded_of(v), || (exact(u), exact(v)))
+        },
     });
     let failing = failing_rings(
         &mut rounded,

@@ -34,9 +34,6 @@ pub(super) fn nudge(
     exact: &ExactPoints<impl Fn(u32, Point2) -> Toward, impl Fn(u32, u32) -> Ordering>,
 ) {
     let toward = &exact.toward;
-    // The pairs each point is in (as the point or an end of the edge).
-    let n = r.points.len();
-    let mut starts = vec![0u32; n + 1];
     let ends = |&(x, e): &Pair| {
         let (x, i, j) = (x as usize, e.i, e.j);
         [
@@ -45,83 +42,86 @@ pub(super) fn nudge(
             (j != x && j != i).then_some(j),
         ]
     };
-    for pair in pairs {
-        for i in ends(pair).into_iter().flatten() {
-            starts[i + 1] += 1;
-        }
-    }
-    for i in 1..=n {
-        starts[i] += starts[i - 1];
-    }
-    let mut at = starts.clone();
-    let mut of_point = vec![0u32; starts[n] as usize];
-    for (k, pair) in pairs.iter().enumerate() {
-        for i in ends(pair).into_iter().flatten() {
-            of_point[at[i] as usize] = k as u32;
-            at[i] += 1;
-        }
-    }
-    let pairs_at = |i: usize| &of_point[starts[i] as usize..starts[i + 1] as usize];
-    // Where each moved point of a failing pair is in the rings, by the vertices it
-    // stands for (`None`: one of them is elsewhere on a point standing for others too,
-    // and is not moved).
+    // The places of the failing pairs' moved points: the vertices a point stands for.
+    // A place moves as one, at all its points (rings touching at it stay touching).
     type Place = (u32, u32);
     let place = |id: PointIds| (id.enter, id.leave);
-    type Map<K, V> = std::collections::HashMap<K, V, foldhash::fast::RandomState>;
-    // (Up to three moved points per failing pair, two vertices each.)
-    let mut places: Map<Place, Option<Vec<usize>>> =
-        Map::with_capacity_and_hasher(3 * failing.len(), Default::default());
-    let mut place_of: Map<u32, Place> =
-        Map::with_capacity_and_hasher(6 * failing.len(), Default::default());
-    for &k in failing.iter() {
-        for i in ends(&pairs[k]).into_iter().flatten() {
-            let id = r.ids[i];
-            if id.moved {
-                places.entry(place(id)).or_insert(Some(Vec::new()));
-                for v in [id.enter, id.leave] {
-                    // (A vertex on two different points: neither is moved.)
-                    if let Some(other) = place_of.insert(v, place(id)) {
-                        if other != place(id) {
-                            places.insert(other, None);
-                            places.insert(place(id), None);
-                        }
-                    }
-                }
-            }
-        }
-    }
-    // (Which vertices to look up, by number: a hash per point would cost more than the
-    // rest of this.)
+    let mut places: Vec<Place> = failing
+        .iter()
+        .flat_map(|&k| ends(&pairs[k]).into_iter().flatten())
+        .map(|i| r.ids[i])
+        .filter(|id| id.moved)
+        .map(place)
+        .collect();
+    places.sort_unstable();
+    places.dedup();
+    // A place is not moved where one of its vertices is elsewhere on a point standing
+    // for others too (a vertex in two places: neither).
+    let mut kept_whole = vec![true; places.len()];
+    // (Per vertex number, its place: a hash per point would cost more than the rest.)
     let top = r
         .ids
         .iter()
         .map(|id| id.enter.max(id.leave))
         .max()
         .unwrap_or(0);
-    let mut wanted = vec![false; top as usize + 1];
-    for &v in place_of.keys() {
-        wanted[v as usize] = true;
+    let mut place_of = vec![NONE; top as usize + 1];
+    for (k, &(enter, leave)) in places.iter().enumerate() {
+        for v in [enter, leave] {
+            match place_of[v as usize] {
+                NONE => place_of[v as usize] = k as u32,
+                other if other != k as u32 => {
+                    (kept_whole[other as usize], kept_whole[k]) = (false, false);
+                }
+                _ => {}
+            }
+        }
     }
+    // The points of each place, as (place, point) in increasing order.
+    let mut members: Vec<(u32, u32)> = Vec::new();
     for (i, &id) in r.ids.iter().enumerate() {
-        if !wanted[id.enter as usize] && !wanted[id.leave as usize] {
-            continue;
-        }
-        let mut seen = None;
+        let mut seen = NONE;
         for v in [id.enter, id.leave] {
-            let Some(&at) = place_of.get(&v) else {
-                continue;
-            };
-            if seen == Some(at) {
+            let at = place_of[v as usize];
+            if at == NONE || at == seen {
                 continue;
             }
-            seen = Some(at);
-            let entry = places.entry(at).or_insert(None);
-            match entry {
-                Some(list) if place(id) == at => list.push(i),
-                _ => *entry = None,
+            seen = at;
+            if place(id) == places[at as usize] {
+                members.push((at, i as u32));
+            } else {
+                kept_whole[at as usize] = false;
             }
         }
     }
+    members.retain(|&(at, _)| kept_whole[at as usize]);
+    if members.is_empty() {
+        return;
+    }
+    members.sort_unstable();
+    let points_of = |at: u32| {
+        let from = members.partition_point(|&(p, _)| p < at);
+        let to = members.partition_point(|&(p, _)| p <= at);
+        &members[from..to]
+    };
+    // The pairs at each point that may move (as the point or an end of the edge), as
+    // (point, pair) in increasing order.
+    let mut movable_points: Vec<u32> = members.iter().map(|&(_, i)| i).collect();
+    movable_points.sort_unstable();
+    let mut incident: Vec<(u32, u32)> = Vec::new();
+    for (k, pair) in pairs.iter().enumerate() {
+        for i in ends(pair).into_iter().flatten() {
+            if movable_points.binary_search(&(i as u32)).is_ok() {
+                incident.push((i as u32, k as u32));
+            }
+        }
+    }
+    incident.sort_unstable();
+    let pairs_at = |i: u32| {
+        let from = incident.partition_point(|&(p, _)| p < i);
+        let to = incident.partition_point(|&(p, _)| p <= i);
+        incident[from..to].iter().map(|&(_, k)| k as usize)
+    };
     // In the order of the pairs' exact vertices (the point's, the edge's ends).
     let mut order = failing.clone();
     order.sort_by(|&k, &l| {
@@ -144,6 +144,8 @@ pub(super) fn nudge(
         fails[k] = true;
     }
     let mut now: Vec<usize> = Vec::new();
+    // (Up to three places per pair.)
+    let mut movable: Vec<(u32, Corners)> = Vec::with_capacity(3);
     if r.nearest.is_empty() {
         r.nearest = r.points.clone();
     }
@@ -151,41 +153,44 @@ pub(super) fn nudge(
         if !fails[k] {
             continue;
         }
-        // The vertices to move, with their places and their candidate points.
-        let mut movable: Vec<(&Vec<usize>, Vec<Point2>)> = Vec::new();
+        // The places to move, with their candidate points.
+        movable.clear();
         for i in ends(&pairs[k]).into_iter().flatten() {
             let id = r.ids[i];
-            let found = places.get(&place(id)).filter(|_| id.moved);
-            if let Some(Some(list)) = found.filter(|l| l.as_ref().is_some_and(|l| !l.is_empty())) {
-                if !movable.iter().any(|(l, _)| std::ptr::eq(*l, list)) {
-                    let q = r.points[i];
-                    let a = toward(id.enter, q);
-                    let b = if id.leave == id.enter {
-                        a
-                    } else {
-                        toward(id.leave, q)
-                    };
-                    // (A point for two vertices: only where both exact ones are.)
-                    let same = |s: Ordering, t: Ordering| if s == t { s } else { Ordering::Equal };
-                    movable.push((list, corners(q, (same(a.0, b.0), same(a.1, b.1)))));
-                }
+            let Some(at) = places.binary_search(&place(id)).ok().filter(|_| id.moved) else {
+                continue;
+            };
+            let at = at as u32;
+            if kept_whole[at as usize] && movable.iter().all(|&(p, _)| p != at) {
+                let q = r.points[i];
+                let a = toward(id.enter, q);
+                let b = if id.leave == id.enter {
+                    a
+                } else {
+                    toward(id.leave, q)
+                };
+                // (A point for two vertices: only where both exact ones are.)
+                let same = |s: Ordering, t: Ordering| if s == t { s } else { Ordering::Equal };
+                movable.push((at, corners(q, (same(a.0, b.0), same(a.1, b.1)))));
             }
-        }
-        if movable.is_empty() {
-            continue;
         }
         // One point at a time, each to each of its other floats, the others where they
         // are. (Every pair the JTS robustness suites' results mended was mended so;
         // trying the combinations of two or three points as well made each pair that
         // no move mends cost up to 63 tries instead of at most 9.)
-        'moves: for (list, candidates) in &movable {
-            let before = r.points[list[0]];
-            for &q in &candidates[1..] {
-                for &i in list.iter() {
-                    r.points[i] = q;
+        'moves: for (at, candidates) in &movable {
+            let list = points_of(*at);
+            let Some(&(_, first)) = list.first() else {
+                continue;
+            };
+            let before = r.points[first as usize];
+            for &q in candidates.others() {
+                for &(_, i) in list {
+                    r.points[i as usize] = q;
                 }
                 // A point onto a neighbour of its ring would collapse an edge: not taken.
-                let collapses = list.iter().any(|&i| {
+                let collapses = list.iter().any(|&(_, i)| {
+                    let i = i as usize;
                     let ring = r.starts.partition_point(|&s| s <= i) - 1;
                     let (s, e) = (r.starts[ring], r.starts[ring + 1]);
                     let prev = if i == s { e - 1 } else { i - 1 };
@@ -196,10 +201,7 @@ pub(super) fn nudge(
                 // itself first: most candidates fail there).
                 let taken = !collapses && passes(r, pairs, k, sides) && {
                     now.clear();
-                    now.extend(
-                        list.iter()
-                            .flat_map(|&i| pairs_at(i).iter().map(|&m| m as usize)),
-                    );
+                    now.extend(list.iter().flat_map(|&(_, i)| pairs_at(i)));
                     now.sort_unstable();
                     now.dedup();
                     now.iter().all(|&m| fails[m] || passes(r, pairs, m, sides))
@@ -214,8 +216,8 @@ pub(super) fn nudge(
                     r.nudged += list.len();
                     break 'moves;
                 }
-                for &i in list.iter() {
-                    r.points[i] = before;
+                for &(_, i) in list {
+                    r.points[i as usize] = before;
                 }
             }
         }
@@ -223,18 +225,41 @@ pub(super) fn nudge(
     failing.retain(|&k| fails[k]);
 }
 
+/// No place, in `nudge`'s tables.
+const NONE: u32 = u32::MAX;
+
+/// The float points around an exact point: its rounded point first, then up to three
+/// neighbours towards it.
+struct Corners {
+    points: [Point2; 4],
+    len: usize,
+}
+
+impl Corners {
+    /// The points other than the rounded one.
+    fn others(&self) -> &[Point2] {
+        &self.points[1..self.len]
+    }
+}
+
 /// The float points around an exact point, from its rounded point `q` and the exact
 /// point's side of it per axis: `q` first, then the neighbours towards it.
-fn corners(q: Point2, (tx, ty): Toward) -> Vec<Point2> {
+fn corners(q: Point2, (tx, ty): Toward) -> Corners {
     let step = |v: f64, t: Ordering| match t {
         Ordering::Less => Some(down(v)),
         Ordering::Greater => Some(up(v)),
         Ordering::Equal => None,
     };
     let (x1, y1) = (step(q.x, tx), step(q.y, ty));
-    let xs = std::iter::once(q.x).chain(x1);
-    std::iter::once(q.y)
-        .chain(y1)
-        .flat_map(|y| xs.clone().map(move |x| Point2::new(x, y)))
-        .collect()
+    let mut c = Corners {
+        points: [q; 4],
+        len: 0,
+    };
+    for y in std::iter::once(q.y).chain(y1) {
+        for x in std::iter::once(q.x).chain(x1) {
+            c.points[c.len] = Point2::new(x, y);
+            c.len += 1;
+        }
+    }
+    c
 }
