@@ -125,3 +125,44 @@ fn validate_reports_a_crossing() {
     let v = json(&["validate".as_ref(), a.as_os_str()]);
     assert_eq!(v["valid"], true);
 }
+
+/// An open WKT or GeoJSON ring is bad input for every polygon command: exit 2, the ring
+/// named, and no output file written.
+#[test]
+fn open_rings_are_bad_input_and_nothing_is_written() {
+    let d = TempDir::new().unwrap();
+    let open_wkt = d.path().join("open.wkt");
+    fs::write(&open_wkt, "POLYGON((0 0,4 0,4 4,0 4))\n").unwrap();
+    let open_json = d.path().join("open.geojson");
+    fs::write(
+        &open_json,
+        r#"{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,4]]]}"#,
+    )
+    .unwrap();
+    let (_d, a, _b) = files();
+    let out = d.path().join("out.wkt");
+    for open in [&open_wkt, &open_json] {
+        let runs: [Vec<&std::ffi::OsStr>; 5] = [
+            vec!["boolean".as_ref(), "union".as_ref(), open.as_os_str()],
+            vec![
+                "boolean".as_ref(),
+                "intersection".as_ref(),
+                a.as_os_str(),
+                open.as_os_str(),
+            ],
+            vec!["overlay".as_ref(), open.as_os_str(), a.as_os_str()],
+            vec!["validate".as_ref(), open.as_os_str()],
+            vec!["make-valid".as_ref(), open.as_os_str()],
+        ];
+        for args in runs {
+            compgeom()
+                .args(&args)
+                .arg("-o")
+                .arg(&out)
+                .assert()
+                .code(2)
+                .stderr(predicates::str::contains("ring 1 is not closed"));
+            assert!(!out.exists(), "{args:?} wrote {out:?}");
+        }
+    }
+}

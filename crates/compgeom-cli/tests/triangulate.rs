@@ -11,7 +11,7 @@ fn compgeom() -> Command {
 
 /// A comb of three teeth with a square hole: 8 + 4 vertices, one hole.
 const GALLERY: &str =
-    "POLYGON((0 0, 10 0, 10 6, 8 3, 6 6, 4 3, 2 6, 0 6, 0 0), (1 1, 1 2, 2 2, 2 1))\n";
+    "POLYGON((0 0, 10 0, 10 6, 8 3, 6 6, 4 3, 2 6, 0 6, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1))\n";
 
 fn run_json(args: &[&str], stdin: &str) -> Value {
     let out = compgeom().args(args).write_stdin(stdin).assert().success();

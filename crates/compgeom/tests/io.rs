@@ -307,7 +307,7 @@ fn wkt_points_collect_every_vertex() {
 #[test]
 fn wkt_segments_include_closing_edges_and_skip_zero_length() {
     let text = "LINESTRING (0 0, 1 0, 1 0, 2 1)\nLINEARRING (5 5, 6 5, 5 6, 5 5)\n\
-                MULTILINESTRING ((0 9, 9 9), EMPTY)\nPOLYGON ((0 0, 1 0, 0 1))";
+                MULTILINESTRING ((0 9, 9 9), EMPTY)\nPOLYGON ((0 0, 1 0, 0 1, 0 0))";
     let segs = read_segments(text, Format::Wkt, "s.wkt").unwrap();
     let s = |a: (f64, f64), b: (f64, f64)| Segment2::new(p(a.0, a.1), p(b.0, b.1));
     assert_eq!(
@@ -320,11 +320,60 @@ fn wkt_segments_include_closing_edges_and_skip_zero_length() {
             s((6.0, 5.0), (5.0, 6.0)),
             s((5.0, 6.0), (5.0, 5.0)),
             s((0.0, 9.0), (9.0, 9.0)),
-            // An unclosed polygon ring still gets its closing edge.
+            // The polygon ring's edges, its closing one once.
             s((0.0, 0.0), (1.0, 0.0)),
             s((1.0, 0.0), (0.0, 1.0)),
             s((0.0, 1.0), (0.0, 0.0)),
         ]
+    );
+}
+
+/// WKT and GeoJSON polygon rings repeat their first position at the end; a ring that
+/// does not is an error naming it, for polygons and for segments alike. Bare JSON arrays
+/// of rings (earcut's fixtures) need not repeat it.
+#[test]
+fn open_wkt_and_geojson_rings_are_errors() {
+    let open = [
+        (
+            "POLYGON ((0 0, 1 0, 1 1))",
+            Format::Wkt,
+            "ring 1 is not closed",
+        ),
+        (
+            "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 0)), ((5 5, 9 5, 9 9, 5 5), (6 5.5, 8 5.5, 8 8)))",
+            Format::Wkt,
+            "ring 2 is not closed: it ends at (8, 8), not at its first position (6, 5.5)",
+        ),
+        (
+            r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1]]]}"#,
+            Format::GeoJson,
+            "ring 1 is not closed",
+        ),
+        (
+            r#"{"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+                "geometry": {"type": "MultiPolygon", "coordinates": [[[[0, 0], [1, 0], [1, 1]]]]}}]}"#,
+            Format::GeoJson,
+            "feature 1",
+        ),
+    ];
+    for (text, format, want) in open {
+        for e in [
+            read_polygons(text, format, "in").unwrap_err(),
+            read_segments(text, format, "in").unwrap_err(),
+        ] {
+            let e = e.to_string();
+            assert!(e.contains(want) && e.contains("not closed"), "{text}: {e}");
+        }
+    }
+    // Closed, the same rings read; a ring too short to close still gets the count error.
+    assert!(read_polygons("POLYGON ((0 0, 1 0, 1 1, 0 0))", Format::Wkt, "in").is_ok());
+    let short = read_polygons("POLYGON ((0 0, 1 0, 0 0))", Format::Wkt, "in").unwrap_err();
+    assert!(short.to_string().contains("needs at least 3"), "{short}");
+    // A bare array of rings may leave the repeat out.
+    let bare = read_polygons("[[[0, 0], [1, 0], [1, 1]]]", Format::GeoJson, "in").unwrap();
+    assert_eq!(
+        bare.0[0].exterior,
+        vec![p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0)]
     );
 }
 

@@ -105,6 +105,7 @@ fn flatten(
             what: what.to_string(),
             line,
             feature,
+            rings_closed: true,
         })
     };
     match &g.value {
@@ -234,12 +235,14 @@ fn bare_polygon(v: &Value, what: &str, source: &str) -> Result<Vec<Vec<Coord>>> 
 
 /// A bare array: positions (points), rings (one polygon) or polygons, by nesting depth.
 fn bare_arrays(v: &Value, source: &str) -> Result<Vec<Part>> {
+    // (Bare arrays of rings, like earcut's fixtures, need not repeat the first position.)
     let part = |body: Body, kind: &str, what: String| Part {
         body,
         kind: kind.to_string(),
         what,
         line: None,
         feature: None,
+        rings_closed: false,
     };
     let items = v.as_array().map(Vec::as_slice).unwrap_or_default();
     Ok(match depth(v) {

@@ -68,6 +68,10 @@
 //!   skipped. Points in a segment input are an error.
 //! - [`read_polygons`] collects polygons with rings stored open (the closing vertex
 //!   dropped); each ring must have at least 3 vertices. Other geometries are an error.
+//! - A WKT or GeoJSON polygon ring must be closed (its last position its first, as both
+//!   standards ask): [`read_segments`] and [`read_polygons`] name a ring that is not
+//!   (rather than guess whether it was cut short). Bare JSON arrays of rings and CSV
+//!   rings may leave the repeat out.
 //!   `EMPTY` geometries of any kind contribute nothing. [`read_polygon_features`] also
 //!   gives each polygon's input feature (its GeoJSON Feature; a MultiPolygon feature
 //!   gives several polygons of one feature).

@@ -34,6 +34,10 @@ pub(crate) struct Part {
     pub line: Option<usize>,
     /// The 0-based index of the GeoJSON Feature it belongs to (`None` outside features).
     pub feature: Option<usize>,
+    /// Whether the format closes polygon rings (WKT and GeoJSON geometries repeat a
+    /// ring's first position at its end; bare JSON arrays of rings need not): an open
+    /// ring is then an error where rings are read as rings.
+    pub rings_closed: bool,
 }
 
 impl Part {
@@ -74,6 +78,27 @@ pub(crate) fn check_finite(parts: &[Part], source: &str) -> Result<()> {
 
 fn p2(c: &Coord) -> Point2 {
     Point2::new(c.x, c.y)
+}
+
+/// `Err` naming the ring when the format closes rings ([`Part::rings_closed`]) and ring
+/// `i` (0-based) of `part` does not end at its first position (a ring of one position
+/// is left to the vertex count).
+fn check_closed(part: &Part, i: usize, ring: &[Coord], source: &str) -> Result<()> {
+    match ring {
+        [first, .., last] if part.rings_closed && p2(first) != p2(last) => Err(part.error(
+            source,
+            &format!(
+                "ring {} is not closed: it ends at ({}, {}), not at its first position \
+                 ({}, {}); a WKT or GeoJSON polygon ring repeats its first position at its end",
+                i + 1,
+                last.x,
+                last.y,
+                first.x,
+                first.y
+            ),
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// The ring without its repeated closing vertex (if the last vertex equals the first).
@@ -137,7 +162,8 @@ fn push_edges(vs: &[Point2], out: &mut Vec<Segment2>) {
 }
 
 /// Every edge of line strings and polygon rings (closing edges included, zero-length
-/// edges skipped). Points are an error.
+/// edges skipped). Points are an error, and so is a ring the format should have closed
+/// and did not.
 pub(crate) fn segments(parts: &[Part], source: &str) -> Result<Vec<Segment2>> {
     check_finite(parts, source)?;
     let mut out = Vec::new();
@@ -151,7 +177,8 @@ pub(crate) fn segments(parts: &[Part], source: &str) -> Result<Vec<Segment2>> {
             }
             Body::Line(cs) => push_edges(&cs.iter().map(p2).collect::<Vec<_>>(), &mut out),
             Body::Polygon(rings) => {
-                for ring in rings {
+                for (i, ring) in rings.iter().enumerate() {
+                    check_closed(part, i, ring, source)?;
                     let ring: Vec<Point2> = ring.iter().map(p2).collect();
                     let mut ring = open_ring(&ring).to_vec();
                     if ring.len() >= 3 {
@@ -165,7 +192,6 @@ pub(crate) fn segments(parts: &[Part], source: &str) -> Result<Vec<Segment2>> {
     Ok(out)
 }
 
-/// Polygons with open rings of at least 3 vertices; anything else is an error.
 /// For every polygon [`polygons`] makes of `parts`, the index of its input feature: the
 /// GeoJSON Feature it came from, else the polygon's own index.
 pub(crate) fn polygon_features(parts: &[Part]) -> Vec<usize> {
@@ -177,6 +203,8 @@ pub(crate) fn polygon_features(parts: &[Part]) -> Vec<usize> {
         .collect()
 }
 
+/// Polygons with open rings of at least 3 vertices; anything else is an error, and so
+/// is a ring the format should have closed and did not.
 pub(crate) fn polygons(parts: &[Part], source: &str) -> Result<MultiPolygon> {
     check_finite(parts, source)?;
     let mut out = Vec::new();
@@ -186,6 +214,7 @@ pub(crate) fn polygons(parts: &[Part], source: &str) -> Result<MultiPolygon> {
         };
         let mut open = Vec::with_capacity(rings.len());
         for (i, ring) in rings.iter().enumerate() {
+            check_closed(part, i, ring, source)?;
             let ring: Vec<Point2> = ring.iter().map(p2).collect();
             let ring = open_ring(&ring).to_vec();
             if ring.len() < 3 {

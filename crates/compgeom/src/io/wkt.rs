@@ -260,6 +260,7 @@ fn flatten(g: &Wkt<f64>, what: &str, line: usize, out: &mut Vec<Part>) {
             what: what.to_string(),
             line: Some(line),
             feature: None,
+            rings_closed: true,
         })
     };
     match g {
