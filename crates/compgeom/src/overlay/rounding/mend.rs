@@ -96,14 +96,11 @@ pub(super) fn nudge(
     }
     members.retain(|&(at, _)| kept_whole[at as usize]);
     if members.is_empty() {
+        // (No point may move: the failing pairs stay as they are.)
         return;
     }
     members.sort_unstable();
-    let points_of = |at: u32| {
-        let from = members.partition_point(|&(p, _)| p < at);
-        let to = members.partition_point(|&(p, _)| p <= at);
-        &members[from..to]
-    };
+    let points_of = |at: u32| run_of(&members, at);
     // The pairs at each point that may move (as the point or an end of the edge), as
     // (point, pair) in increasing order.
     let mut movable_points: Vec<u32> = members.iter().map(|&(_, i)| i).collect();
@@ -117,11 +114,7 @@ pub(super) fn nudge(
         }
     }
     incident.sort_unstable();
-    let pairs_at = |i: u32| {
-        let from = incident.partition_point(|&(p, _)| p < i);
-        let to = incident.partition_point(|&(p, _)| p <= i);
-        incident[from..to].iter().map(|&(_, k)| k as usize)
-    };
+    let pairs_at = |i: u32| run_of(&incident, i).iter().map(|&(_, k)| k as usize);
     // In the order of the pairs' exact vertices (the point's, the edge's ends).
     let mut order = failing.clone();
     order.sort_by(|&k, &l| {
@@ -227,6 +220,13 @@ pub(super) fn nudge(
 
 /// No place, in `nudge`'s tables.
 const NONE: u32 = u32::MAX;
+
+/// The entries of `sorted` (ascending) whose first element is `key`.
+fn run_of(sorted: &[(u32, u32)], key: u32) -> &[(u32, u32)] {
+    let from = sorted.partition_point(|&(k, _)| k < key);
+    let to = from + sorted[from..].partition_point(|&(k, _)| k == key);
+    &sorted[from..to]
+}
 
 /// The float points around an exact point: its rounded point first, then up to three
 /// neighbours towards it.
