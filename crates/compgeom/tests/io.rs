@@ -365,6 +365,19 @@ fn open_wkt_and_geojson_rings_are_errors() {
             assert!(e.contains(want) && e.contains("not closed"), "{text}: {e}");
         }
     }
+    // Closed in x and y but not in z is not closed.
+    let z = read_polygons(
+        "POLYGON Z ((0 0 1, 1 0 1, 1 1 1, 0 0 2))",
+        Format::Wkt,
+        "in",
+    );
+    assert!(z.unwrap_err().to_string().contains("ring 1 is not closed"));
+    assert!(read_polygons(
+        "POLYGON Z ((0 0 1, 1 0 1, 1 1 1, 0 0 1))",
+        Format::Wkt,
+        "in"
+    )
+    .is_ok());
     // Closed, the same rings read; a ring too short to close still gets the count error.
     assert!(read_polygons("POLYGON ((0 0, 1 0, 1 1, 0 0))", Format::Wkt, "in").is_ok());
     let short = read_polygons("POLYGON ((0 0, 1 0, 0 0))", Format::Wkt, "in").unwrap_err();

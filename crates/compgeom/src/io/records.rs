@@ -85,7 +85,8 @@ fn p2(c: &Coord) -> Point2 {
 /// is left to the vertex count).
 fn check_closed(part: &Part, i: usize, ring: &[Coord], source: &str) -> Result<()> {
     match ring {
-        [first, .., last] if part.rings_closed && p2(first) != p2(last) => Err(part.error(
+        // (All coordinates, z too where given: -0 equals 0.)
+        [first, .., last] if part.rings_closed && first != last => Err(part.error(
             source,
             &format!(
                 "ring {} is not closed: it ends at ({}, {}), not at its first position \
