@@ -1371,7 +1371,14 @@ fn faces_left_by(
             .collect();
         by_y.sort_unstable_by(|s, t| s.0.y.total_cmp(&t.0.y));
         let mut found = vec![(None, f64::NEG_INFINITY); queries.len()];
+        let (Some(&(lowest, _)), Some(&(highest, _))) = (by_y.first(), by_y.last()) else {
+            return Some(Vec::new());
+        };
         for (i, (&(lo, hi), &(x_min, x_max))) in ranges.iter().zip(&xr).enumerate() {
+            // (Below or above every query: none of them in its range, no search.)
+            if hi <= lowest.y || lo > highest.y {
+                continue;
+            }
             // (total_cmp orders as < does here: only -0 and 0 differ, on which `<`
             // agrees, so the predicate is monotone along `by_y`.)
             let from = by_y.partition_point(|t| t.0.y < lo);
