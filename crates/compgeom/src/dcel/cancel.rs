@@ -71,9 +71,9 @@ pub(super) fn classes(
     if !shared {
         return (first_of, None);
     }
-    let left: Vec<usize> = (0..n)
-        .filter(|&k| net[first_of[k] as usize] != [0, 0])
-        .collect();
+    // (Room for all: growing the list from empty cost the GEOS-837 dissolve 0.3%.)
+    let mut left: Vec<usize> = Vec::with_capacity(n);
+    left.extend((0..n).filter(|&k| net[first_of[k] as usize] != [0, 0]));
     let left = (left.len() < n).then_some(left);
     (first_of, left)
 }
