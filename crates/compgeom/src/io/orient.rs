@@ -33,12 +33,16 @@ use num_traits::{Float, Signed, Zero};
 /// assert_eq!(ring_orientation(&sliver), Orientation::CounterClockwise);
 /// ```
 pub fn ring_orientation(ring: &[Point2]) -> Orientation {
-    let n = ring.len();
-    if n < 3 || ring.iter().any(|p| !p.is_finite()) {
+    if ring.len() < 3 {
         return Orientation::Collinear;
     }
+    // (A certified sign needs every product finite, so every coordinate: the check for
+    // non-finite ones only where the filter fails.)
     if let Some(sign) = filtered_sign(ring) {
         return sign;
+    }
+    if ring.iter().any(|p| !p.is_finite()) {
+        return Orientation::Collinear;
     }
     expansion_sign(ring).unwrap_or_else(|| exact_sign(ring))
 }
@@ -58,12 +62,14 @@ fn filtered_sign(ring: &[Point2]) -> Option<Orientation> {
     let n = ring.len();
     let mut sum = 0.0f64;
     let mut magnitude = 0.0f64;
-    // Each vertex with the next, the last with the first (no division per vertex).
-    let nexts = ring[1..].iter().chain(std::iter::once(&ring[0]));
-    for (p, q) in ring.iter().zip(nexts) {
+    // Each vertex with the one before, the first with the last (no division per
+    // vertex). Every coordinate is in two products.
+    let mut p = ring[n - 1];
+    for &q in ring {
         let (a, b) = (p.x * q.y, q.x * p.y);
         sum += a - b;
         magnitude += a.abs() + b.abs();
+        p = q;
     }
     // Each product, difference and addition rounds with relative error at most
     // u = EPSILON / 2, so |sum − exact| ≤ γ_{n+2} · magnitude with γ_k = k·u / (1 − k·u);
@@ -196,6 +202,32 @@ mod tests {
             Point2::new(0.0, 1.0),
         ];
         assert_eq!(ring_orientation(&eight), Orientation::Collinear);
+    }
+
+    /// A ring with a NaN or infinite coordinate anywhere (first, middle or last vertex, x
+    /// or y) has no orientation: a product with it is infinite or NaN, so the filter
+    /// never certifies a sign, and the check after it answers.
+    #[test]
+    fn non_finite_rings_are_collinear() {
+        let square = [
+            Point2::new(0.0, 0.0),
+            Point2::new(4.0, 0.0),
+            Point2::new(4.0, 3.0),
+            Point2::new(0.0, 3.0),
+        ];
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            for at in 0..square.len() {
+                for axis in 0..2 {
+                    let mut ring = square;
+                    if axis == 0 {
+                        ring[at].x = bad;
+                    } else {
+                        ring[at].y = bad;
+                    }
+                    assert_eq!(ring_orientation(&ring), Orientation::Collinear, "{ring:?}");
+                }
+            }
+        }
     }
 
     /// The expansion decides as the big integers do: slivers and collinear runs near and
