@@ -172,14 +172,17 @@ fn exact_sign(ring: &[Point2]) -> Orientation {
 mod tests {
     use super::*;
 
+    /// A 4 × 3 rectangle, counter-clockwise.
+    const RECTANGLE: [Point2; 4] = [
+        Point2::new(0.0, 0.0),
+        Point2::new(4.0, 0.0),
+        Point2::new(4.0, 3.0),
+        Point2::new(0.0, 3.0),
+    ];
+
     #[test]
     fn exact_path_agrees_with_filter_on_plain_rings() {
-        let ring = [
-            Point2::new(0.0, 0.0),
-            Point2::new(4.0, 0.0),
-            Point2::new(4.0, 3.0),
-            Point2::new(0.0, 3.0),
-        ];
+        let ring = RECTANGLE;
         assert_eq!(exact_sign(&ring), Orientation::CounterClockwise);
         assert_eq!(filtered_sign(&ring), Some(Orientation::CounterClockwise));
         let rev: Vec<Point2> = ring.iter().rev().copied().collect();
@@ -209,16 +212,10 @@ mod tests {
     /// never certifies a sign, and the check after it answers.
     #[test]
     fn non_finite_rings_are_collinear() {
-        let square = [
-            Point2::new(0.0, 0.0),
-            Point2::new(4.0, 0.0),
-            Point2::new(4.0, 3.0),
-            Point2::new(0.0, 3.0),
-        ];
         for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
-            for at in 0..square.len() {
+            for at in 0..RECTANGLE.len() {
                 for axis in 0..2 {
-                    let mut ring = square;
+                    let mut ring = RECTANGLE;
                     if axis == 0 {
                         ring[at].x = bad;
                     } else {
