@@ -126,8 +126,8 @@ fn validate_reports_a_crossing() {
     assert_eq!(v["valid"], true);
 }
 
-/// An open WKT or GeoJSON ring is bad input for every polygon command: exit 2, the ring
-/// named, and no output file written.
+/// An open WKT or GeoJSON ring is bad input for every polygon command but `validate`
+/// (below): exit 2, the ring named, and no output file written.
 #[test]
 fn open_rings_are_bad_input_and_nothing_is_written() {
     let d = TempDir::new().unwrap();
@@ -142,7 +142,7 @@ fn open_rings_are_bad_input_and_nothing_is_written() {
     let (_d, a, _b) = files();
     let out = d.path().join("out.wkt");
     for open in [&open_wkt, &open_json] {
-        let runs: [Vec<&std::ffi::OsStr>; 5] = [
+        let runs: [Vec<&std::ffi::OsStr>; 4] = [
             vec!["boolean".as_ref(), "union".as_ref(), open.as_os_str()],
             vec![
                 "boolean".as_ref(),
@@ -151,7 +151,6 @@ fn open_rings_are_bad_input_and_nothing_is_written() {
                 open.as_os_str(),
             ],
             vec!["overlay".as_ref(), open.as_os_str(), a.as_os_str()],
-            vec!["validate".as_ref(), open.as_os_str()],
             vec!["make-valid".as_ref(), open.as_os_str()],
         ];
         for args in runs {
@@ -164,5 +163,54 @@ fn open_rings_are_bad_input_and_nothing_is_written() {
                 .stderr(predicates::str::contains("ring 1 is not closed"));
             assert!(!out.exists(), "{args:?} wrote {out:?}");
         }
+    }
+}
+
+/// `validate` reports what the other commands reject as a ring: an open ring (at its last
+/// position, the rest judged as if it were closed) and a ring of too few points, in
+/// both formats, exit 0, and writes its `-o` file.
+#[test]
+fn validate_reports_open_and_short_rings() {
+    let d = TempDir::new().unwrap();
+    let wkt = d.path().join("open.wkt");
+    fs::write(
+        &wkt,
+        "POLYGON((0 0,4 0,4 4,0 4),(1 1,2 1,1 2,1 1))\nPOLYGON((5 5,6 5,5 5))\n",
+    )
+    .unwrap();
+    let geojson = d.path().join("open.geojson");
+    fs::write(
+        &geojson,
+        r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[4,0],[4,4],[0,4]],[[1,1],[2,1],[1,2],[1,1]]],[[[5,5],[6,5],[5,5]]]]}"#,
+    )
+    .unwrap();
+    for input in [&wkt, &geojson] {
+        let out = d.path().join("report.json");
+        compgeom()
+            .args([
+                "validate".as_ref(),
+                input.as_os_str(),
+                "-o".as_ref(),
+                out.as_os_str(),
+            ])
+            .assert()
+            .success();
+        let v: Value = serde_json::from_str(&fs::read_to_string(&out).unwrap()).unwrap();
+        assert_eq!(v["valid"], false, "{input:?}: {v}");
+        let problems = v["problems"].as_array().unwrap();
+        let messages: Vec<&str> = problems
+            .iter()
+            .map(|p| p["message"].as_str().unwrap())
+            .collect();
+        assert_eq!(messages.len(), 2, "{input:?}: {messages:?}");
+        assert!(
+            messages[0].starts_with("polygon 0 exterior: not closed"),
+            "{messages:?}"
+        );
+        assert_eq!(problems[0]["at"], serde_json::json!([0.0, 4.0]));
+        assert!(
+            messages[1].starts_with("polygon 1 exterior: fewer than 3"),
+            "{messages:?}"
+        );
     }
 }

@@ -5,9 +5,9 @@
 mod common;
 use common::cases_dir;
 use compgeom::io::{
-    detect_format, format_f64, read_off, read_points, read_points3, read_polygons, read_segments,
-    read_text, ring_orientation, write_off, write_points3, write_segments, write_shape, Format,
-    Polyhedron, Shape,
+    detect_format, format_f64, read_off, read_points, read_points3, read_polygons,
+    read_polygons_as_written, read_segments, read_text, ring_orientation, write_off, write_points3,
+    write_segments, write_shape, Format, OpenRing, Polyhedron, Shape,
 };
 use compgeom::{Error, MultiPolygon, Orientation, Point2, Point3, Polygon, Segment2};
 use num_rational::BigRational;
@@ -388,6 +388,64 @@ fn open_wkt_and_geojson_rings_are_errors() {
         bare.0[0].exterior,
         vec![p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0)]
     );
+}
+
+/// `read_polygons_as_written` reads what `read_polygons` rejects as a ring: open rings
+/// (listed, with their polygon and ring and both end positions, read as if closed) and
+/// short rings; the polygons it reads otherwise are the same.
+#[test]
+fn polygons_as_written_list_open_rings_and_keep_short_ones() {
+    let text =
+        "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 0)), ((5 5, 9 5, 9 9, 5 9), (6 5.5, 8 5.5, 8 8)))\n\
+                POLYGON EMPTY\n\
+                POLYGON ((0 0, 1 0, 0 0))";
+    let (polygons, open) = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+    assert_eq!(polygons.0.len(), 3);
+    assert_eq!(
+        open,
+        vec![
+            OpenRing {
+                polygon: 1,
+                ring: 0,
+                first: p(5.0, 5.0),
+                last: p(5.0, 9.0)
+            },
+            OpenRing {
+                polygon: 1,
+                ring: 1,
+                first: p(6.0, 5.5),
+                last: p(8.0, 8.0)
+            },
+        ]
+    );
+    assert_eq!(polygons.0[1].exterior.len(), 4);
+    assert_eq!(polygons.0[1].holes[0].len(), 3);
+    assert_eq!(polygons.0[2].exterior, vec![p(0.0, 0.0), p(1.0, 0.0)]);
+    // GeoJSON alike; closed input reads as `read_polygons` reads it, with nothing listed.
+    let json = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1]]]}"#;
+    let (_, open) = read_polygons_as_written(json, Format::GeoJson, "in").unwrap();
+    assert_eq!((open.len(), open[0].last), (1, p(1.0, 1.0)));
+    for (text, format) in [
+        (
+            "POLYGON ((0 0, 4 0, 4 4, 0 0), (1 1, 2 1, 1 2, 1 1))",
+            Format::Wkt,
+        ),
+        ("[[[0, 0], [1, 0], [1, 1]]]", Format::GeoJson),
+        ("0,0\n1,0\n1,1\n", Format::Csv),
+    ] {
+        let (polygons, open) = read_polygons_as_written(text, format, "in").unwrap();
+        assert!(open.is_empty(), "{text}");
+        assert_eq!(
+            polygons,
+            read_polygons(text, format, "in").unwrap(),
+            "{text}"
+        );
+    }
+    // A short CSV ring too; what is not a polygon is still an error.
+    let (short, _) = read_polygons_as_written("0,0\n1,0\n", Format::Csv, "in").unwrap();
+    assert_eq!(short.0[0].exterior.len(), 2);
+    assert!(read_polygons("0,0\n1,0\n", Format::Csv, "in").is_err());
+    assert!(read_polygons_as_written("POINT (1 2)", Format::Wkt, "in").is_err());
 }
 
 #[test]

@@ -266,8 +266,10 @@ pub struct ValidateArgs {
 /// Run `compgeom validate`: JSON `{"valid": bool, "problems": [{"message", "at": [x, y] |
 /// null}]}`; exit 0 either way (the answer is the output).
 pub fn run_validate(args: &ValidateArgs) -> Result<(), CliError> {
-    let a = read_layer(&args.input)?;
-    let problems = compgeom::overlay::validity_problems(&a)?;
+    // (As written: a ring the other commands reject as bad input is a problem to report.)
+    let src = args.input.read()?;
+    let (a, open) = io::read_polygons_as_written(&src.text, src.format, &src.name)?;
+    let problems = compgeom::overlay::validity_problems_as_written(&a, &open)?;
     let list: Vec<serde_json::Value> = problems
         .iter()
         .map(|p| serde_json::json!({"message": p.message, "at": p.at.map(|q| [q.x, q.y])}))

@@ -146,8 +146,9 @@ pub(crate) fn read_segments(text: &str, source: &str) -> Result<Vec<Segment2>> {
 }
 
 /// Rings of `x,y` lines: one blank line between the rings of a polygon, two or more
-/// between polygons.
-pub(crate) fn read_polygons(text: &str, source: &str) -> Result<MultiPolygon> {
+/// between polygons. A ring of fewer than `min_vertices` vertices (not counting a
+/// closing repeat) is an error.
+pub(crate) fn read_polygons(text: &str, source: &str, min_vertices: usize) -> Result<MultiPolygon> {
     let mut polygons = Vec::new();
     let mut rings: Vec<Vec<Point2>> = Vec::new();
     let mut ring: Vec<Point2> = Vec::new();
@@ -155,10 +156,10 @@ pub(crate) fn read_polygons(text: &str, source: &str) -> Result<MultiPolygon> {
     let finish_ring = |ring: &mut Vec<Point2>, rings: &mut Vec<Vec<Point2>>, line: usize| {
         let open = open_ring(ring).to_vec();
         ring.clear();
-        if open.len() < 3 {
+        if open.len() < min_vertices {
             return Err(Error::parse(
                 format!(
-                    "a polygon ring has {} vertices (not counting a closing repeat); it needs at least 3",
+                    "a polygon ring has {} vertices (not counting a closing repeat); it needs at least {min_vertices}",
                     open.len()
                 ),
                 Location::new(source, line),

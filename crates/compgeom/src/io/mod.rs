@@ -71,7 +71,8 @@
 //! - A WKT or GeoJSON polygon ring must be closed (its last position its first, as both
 //!   standards ask): [`read_segments`] and [`read_polygons`] name a ring that is not
 //!   (rather than guess whether it was cut short). Bare JSON arrays of rings and CSV
-//!   rings may leave the repeat out.
+//!   rings may leave the repeat out. [`read_polygons_as_written`] reads open and short
+//!   rings for validation, listing the open ones.
 //!   `EMPTY` geometries of any kind contribute nothing. [`read_polygon_features`] also
 //!   gives each polygon's input feature (its GeoJSON Feature; a MultiPolygon feature
 //!   gives several polygons of one feature).
@@ -318,9 +319,55 @@ pub fn read_segments(text: &str, format: Format, source: &str) -> Result<Vec<Seg
 /// ```
 pub fn read_polygons(text: &str, format: Format, source: &str) -> Result<MultiPolygon> {
     match format {
-        Format::Csv => csv::read_polygons(text, source),
+        Format::Csv => csv::read_polygons(text, source, 3),
         Format::Wkt => records::polygons(&wkt::read(text, source)?, source),
         Format::GeoJson | Format::Json => records::polygons(&geojson::read(text, source)?, source),
+        Format::Off => Err(not_planar(source)),
+    }
+}
+
+/// A polygon ring that a WKT or GeoJSON input did not close: it does not end at its first
+/// position. [`read_polygons_as_written`] lists them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OpenRing {
+    /// The polygon's index among the polygons read.
+    pub polygon: usize,
+    /// The ring's index in its polygon: 0 for the exterior, `k` for hole `k - 1`.
+    pub ring: usize,
+    /// The ring's first position.
+    pub first: Point2,
+    /// Its last position, which should have repeated the first.
+    pub last: Point2,
+}
+
+/// Polygons as the input wrote them, for validation
+/// ([`crate::overlay::validity_problems_as_written`] reports what is wrong with them):
+/// what [`read_polygons`] rejects as a ring is read here. A ring of fewer than three
+/// vertices and a WKT or GeoJSON ring that does not end at its first position (read as
+/// if it did, and listed) are not errors. Input that is not polygons at all, or not
+/// WKT, GeoJSON or CSV, still is, and so is a non-finite number (every reader rejects
+/// the number itself).
+///
+/// ```
+/// use compgeom::io::{read_polygons, read_polygons_as_written, Format};
+/// let text = "POLYGON ((0 0, 4 0, 4 4, 0 4))";
+/// assert!(read_polygons(text, Format::Wkt, "in").is_err());
+/// let (polygons, open) = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+/// assert_eq!(polygons.0[0].exterior.len(), 4);
+/// assert_eq!((open[0].polygon, open[0].ring), (0, 0));
+/// assert_eq!(open[0].last, compgeom::Point2::new(0.0, 4.0));
+/// ```
+pub fn read_polygons_as_written(
+    text: &str,
+    format: Format,
+    source: &str,
+) -> Result<(MultiPolygon, Vec<OpenRing>)> {
+    match format {
+        Format::Csv => Ok((csv::read_polygons(text, source, 1)?, Vec::new())),
+        Format::Wkt => records::polygons_as_written(&wkt::read(text, source)?, source),
+        Format::GeoJson | Format::Json => {
+            records::polygons_as_written(&geojson::read(text, source)?, source)
+        }
         Format::Off => Err(not_planar(source)),
     }
 }

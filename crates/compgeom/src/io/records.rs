@@ -2,6 +2,7 @@
 //! (a point, a line string, a polygon's rings), each remembering where it came from, and
 //! the conversions from parts to points, segments, polygons and 3D points.
 
+use super::OpenRing;
 use crate::kernel::{MultiPolygon, Point2, Point3, Polygon, Segment2};
 use crate::{Error, Location, Result};
 
@@ -80,13 +81,21 @@ fn p2(c: &Coord) -> Point2 {
     Point2::new(c.x, c.y)
 }
 
-/// `Err` naming the ring when the format closes rings ([`Part::rings_closed`]) and ring
-/// `i` (0-based) of `part` does not end at its first position (a ring of one position
-/// is left to the vertex count).
-fn check_closed(part: &Part, i: usize, ring: &[Coord], source: &str) -> Result<()> {
+/// The first and last positions of `ring` when the format closes rings
+/// ([`Part::rings_closed`]) and the ring does not end at its first position (all
+/// coordinates compared, z too where given: -0 equals 0). A ring of one position is left
+/// to the vertex count.
+fn unclosed<'a>(part: &Part, ring: &'a [Coord]) -> Option<(&'a Coord, &'a Coord)> {
     match ring {
-        // (All coordinates, z too where given: -0 equals 0.)
-        [first, .., last] if part.rings_closed && first != last => Err(part.error(
+        [first, .., last] if part.rings_closed && first != last => Some((first, last)),
+        _ => None,
+    }
+}
+
+/// `Err` naming ring `i` (0-based) of `part` when it is [`unclosed`].
+fn check_closed(part: &Part, i: usize, ring: &[Coord], source: &str) -> Result<()> {
+    match unclosed(part, ring) {
+        Some((first, last)) => Err(part.error(
             source,
             &format!(
                 "ring {} is not closed: it ends at ({}, {}), not at its first position \
@@ -98,7 +107,7 @@ fn check_closed(part: &Part, i: usize, ring: &[Coord], source: &str) -> Result<(
                 first.y
             ),
         )),
-        _ => Ok(()),
+        None => Ok(()),
     }
 }
 
@@ -208,17 +217,56 @@ pub(crate) fn polygon_features(parts: &[Part]) -> Vec<usize> {
 /// is a ring the format should have closed and did not.
 pub(crate) fn polygons(parts: &[Part], source: &str) -> Result<MultiPolygon> {
     check_finite(parts, source)?;
+    Ok(polygons_by(parts, source, Checks::All)?.0)
+}
+
+/// Polygons as written, for validation: rings of any length and coordinates of any
+/// value, and rings the format should have closed and did not (read as if closed), listed.
+/// Only what is not a polygon at all is an error.
+pub(crate) fn polygons_as_written(
+    parts: &[Part],
+    source: &str,
+) -> Result<(MultiPolygon, Vec<OpenRing>)> {
+    polygons_by(parts, source, Checks::NotAPolygon)
+}
+
+/// What [`polygons_by`] treats as an error.
+#[derive(Clone, Copy, PartialEq)]
+enum Checks {
+    /// Open rings (where the format closes them) and rings of fewer than 3 vertices.
+    All,
+    /// Only parts that are not polygons.
+    NotAPolygon,
+}
+
+/// The polygons of `parts` (rings without their closing repeat) and the rings the format
+/// should have closed and did not.
+fn polygons_by(
+    parts: &[Part],
+    source: &str,
+    checks: Checks,
+) -> Result<(MultiPolygon, Vec<OpenRing>)> {
     let mut out = Vec::new();
+    let mut open_rings = Vec::new();
     for part in parts {
         let Body::Polygon(rings) = &part.body else {
             return Err(part.error(source, "not a polygon"));
         };
         let mut open = Vec::with_capacity(rings.len());
         for (i, ring) in rings.iter().enumerate() {
-            check_closed(part, i, ring, source)?;
+            if checks == Checks::All {
+                check_closed(part, i, ring, source)?;
+            } else if let Some((first, last)) = unclosed(part, ring) {
+                open_rings.push(OpenRing {
+                    polygon: out.len(),
+                    ring: i,
+                    first: p2(first),
+                    last: p2(last),
+                });
+            }
             let ring: Vec<Point2> = ring.iter().map(p2).collect();
             let ring = open_ring(&ring).to_vec();
-            if ring.len() < 3 {
+            if checks == Checks::All && ring.len() < 3 {
                 return Err(part.error(
                     source,
                     &format!(
@@ -235,7 +283,7 @@ pub(crate) fn polygons(parts: &[Part], source: &str) -> Result<MultiPolygon> {
             out.push(Polygon::new(exterior, open.collect()));
         }
     }
-    Ok(MultiPolygon(out))
+    Ok((MultiPolygon(out), open_rings))
 }
 
 /// Lines that hold something: `(1-based line number, line without its comment)`, skipping

@@ -81,7 +81,7 @@ pub use boolean::{
     BooleanOptions, FillRule,
 };
 pub use result::faces_to_polygons;
-pub use validate::{validity_problems, Problem};
+pub use validate::{validity_problems, validity_problems_as_written, Problem};
 
 use crate::dcel::Flat;
 use crate::dcel::{Carrier, Dcel, FaceId, HalfEdgeId, PolygonLabel};

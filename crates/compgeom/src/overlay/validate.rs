@@ -9,7 +9,7 @@
 //! and one labelled arrangement, O((n + k) log n), plus O(n) per hole for containment.
 use super::boolean::{boolean_dcel, FillRule};
 use crate::intersect::find_intersections;
-use crate::io::ring_orientation;
+use crate::io::{ring_orientation, OpenRing};
 use crate::kernel::{orient2d, MultiPolygon, Orientation, Point2, Segment2};
 use crate::Result;
 
@@ -28,6 +28,41 @@ fn ring_name(p: usize, r: usize) -> String {
     } else {
         format!("polygon {p} hole {}", r - 1)
     }
+}
+
+/// [`validity_problems`] of polygons read by [`crate::io::read_polygons_as_written`],
+/// with the rings the input left open first (each at its last position, and judged
+/// further as if closed).
+///
+/// ```
+/// use compgeom::io::{read_polygons_as_written, Format};
+/// use compgeom::overlay::validity_problems_as_written;
+/// let text = "POLYGON ((0 0, 4 0, 4 4, 0 4))";
+/// let (polygons, open) = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+/// let problems = validity_problems_as_written(&polygons, &open).unwrap();
+/// assert_eq!(problems.len(), 1);
+/// assert!(problems[0].message.starts_with("polygon 0 exterior: not closed"));
+/// ```
+pub fn validity_problems_as_written(
+    polygons: &MultiPolygon,
+    open: &[OpenRing],
+) -> Result<Vec<Problem>> {
+    let mut out: Vec<Problem> = open
+        .iter()
+        .map(|r| Problem {
+            message: format!(
+                "{}: not closed: it ends at ({}, {}), not at its first position ({}, {})",
+                ring_name(r.polygon, r.ring),
+                r.last.x,
+                r.last.y,
+                r.first.x,
+                r.first.y
+            ),
+            at: Some(r.last),
+        })
+        .collect();
+    out.extend(validity_problems(polygons)?);
+    Ok(out)
 }
 
 /// Exact winding number of a closed ring around `q` (not on it).
