@@ -238,6 +238,55 @@ fn validity_reasons() {
         .contains("non-finite"));
 }
 
+/// Touching rings by the OGC rules: two rings of a polygon may meet at one point (a
+/// vertex of both, or a vertex of one on an edge of the other), polygons may touch at
+/// points; a ring may not meet itself, and the rings of a polygon may not meet in a loop
+/// (twice, or around a chain) nor holes nest.
+#[test]
+fn touching_rings_follow_the_ogc_rules() {
+    let problems = |wkt: &str| {
+        let polygons = compgeom::io::read_polygons(wkt, compgeom::io::Format::Wkt, "t").unwrap();
+        validity_problems(&polygons).unwrap()
+    };
+    for valid in [
+        // A hole touching its shell inside an edge, and at a vertex of the shell.
+        "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (5 0, 3 3, 7 3, 5 0))",
+        "POLYGON ((0 0, 5 0, 10 0, 10 10, 0 10, 0 0), (5 0, 3 3, 7 3, 5 0))",
+        // Holes touching the shell and each other in a tree.
+        "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (5 0, 4 2, 6 2, 5 0), (4 2, 2 5, 3 6, 4 2), (6 2, 7 6, 8 5, 6 2))",
+        // Two polygons, a vertex of one on an edge of the other; and at two points.
+        "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)), ((5 0, 3 -3, 7 -3, 5 0)))",
+        "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)), ((2 0, 0 -3, 10 -3, 8 0, 5 -2, 2 0)))",
+    ] {
+        assert_eq!(problems(valid), [], "{valid}");
+    }
+    for (invalid, want) in [
+        // A shell and a hole meeting at two points; three holes in a loop.
+        (
+            "POLYGON ((0 0, 5 0, 10 0, 10 10, 5 10, 0 10, 0 0), (5 0, 3 5, 5 10, 7 5, 5 0))",
+            "not connected",
+        ),
+        (
+            "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (5 0, 4 2, 6 2, 5 0), (4 2, 2 5, 5 6, 4 2), (5 6, 8 5, 6 2, 5 6))",
+            "not connected",
+        ),
+        // A hole inside another.
+        (
+            "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 9, 9 9, 9 1, 1 1), (2 2, 2 8, 8 8, 8 2, 2 2))",
+            "lies inside another",
+        ),
+        // A ring through one point twice, and a vertex of a ring on its own edge.
+        (
+            "POLYGON ((0 0, 4 0, 2 2, 4 4, 0 4, 2 2, 0 0))",
+            "touches itself",
+        ),
+        ("POLYGON ((0 0, 10 0, 10 10, 5 0, 0 10, 0 0))", "touches itself"),
+    ] {
+        let p = problems(invalid);
+        assert!(p.iter().any(|q| q.message.contains(want)), "{invalid}: {p:?}");
+    }
+}
+
 fn grid_ring() -> impl Strategy<Value = Vec<Point2>> {
     prop::collection::vec((0..6i32, 0..6i32), 3..8)
         .prop_map(|v| v.into_iter().map(|(x, y)| pt(x as f64, y as f64)).collect())

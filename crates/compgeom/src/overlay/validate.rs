@@ -2,11 +2,17 @@
 //!
 //! Checks, in order: finite coordinates and at least three distinct points per ring;
 //! edges crossing or overlapping (within a ring or between rings; found by the exact
-//! intersection sweep); a ring passing twice through a vertex (self-touching); a hole
-//! with a vertex strictly outside its shell; interiors of two polygons overlapping (a
-//! face of the arrangement covered twice, after orienting every polygon); and, as RFC
-//! 7946 asks, shells counter-clockwise and holes clockwise. Cost: one intersection sweep
-//! and one labelled arrangement, O((n + k) log n), plus O(n) per hole for containment.
+//! intersection sweep); a ring passing twice through a point (self-touching: at a vertex
+//! of its own, or a vertex of it on another of its edges); the rings of a polygon
+//! touching in a loop (two rings meeting at two points, or a chain of rings back to the
+//! first: the interior is not connected); a hole with a vertex strictly outside its
+//! shell; interiors of two polygons overlapping (a face of the arrangement covered
+//! twice, after orienting every polygon); holes overlapping or nested (a face inside more
+//! holes than shells); and, as RFC 7946 asks, shells counter-clockwise and holes
+//! clockwise. As the OGC rules allow, two rings of a polygon may touch at one point (a
+//! vertex of both, or a vertex of one on an edge of the other), and two polygons at
+//! points. Cost: one intersection sweep and one labelled arrangement, O((n + k) log n),
+//! plus O(n) per hole for containment.
 use super::boolean::{boolean_dcel, FillRule};
 use crate::intersect::find_intersections;
 use crate::io::{ring_orientation, OpenRing};
@@ -144,18 +150,24 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             at: Some(o.from),
         });
     }
+    // Rings of one polygon touching at points: joined into classes as they touch, a
+    // touch between rings already joined (through other touches: two rings meeting at
+    // two points, or a shell and two holes in a chain) closes a loop of boundary that
+    // cuts the interior apart.
+    let mut joined: Vec<usize> = (0..rings.len()).collect();
     for p in &found.points {
-        let rs: Vec<usize> = p.segments().iter().map(|&s| owner[s]).collect();
-        if !p.interior().is_empty() {
-            let other = rs.iter().copied().find(|&k| k != owner[p.interior()[0]]);
-            let what = if p.interior().len() >= 2 || p.lower().len() + p.upper().len() == 0 {
-                "edges cross"
-            } else {
-                "a vertex lies on an edge"
-            };
+        // Edges crossing (two through the point, or one with nothing else there); one
+        // edge through a vertex of another ring is a touch, below.
+        let ends = p.upper().len() + p.lower().len();
+        if p.interior().len() >= 2 || (p.interior().len() == 1 && ends == 0) {
+            let other = p
+                .segments()
+                .iter()
+                .map(|&s| owner[s])
+                .find(|&k| k != owner[p.interior()[0]]);
             out.push(Problem {
                 message: format!(
-                    "{what} ({}{})",
+                    "edges cross ({}{})",
                     name(owner[p.interior()[0]]),
                     other
                         .map(|k| format!(" and {}", name(k)))
@@ -165,16 +177,50 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             });
             continue;
         }
-        // Only vertices meet here: a ring passing twice is self-touching.
-        let mut sorted = rs.clone();
-        sorted.sort_unstable();
-        for w in sorted.windows(3) {
-            if w[0] == w[1] && w[1] == w[2] {
-                out.push(Problem {
-                    message: format!("{}: ring touches itself", name(w[0])),
-                    at: Some(p.point),
-                });
-                break;
+        // Each ring's passes through the point: an edge through it once, a vertex once
+        // (its two edges end there).
+        let mut passes: Vec<(usize, usize)> = Vec::new();
+        for &s in p.interior() {
+            passes.push((owner[s], 2));
+        }
+        for &s in p.upper().iter().chain(p.lower()) {
+            passes.push((owner[s], 1));
+        }
+        passes.sort_unstable();
+        let mut at_point: Vec<(usize, usize)> = Vec::new();
+        for &(k, ends) in &passes {
+            match at_point.last_mut() {
+                Some((last, n)) if *last == k => *n += ends,
+                _ => at_point.push((k, ends)),
+            }
+        }
+        if let Some(&(k, _)) = at_point.iter().find(|&&(_, ends)| ends > 2) {
+            out.push(Problem {
+                message: format!("{}: ring touches itself", name(k)),
+                at: Some(p.point),
+            });
+            continue;
+        }
+        // The rings of each polygon here (consecutive: the rings are numbered polygon by
+        // polygon), each joined to the first.
+        for group in at_point.chunk_by(|a, b| rings[a.0].0 == rings[b.0].0) {
+            let first = group[0].0;
+            for &(k, _) in &group[1..] {
+                let (a, b) = (find(&mut joined, first), find(&mut joined, k));
+                if a == b {
+                    out.push(Problem {
+                        message: format!(
+                            "{} and {} meet here and are joined elsewhere too (directly or \
+                             through other rings): the interior of polygon {} is not connected",
+                            name(first),
+                            name(k),
+                            rings[k].0
+                        ),
+                        at: Some(p.point),
+                    });
+                } else {
+                    joined[a] = b;
+                }
             }
         }
     }
@@ -210,6 +256,15 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             at,
         });
     }
+    // Inside more holes than shells (shells counted +1, holes -1, every hole being inside
+    // its shell by now): holes overlapping, or one inside another.
+    if let Some(f) = d.face_ids().find(|&f| d.face(f).data.0 < 0) {
+        let at = d.face_polygon(f).and_then(|p| p.exterior.first().copied());
+        out.push(Problem {
+            message: "holes overlap, or one lies inside another".into(),
+            at,
+        });
+    }
     // Orientation (RFC 7946).
     for (pi, ri, r) in &rings {
         let want = if *ri == 0 {
@@ -233,6 +288,15 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         }
     }
     Ok(out)
+}
+
+/// The class of ring `k` in the union–find `parent`.
+fn find(parent: &mut [usize], mut k: usize) -> usize {
+    while parent[k] != k {
+        parent[k] = parent[parent[k]];
+        k = parent[k];
+    }
+    k
 }
 
 fn on_ring(ring: &[Point2], q: Point2) -> bool {
