@@ -6,7 +6,10 @@
 //! the union of 1e4 random overlapping squares (compgeom `union_all`, i_overlay's union
 //! of one subject under the non-zero rule, geo's `unary_union`). compgeom is exact (crossings
 //! decided exactly and rounded correctly); i_overlay snaps to an integer grid. Answers
-//! are compared once, outside the clock, by area (relative difference reported). The
+//! are compared once, outside the clock, by area (relative difference reported); the
+//! JTS pairs' and the dissolve's answers of all three are also checked for validity
+//! (`validity_problems`, OGC rules, ring orientation aside), and the line under the row
+//! says how many were not valid. The
 //! three are timed in alternating rounds (best of 5), so load spikes hit all alike.
 //!
 //! Real maps (see `real_maps.rs`, read in place from the cases folder, skipped when it is
@@ -740,7 +743,7 @@
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
-use compgeom::overlay::{boolean, union_all, BooleanOp};
+use compgeom::overlay::{boolean, union_all, validity_problems, BooleanOp};
 use compgeom::{MultiPolygon, Point2, Polygon};
 use geo::{Area, BooleanOps};
 use i_overlay::core::fill_rule::FillRule;
@@ -789,6 +792,35 @@ fn io_area(shapes: &[Vec<Vec<[f64; 2]>>]) -> f64 {
 
 /// A polygon set as i_overlay takes it: closed paths of points.
 type IoPaths = Vec<Vec<[f64; 2]>>;
+
+/// i_overlay's result (shapes of contours, the first the outer one) as polygons.
+fn from_io(shapes: &[Vec<Vec<[f64; 2]>>]) -> MultiPolygon {
+    let ring = |c: &Vec<[f64; 2]>| c.iter().map(|q| Point2::new(q[0], q[1])).collect();
+    MultiPolygon(
+        shapes
+            .iter()
+            .filter(|s| !s.is_empty())
+            .map(|s| Polygon::new(ring(&s[0]), s[1..].iter().map(ring).collect()))
+            .collect(),
+    )
+}
+
+/// geo's result as polygons (its rings closed: the repeat is ignored by the check).
+fn from_geo(m: &geo::MultiPolygon<f64>) -> MultiPolygon {
+    let ring = |r: &geo::LineString<f64>| r.coords().map(|c| Point2::new(c.x, c.y)).collect();
+    MultiPolygon(
+        m.0.iter()
+            .map(|p| Polygon::new(ring(p.exterior()), p.interiors().iter().map(ring).collect()))
+            .collect(),
+    )
+}
+
+/// Whether `m` is valid by the OGC rules, ring orientation aside (RFC 7946 asks for
+/// counter-clockwise shells, OGC does not: the peers orient otherwise).
+fn valid_as_ogc(m: &MultiPolygon) -> Result<bool, String> {
+    let problems = validity_problems(m).map_err(|e| e.to_string())?;
+    Ok(problems.iter().all(|p| p.message.contains("(RFC 7946)")))
+}
 
 /// Each pair of maps as i_overlay's input.
 fn io_pairs(pairs: &[real_maps::MapPair]) -> Vec<(IoPaths, IoPaths)> {
@@ -1031,6 +1063,25 @@ fn real_map_rows(runs: usize) -> Result<(), String> {
                 .map(Vec::len)
                 .sum();
             row(&format!("jts×{} {name}", jts.len()), n, t, med, dev);
+            // What the answers are worth (outside the clock): results that are not valid.
+            let mut invalid = [0usize; 3];
+            for (k, p) in jts.iter().enumerate() {
+                let results = [
+                    boolean(&p.a, &p.b, op).map_err(|e| e.to_string())?,
+                    from_io(&io[k].0.overlay(&io[k].1, rule, FillRule::EvenOdd)),
+                    from_geo(&geo[k].0.boolean_op(&geo[k].1, gop)),
+                ];
+                for (count, result) in invalid.iter_mut().zip(&results) {
+                    *count += usize::from(!valid_as_ogc(result)?);
+                }
+            }
+            println!(
+                "  {name}: results not valid (OGC rules, ring orientation aside): compgeom {}, i_overlay {}, geo {} of {}",
+                invalid[0],
+                invalid[1],
+                invalid[2],
+                jts.len()
+            );
         }
     }
     if let Some(d) = real_maps::geos_837(&dir) {
@@ -1057,6 +1108,16 @@ fn real_map_rows(runs: usize) -> Result<(), String> {
         );
         let n = d.a.0.iter().flat_map(|p| p.rings()).map(Vec::len).sum();
         row("geos-837 dissolve", n, t, med, dev);
+        let results = [
+            union_all(&d.a).map_err(|e| e.to_string())?,
+            from_io(&pa.overlay(&empty, OverlayRule::Subject, FillRule::NonZero)),
+            from_geo(&geo::unary_union(gs.iter())),
+        ];
+        let valid: Vec<bool> = results.iter().map(valid_as_ogc).collect::<Result<_, _>>()?;
+        println!(
+            "  dissolve: result valid (OGC rules, ring orientation aside): compgeom {}, i_overlay {}, geo {}",
+            valid[0], valid[1], valid[2]
+        );
     }
     Ok(())
 }
