@@ -441,6 +441,12 @@ fn polygons_as_written_list_open_rings_and_keep_short_ones() {
             "{text}"
         );
     }
+    // An EMPTY hole is no hole, to both readers.
+    let text = "POLYGON ((0 0, 4 0, 4 4, 0 0), EMPTY, (1 0.5, 3 2.5, 3 0.5, 1 0.5))";
+    let (polygons, open) = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+    assert!(open.is_empty());
+    assert_eq!(polygons.0[0].holes.len(), 1);
+    assert_eq!(polygons, read_polygons(text, Format::Wkt, "in").unwrap());
     // A short CSV ring too; what is not a polygon is still an error.
     let (short, _) = read_polygons_as_written("0,0\n1,0\n", Format::Csv, "in").unwrap();
     assert_eq!(short.0[0].exterior.len(), 2);

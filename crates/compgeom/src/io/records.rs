@@ -254,12 +254,16 @@ fn polygons_by(
         };
         let mut open = Vec::with_capacity(rings.len());
         for (i, ring) in rings.iter().enumerate() {
+            if i > 0 && ring.is_empty() {
+                // (An EMPTY hole is no hole, as EMPTY geometries contribute nothing.)
+                continue;
+            }
             if checks == Checks::All {
                 check_closed(part, i, ring, source)?;
             } else if let Some((first, last)) = unclosed(part, ring) {
                 open_rings.push(OpenRing {
                     polygon: out.len(),
-                    ring: i,
+                    ring: open.len(),
                     first: p2(first),
                     last: p2(last),
                 });
