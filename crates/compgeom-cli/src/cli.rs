@@ -66,6 +66,7 @@ pub enum Command {
     Boolean(BooleanArgs),
     /// Report why polygons are not valid (OGC rules, RFC 7946 orientation); JSON
     /// `{"valid", "problems": [{"message", "at"}]}`.
+    #[command(after_long_help = crate::commands::boolean::VALIDATE_HELP)]
     Validate(ValidateArgs),
     /// Repair polygons into valid ones, reading rings by a fill rule (book 2.4).
     MakeValid(MakeValidArgs),

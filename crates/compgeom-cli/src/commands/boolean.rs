@@ -251,6 +251,27 @@ pub fn run_make_valid(args: &MakeValidArgs) -> Result<(), CliError> {
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
 }
 
+/// `--help` text describing what `validate` checks and prints.
+pub const VALIDATE_HELP: &str = "\
+JSON output is one object:
+  valid     true when there is no problem
+  problems  [{\"message\", \"at\": [x, y] | null}], in the order checked; polygons and
+            rings are numbered from 0 in reading order, holes from 0 in their polygon
+
+Checked (OGC simple features, as JTS's isValid judges them): rings closed (WKT and
+GeoJSON) with at least 3 distinct points; no edges crossing or overlapping; no ring
+passing twice through a point; the rings of a polygon meeting at most once each and not
+in a loop (else its interior is cut apart); holes inside their shell, not overlapping or
+nested; polygon interiors not overlapping. Two rings of a polygon may touch at one
+point, polygons at points. Then, as RFC 7946 asks (OGC does not): shells
+counter-clockwise, holes clockwise. Exact throughout.
+
+Rings other commands reject as bad input (not closed, too short) are reported here.
+
+Examples:
+  compgeom validate parcels.geojson
+  compgeom validate parcels.wkt --svg problems.svg";
+
 /// Arguments of `compgeom validate`.
 #[derive(Debug, Clone, Args)]
 pub struct ValidateArgs {
