@@ -256,9 +256,16 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             at,
         });
     }
-    // Inside more holes than shells (shells counted +1, holes -1, every hole being inside
-    // its shell by now): holes overlapping, or one inside another.
-    if let Some(f) = d.face_ids().find(|&f| d.face(f).data.0 < 0) {
+    // Inside more holes than shells (shells counted +1, holes -1), where every hole is
+    // inside its shell: holes overlapping, or one inside another. (A hole outside its
+    // shell, reported above, is such a place too.)
+    let holes_outside = out
+        .iter()
+        .any(|p| p.message.ends_with("lies outside its shell"));
+    if let Some(f) = d
+        .face_ids()
+        .find(|&f| !holes_outside && d.face(f).data.0 < 0)
+    {
         let at = d.face_polygon(f).and_then(|p| p.exterior.first().copied());
         out.push(Problem {
             message: "holes overlap, or one lies inside another".into(),
