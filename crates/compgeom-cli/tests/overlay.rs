@@ -212,5 +212,39 @@ fn validate_reports_open_and_short_rings() {
             messages[1].starts_with("polygon 1 exterior: fewer than 3"),
             "{messages:?}"
         );
+        assert_eq!(problems[1]["polygon"], 1);
     }
+}
+
+/// `validate` names the polygon and the GeoJSON Feature of each problem: a bow tie as the
+/// second polygon of the second feature is polygon 2, feature 1.
+#[test]
+fn validate_names_the_feature_of_a_problem() {
+    let d = TempDir::new().unwrap();
+    let input = d.path().join("layer.geojson");
+    let square = "[[[0,0],[1,0],[1,1],[0,1],[0,0]]]";
+    let bow = "[[[5,5],[7,7],[7,5],[5,7],[5,5]]]";
+    let feature = |g: String| format!(r#"{{"type":"Feature","properties":{{}},"geometry":{g}}}"#);
+    fs::write(
+        &input,
+        format!(
+            r#"{{"type":"FeatureCollection","features":[{},{}]}}"#,
+            feature(format!(r#"{{"type":"Polygon","coordinates":{square}}}"#)),
+            feature(format!(
+                r#"{{"type":"MultiPolygon","coordinates":[[[[2,0],[3,0],[3,1],[2,1],[2,0]]],{bow}]}}"#
+            )),
+        ),
+    )
+    .unwrap();
+    let v = json(&["validate".as_ref(), input.as_os_str()]);
+    let problem = &v["problems"][0];
+    assert!(
+        problem["message"].as_str().unwrap().contains("cross"),
+        "{v}"
+    );
+    assert_eq!(
+        (&problem["polygon"], &problem["feature"]),
+        (&2.into(), &1.into()),
+        "{v}"
+    );
 }

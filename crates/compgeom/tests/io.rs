@@ -399,7 +399,9 @@ fn polygons_as_written_list_open_rings_and_keep_short_ones() {
         "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 0)), ((5 5, 9 5, 9 9, 5 9), (6 5.5, 8 5.5, 8 8)))\n\
                 POLYGON EMPTY\n\
                 POLYGON ((0 0, 1 0, 0 0))";
-    let (polygons, open) = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+    let read = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+    assert_eq!(read.features, [0, 1, 2]);
+    let (polygons, open) = (read.polygons, read.open_rings);
     assert_eq!(polygons.0.len(), 3);
     assert_eq!(
         open,
@@ -423,7 +425,9 @@ fn polygons_as_written_list_open_rings_and_keep_short_ones() {
     assert_eq!(polygons.0[2].exterior, vec![p(0.0, 0.0), p(1.0, 0.0)]);
     // GeoJSON alike; closed input reads as `read_polygons` reads it, with nothing listed.
     let json = r#"{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1]]]}"#;
-    let (_, open) = read_polygons_as_written(json, Format::GeoJson, "in").unwrap();
+    let open = read_polygons_as_written(json, Format::GeoJson, "in")
+        .unwrap()
+        .open_rings;
     assert_eq!((open.len(), open[0].last), (1, p(1.0, 1.0)));
     for (text, format) in [
         (
@@ -433,7 +437,8 @@ fn polygons_as_written_list_open_rings_and_keep_short_ones() {
         ("[[[0, 0], [1, 0], [1, 1]]]", Format::GeoJson),
         ("0,0\n1,0\n1,1\n", Format::Csv),
     ] {
-        let (polygons, open) = read_polygons_as_written(text, format, "in").unwrap();
+        let read = read_polygons_as_written(text, format, "in").unwrap();
+        let (polygons, open) = (read.polygons, read.open_rings);
         assert!(open.is_empty(), "{text}");
         assert_eq!(
             polygons,
@@ -443,12 +448,15 @@ fn polygons_as_written_list_open_rings_and_keep_short_ones() {
     }
     // An EMPTY hole is no hole, to both readers.
     let text = "POLYGON ((0 0, 4 0, 4 4, 0 0), EMPTY, (1 0.5, 3 2.5, 3 0.5, 1 0.5))";
-    let (polygons, open) = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+    let read = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+    let (polygons, open) = (read.polygons, read.open_rings);
     assert!(open.is_empty());
     assert_eq!(polygons.0[0].holes.len(), 1);
     assert_eq!(polygons, read_polygons(text, Format::Wkt, "in").unwrap());
     // A short CSV ring too; what is not a polygon is still an error.
-    let (short, _) = read_polygons_as_written("0,0\n1,0\n", Format::Csv, "in").unwrap();
+    let short = read_polygons_as_written("0,0\n1,0\n", Format::Csv, "in")
+        .unwrap()
+        .polygons;
     assert_eq!(short.0[0].exterior.len(), 2);
     assert!(read_polygons("0,0\n1,0\n", Format::Csv, "in").is_err());
     assert!(read_polygons_as_written("POINT (1 2)", Format::Wkt, "in").is_err());

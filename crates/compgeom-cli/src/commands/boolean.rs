@@ -255,8 +255,11 @@ pub fn run_make_valid(args: &MakeValidArgs) -> Result<(), CliError> {
 pub const VALIDATE_HELP: &str = "\
 JSON output is one object:
   valid     true when there is no problem
-  problems  [{\"message\", \"at\": [x, y] | null}], in the order checked; polygons and
-            rings are numbered from 0 in reading order, holes from 0 in their polygon
+  problems  [{\"message\", \"at\": [x, y] | null, \"polygon\", \"feature\"}], in the order
+            checked; polygons and rings are numbered from 0 in reading order, holes
+            from 0 in their polygon; \"polygon\" is the index of the polygon the problem
+            is in (the first one named) and \"feature\" that of its GeoJSON Feature (for
+            other input, the polygon's own index), null where it names none
 
 Checked (OGC simple features, as JTS's isValid judges them): rings closed (WKT and
 GeoJSON) with at least 3 distinct points; no edges crossing or overlapping; no ring
@@ -285,16 +288,25 @@ pub struct ValidateArgs {
 }
 
 /// Run `compgeom validate`: JSON `{"valid": bool, "problems": [{"message", "at": [x, y] |
-/// null}]}`; exit 0 either way (the answer is the output).
+/// null, "polygon", "feature"}]}`; exit 0 either way (the answer is the output).
 pub fn run_validate(args: &ValidateArgs) -> Result<(), CliError> {
     // (As written: a ring the other commands reject as bad input is a problem to report.)
     let src = args.input.read()?;
-    let (a, open) = io::read_polygons_as_written(&src.text, src.format, &src.name)?;
-    let problems = compgeom::overlay::validity_problems_as_written(&a, &open)?;
+    let read = io::read_polygons_as_written(&src.text, src.format, &src.name)?;
+    let problems =
+        compgeom::overlay::validity_problems_as_written(&read.polygons, &read.open_rings)?;
     let list: Vec<serde_json::Value> = problems
         .iter()
-        .map(|p| serde_json::json!({"message": p.message, "at": p.at.map(|q| [q.x, q.y])}))
+        .map(|p| {
+            serde_json::json!({
+                "message": p.message,
+                "at": p.at.map(|q| [q.x, q.y]),
+                "polygon": p.polygon,
+                "feature": p.polygon.map(|k| read.features[k]),
+            })
+        })
         .collect();
+    let a = read.polygons;
     let text = serde_json::to_string(&serde_json::json!({
         "valid": problems.is_empty(),
         "problems": list,

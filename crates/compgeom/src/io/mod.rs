@@ -340,6 +340,18 @@ pub struct OpenRing {
     pub last: Point2,
 }
 
+/// Polygons as an input wrote them, with the input feature of each and the rings it left
+/// open: what [`read_polygons_as_written`] reads.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PolygonsAsWritten {
+    /// The polygons, rings open as [`read_polygons`] stores them.
+    pub polygons: MultiPolygon,
+    /// Per polygon, its input feature, as [`read_polygon_features`] gives it.
+    pub features: Vec<usize>,
+    /// The WKT and GeoJSON rings that do not end at their first position.
+    pub open_rings: Vec<OpenRing>,
+}
+
 /// Polygons as the input wrote them, for validation
 /// ([`crate::overlay::validity_problems_as_written`] reports what is wrong with them):
 /// what [`read_polygons`] rejects as a ring is read here. A ring of fewer than three
@@ -352,24 +364,36 @@ pub struct OpenRing {
 /// use compgeom::io::{read_polygons, read_polygons_as_written, Format};
 /// let text = "POLYGON ((0 0, 4 0, 4 4, 0 4))";
 /// assert!(read_polygons(text, Format::Wkt, "in").is_err());
-/// let (polygons, open) = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
-/// assert_eq!(polygons.0[0].exterior.len(), 4);
-/// assert_eq!((open[0].polygon, open[0].ring), (0, 0));
-/// assert_eq!(open[0].last, compgeom::Point2::new(0.0, 4.0));
+/// let read = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+/// assert_eq!(read.polygons.0[0].exterior.len(), 4);
+/// let open = &read.open_rings[0];
+/// assert_eq!((open.polygon, open.ring), (0, 0));
+/// assert_eq!(open.last, compgeom::Point2::new(0.0, 4.0));
 /// ```
 pub fn read_polygons_as_written(
     text: &str,
     format: Format,
     source: &str,
-) -> Result<(MultiPolygon, Vec<OpenRing>)> {
-    match format {
-        Format::Csv => Ok((csv::read_polygons(text, source, 1)?, Vec::new())),
-        Format::Wkt => records::polygons_as_written(&wkt::read(text, source)?, source),
-        Format::GeoJson | Format::Json => {
-            records::polygons_as_written(&geojson::read(text, source)?, source)
+) -> Result<PolygonsAsWritten> {
+    let parts = match format {
+        Format::Csv => {
+            let polygons = csv::read_polygons(text, source, 1)?;
+            return Ok(PolygonsAsWritten {
+                features: (0..polygons.0.len()).collect(),
+                polygons,
+                open_rings: Vec::new(),
+            });
         }
-        Format::Off => Err(not_planar(source)),
-    }
+        Format::Wkt => wkt::read(text, source)?,
+        Format::GeoJson | Format::Json => geojson::read(text, source)?,
+        Format::Off => return Err(not_planar(source)),
+    };
+    let (polygons, open_rings) = records::polygons_as_written(&parts, source)?;
+    Ok(PolygonsAsWritten {
+        polygons,
+        features: records::polygon_features(&parts),
+        open_rings,
+    })
 }
 
 /// Polygons as [`read_polygons`] reads them, with the input feature of each: the index of

@@ -26,6 +26,9 @@ pub struct Problem {
     pub message: String,
     /// Where, when there is one point to show.
     pub at: Option<Point2>,
+    /// The polygon it is in (the first one named, where it names two), when it names
+    /// one: its index in the polygon set.
+    pub polygon: Option<usize>,
 }
 
 fn ring_name(p: usize, r: usize) -> String {
@@ -44,10 +47,11 @@ fn ring_name(p: usize, r: usize) -> String {
 /// use compgeom::io::{read_polygons_as_written, Format};
 /// use compgeom::overlay::validity_problems_as_written;
 /// let text = "POLYGON ((0 0, 4 0, 4 4, 0 4))";
-/// let (polygons, open) = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
-/// let problems = validity_problems_as_written(&polygons, &open).unwrap();
+/// let read = read_polygons_as_written(text, Format::Wkt, "in").unwrap();
+/// let problems = validity_problems_as_written(&read.polygons, &read.open_rings).unwrap();
 /// assert_eq!(problems.len(), 1);
 /// assert!(problems[0].message.starts_with("polygon 0 exterior: not closed"));
+/// assert_eq!(problems[0].polygon, Some(0));
 /// ```
 pub fn validity_problems_as_written(
     polygons: &MultiPolygon,
@@ -65,6 +69,7 @@ pub fn validity_problems_as_written(
                 r.first.y
             ),
             at: Some(r.last),
+            polygon: Some(r.polygon),
         })
         .collect();
     out.extend(validity_problems(polygons)?);
@@ -109,6 +114,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
                 out.push(Problem {
                     message: format!("{}: non-finite coordinate", ring_name(pi, ri)),
                     at: Some(*p),
+                    polygon: Some(pi),
                 });
                 continue;
             }
@@ -120,6 +126,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
                 out.push(Problem {
                     message: format!("{}: fewer than 3 distinct points", ring_name(pi, ri)),
                     at: r.first().copied(),
+                    polygon: Some(pi),
                 });
                 continue;
             }
@@ -148,6 +155,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
                 name(owner[o.segments[o.segments.len() - 1]])
             ),
             at: Some(o.from),
+            polygon: Some(rings[owner[o.segments[0]]].0),
         });
     }
     // Rings of one polygon touching at points: joined into classes as they touch, a
@@ -174,6 +182,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
                         .unwrap_or_default()
                 ),
                 at: Some(p.point),
+                polygon: Some(rings[owner[p.interior()[0]]].0),
             });
             continue;
         }
@@ -198,6 +207,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             out.push(Problem {
                 message: format!("{}: ring touches itself", name(k)),
                 at: Some(p.point),
+                polygon: Some(rings[k].0),
             });
             continue;
         }
@@ -217,6 +227,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
                             rings[k].0
                         ),
                         at: Some(p.point),
+                        polygon: Some(rings[k].0),
                     });
                 } else {
                     joined[a] = b;
@@ -244,6 +255,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             out.push(Problem {
                 message: format!("{}: lies outside its shell", ring_name(*pi, *ri)),
                 at: Some(*q),
+                polygon: Some(*pi),
             });
         }
     }
@@ -254,6 +266,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         out.push(Problem {
             message: "polygon interiors overlap".into(),
             at,
+            polygon: None,
         });
     }
     // Inside more holes than shells (shells counted +1, holes -1), where every hole is
@@ -270,6 +283,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         out.push(Problem {
             message: "holes overlap, or one lies inside another".into(),
             at,
+            polygon: None,
         });
     }
     // Orientation (RFC 7946).
@@ -291,6 +305,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
                     }
                 ),
                 at: r.first().copied(),
+                polygon: Some(*pi),
             });
         }
     }
