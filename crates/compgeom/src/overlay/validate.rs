@@ -239,6 +239,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         return Ok(out);
     }
     // Holes inside their shells.
+    let mut holes_outside = false;
     for (pi, ri, r) in &rings {
         if *ri == 0 {
             continue;
@@ -252,6 +253,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             .iter()
             .find(|&&q| winding(shell, q) == 0 && !on_ring(shell, q))
         {
+            holes_outside = true;
             out.push(Problem {
                 message: format!("{}: lies outside its shell", ring_name(*pi, *ri)),
                 at: Some(*q),
@@ -272,9 +274,6 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
     // Inside more holes than shells (shells counted +1, holes -1), where every hole is
     // inside its shell: holes overlapping, or one inside another. (A hole outside its
     // shell, reported above, is such a place too.)
-    let holes_outside = out
-        .iter()
-        .any(|p| p.message.ends_with("lies outside its shell"));
     if let Some(f) = d
         .face_ids()
         .find(|&f| !holes_outside && d.face(f).data.0 < 0)
