@@ -371,7 +371,17 @@ fn open_wkt_and_geojson_rings_are_errors() {
         Format::Wkt,
         "in",
     );
-    assert!(z.unwrap_err().to_string().contains("ring 1 is not closed"));
+    let e = z.unwrap_err().to_string();
+    assert!(e.contains("ring 1 is not closed: it ends at (0, 0) as it starts, but at z = 2, not its first z = 1"), "{e}");
+    let open = read_polygons_as_written(
+        "POLYGON Z ((0 0 1, 1 0 1, 1 1 1, 0 0 2))",
+        Format::Wkt,
+        "in",
+    )
+    .unwrap()
+    .open_rings;
+    assert_eq!((open.len(), open[0].z), (1, Some((1.0, 2.0))));
+    assert!(open[0].how_open().contains("z = 2"));
     assert!(read_polygons(
         "POLYGON Z ((0 0 1, 1 0 1, 1 1 1, 0 0 1))",
         Format::Wkt,
@@ -410,13 +420,15 @@ fn polygons_as_written_list_open_rings_and_keep_short_ones() {
                 polygon: 1,
                 ring: 0,
                 first: p(5.0, 5.0),
-                last: p(5.0, 9.0)
+                last: p(5.0, 9.0),
+                z: None,
             },
             OpenRing {
                 polygon: 1,
                 ring: 1,
                 first: p(6.0, 5.5),
-                last: p(8.0, 8.0)
+                last: p(8.0, 8.0),
+                z: None,
             },
         ]
     );

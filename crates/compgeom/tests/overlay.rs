@@ -223,6 +223,12 @@ fn validity_reasons() {
         !p.iter().any(|q| q.message.contains("holes overlap")),
         "{p:?}"
     );
+    // Empty rings are no rings (an empty polygon, an empty hole), as the readers take EMPTY.
+    let empty = MultiPolygon(vec![
+        Polygon::new(vec![], vec![]),
+        Polygon::new(rect(0., 0., 2., 2.).exterior, vec![vec![]]),
+    ]);
+    assert_eq!(validity_problems(&empty).unwrap(), []);
     let mut cw = rect(0., 0., 1., 1.).exterior;
     cw.reverse();
     let p = validity_problems(&MultiPolygon(vec![Polygon::new(cw, vec![])])).unwrap();
@@ -286,10 +292,22 @@ fn touching_rings_follow_the_ogc_rules() {
             "touches itself",
         ),
         ("POLYGON ((0 0, 10 0, 10 10, 5 0, 0 10, 0 0))", "touches itself"),
+        // A hole touching its shell at its first vertex, the rest outside.
+        (
+            "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (5 0, 7 -3, 3 -3, 5 0))",
+            "outside its shell",
+        ),
     ] {
         let p = problems(invalid);
         assert!(p.iter().any(|q| q.message.contains(want)), "{invalid}: {p:?}");
     }
+    // A hole sharing part of an edge with its shell: the overlap, not also a loop.
+    let p = problems("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (0 2, 0 4, 3 3, 0 2))");
+    assert!(p.iter().any(|q| q.message.contains("overlap")), "{p:?}");
+    assert!(
+        !p.iter().any(|q| q.message.contains("not connected")),
+        "{p:?}"
+    );
 }
 
 fn grid_ring() -> impl Strategy<Value = Vec<Point2>> {

@@ -338,6 +338,20 @@ pub struct OpenRing {
     pub first: Point2,
     /// Its last position, which should have repeated the first.
     pub last: Point2,
+    /// The first and the last position's z, where the input gave them (a ring whose
+    /// last position repeats the first in x and y but not in z is open too).
+    pub z: Option<(f64, f64)>,
+}
+
+impl OpenRing {
+    /// How the ring's ends differ, in words: "it ends at (x, y), not at its first
+    /// position (x, y)", or, where only z differs, the two z values.
+    pub fn how_open(&self) -> String {
+        records::how_open(
+            (self.first.x, self.first.y, self.z.map(|z| z.0)),
+            (self.last.x, self.last.y, self.z.map(|z| z.1)),
+        )
+    }
 }
 
 /// Polygons as an input wrote them, with the input feature of each and the rings it left

@@ -92,19 +92,29 @@ fn unclosed<'a>(part: &Part, ring: &'a [Coord]) -> Option<(&'a Coord, &'a Coord)
     }
 }
 
+/// How a ring's first and last positions `(x, y, z)` differ, in words (see
+/// [`super::OpenRing::how_open`]).
+pub(crate) fn how_open(first: (f64, f64, Option<f64>), last: (f64, f64, Option<f64>)) -> String {
+    match (first, last) {
+        ((x0, y0, Some(z0)), (x1, y1, Some(z1))) if (x0, y0) == (x1, y1) => {
+            format!("it ends at ({x1}, {y1}) as it starts, but at z = {z1}, not its first z = {z0}")
+        }
+        ((x0, y0, _), (x1, y1, _)) => {
+            format!("it ends at ({x1}, {y1}), not at its first position ({x0}, {y0})")
+        }
+    }
+}
+
 /// `Err` naming ring `i` (0-based) of `part` when it is [`unclosed`].
 fn check_closed(part: &Part, i: usize, ring: &[Coord], source: &str) -> Result<()> {
     match unclosed(part, ring) {
         Some((first, last)) => Err(part.error(
             source,
             &format!(
-                "ring {} is not closed: it ends at ({}, {}), not at its first position \
-                 ({}, {}); a WKT or GeoJSON polygon ring repeats its first position at its end",
+                "ring {} is not closed: {}; a WKT or GeoJSON polygon ring repeats its first \
+                 position at its end",
                 i + 1,
-                last.x,
-                last.y,
-                first.x,
-                first.y
+                how_open((first.x, first.y, first.z), (last.x, last.y, last.z))
             ),
         )),
         None => Ok(()),
@@ -266,6 +276,7 @@ fn polygons_by(
                     ring: open.len(),
                     first: p2(first),
                     last: p2(last),
+                    z: first.z.zip(last.z),
                 });
             }
             let ring: Vec<Point2> = ring.iter().map(p2).collect();

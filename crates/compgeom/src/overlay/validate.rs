@@ -12,12 +12,13 @@
 //! clockwise. As the OGC rules allow, two rings of a polygon may touch at one point (a
 //! vertex of both, or a vertex of one on an edge of the other), and two polygons at
 //! points. Cost: one intersection sweep and one labelled arrangement, O((n + k) log n),
-//! plus O(n) per hole for containment.
+//! plus O(size of its shell) per hole for containment.
 use super::boolean::{boolean_dcel, FillRule};
 use crate::intersect::find_intersections;
 use crate::io::{ring_orientation, OpenRing};
-use crate::kernel::{orient2d, MultiPolygon, Orientation, Point2, Segment2};
+use crate::kernel::{orient2d, MultiPolygon, Orientation, Point2, Polygon, Segment2};
 use crate::Result;
+use std::borrow::Cow;
 
 /// One reason a polygon set is invalid.
 #[derive(Debug, Clone, PartialEq)]
@@ -61,12 +62,9 @@ pub fn validity_problems_as_written(
         .iter()
         .map(|r| Problem {
             message: format!(
-                "{}: not closed: it ends at ({}, {}), not at its first position ({}, {})",
+                "{}: not closed: {}",
                 ring_name(r.polygon, r.ring),
-                r.last.x,
-                r.last.y,
-                r.first.x,
-                r.first.y
+                r.how_open()
             ),
             at: Some(r.last),
             polygon: Some(r.polygon),
@@ -105,7 +103,13 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
     let mut out = Vec::new();
     let mut rings: Vec<(usize, usize, Vec<Point2>)> = Vec::new();
     for (pi, poly) in polygons.0.iter().enumerate() {
+        // (An empty hole is no hole, and a polygon of empty rings no polygon, as the
+        // readers take `EMPTY`.)
+        let empty = poly.rings().all(Vec::is_empty);
         for (ri, ring) in poly.rings().enumerate() {
+            if ring.is_empty() && (ri > 0 || empty) {
+                continue;
+            }
             let mut r = ring.clone();
             if r.len() > 1 && r[0] == r[r.len() - 1] {
                 r.pop();
@@ -212,8 +216,10 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             continue;
         }
         // The rings of each polygon here (consecutive: the rings are numbered polygon by
-        // polygon), each joined to the first.
-        for group in at_point.chunk_by(|a, b| rings[a.0].0 == rings[b.0].0) {
+        // polygon), each joined to the first. (Not where edges overlap, reported above:
+        // the ends of an overlap are touches, and the loop they make says nothing more.)
+        let groups = at_point.chunk_by(|a, b| rings[a.0].0 == rings[b.0].0);
+        for group in groups.filter(|_| found.overlaps.is_empty()) {
             let first = group[0].0;
             for &(k, _) in &group[1..] {
                 let (a, b) = (find(&mut joined, first), find(&mut joined, k));
@@ -238,21 +244,23 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
     if !out.is_empty() {
         return Ok(out);
     }
-    // Holes inside their shells.
+    // Holes inside their shells. With no crossings, overlaps or loops left, a hole meets
+    // its shell at one point at most, so its other points are all on one side: one of
+    // them decides (O(shell) per hole).
+    let mut shell_of = vec![usize::MAX; polygons.0.len()];
+    for (k, (pi, ri, _)) in rings.iter().enumerate() {
+        if *ri == 0 {
+            shell_of[*pi] = k;
+        }
+    }
     let mut holes_outside = false;
     for (pi, ri, r) in &rings {
         if *ri == 0 {
             continue;
         }
-        let shell = &rings
-            .iter()
-            .find(|(p, k, _)| p == pi && *k == 0)
-            .expect("shell")
-            .2;
-        if let Some(q) = r
-            .iter()
-            .find(|&&q| winding(shell, q) == 0 && !on_ring(shell, q))
-        {
+        let shell = &rings[shell_of[*pi]].2;
+        let off_shell = r.iter().find(|&&q| !on_ring(shell, q));
+        if let Some(q) = off_shell.filter(|&&q| winding(shell, q) == 0) {
             holes_outside = true;
             out.push(Problem {
                 message: format!("{}: lies outside its shell", ring_name(*pi, *ri)),
@@ -262,7 +270,11 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         }
     }
     // Interiors of polygons overlapping: a face covered twice.
-    let d = boolean_dcel(polygons, &MultiPolygon::default(), FillRule::Positive)?;
+    let d = boolean_dcel(
+        &without_empty_rings(polygons),
+        &MultiPolygon::default(),
+        FillRule::Positive,
+    )?;
     if let Some(f) = d.face_ids().find(|&f| d.face(f).data.0 > 1) {
         let at = d.face_polygon(f).and_then(|p| p.exterior.first().copied());
         out.push(Problem {
@@ -309,6 +321,21 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         }
     }
     Ok(out)
+}
+
+/// `polygons` without their empty holes and empty polygons (which the checks skip).
+fn without_empty_rings(polygons: &MultiPolygon) -> Cow<'_, MultiPolygon> {
+    if !polygons.0.iter().flat_map(|p| p.rings()).any(Vec::is_empty) {
+        return Cow::Borrowed(polygons);
+    }
+    let kept = polygons.0.iter().filter(|p| !p.rings().all(Vec::is_empty));
+    Cow::Owned(MultiPolygon(
+        kept.map(|p| {
+            let holes = p.holes.iter().filter(|h| !h.is_empty()).cloned();
+            Polygon::new(p.exterior.clone(), holes.collect())
+        })
+        .collect(),
+    ))
 }
 
 /// The class of ring `k` in the union–find `parent`.
