@@ -167,6 +167,10 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
     // two points, or a shell and two holes in a chain) closes a loop of boundary that
     // cuts the interior apart.
     let mut joined: Vec<usize> = (0..rings.len()).collect();
+    // (Ring and passes per ring at one point, reused: every ring vertex is a meeting
+    // point.)
+    let mut passes: Vec<(usize, usize)> = Vec::new();
+    let mut at_point: Vec<(usize, usize)> = Vec::new();
     for p in &found.points {
         // Edges crossing (two through the point, or one with nothing else there); one
         // edge through a vertex of another ring is a touch, below.
@@ -192,7 +196,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         }
         // Each ring's passes through the point: an edge through it once, a vertex once
         // (its two edges end there).
-        let mut passes: Vec<(usize, usize)> = Vec::new();
+        passes.clear();
         for &s in p.interior() {
             passes.push((owner[s], 2));
         }
@@ -200,7 +204,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
             passes.push((owner[s], 1));
         }
         passes.sort_unstable();
-        let mut at_point: Vec<(usize, usize)> = Vec::new();
+        at_point.clear();
         for &(k, ends) in &passes {
             match at_point.last_mut() {
                 Some((last, n)) if *last == k => *n += ends,
