@@ -621,6 +621,48 @@ fn geojson_geometry_feature_and_collection() {
     );
 }
 
+/// An empty polygon in a MultiPolygon is no polygon, wherever it stands (the `geojson`
+/// crate alone rejects one that comes first), also inside a collection; the polygons
+/// after it keep their feature.
+#[test]
+fn geojson_multipolygons_with_empty_members() {
+    let square = "[[[0,0],[4,0],[4,4],[0,4],[0,0]]]";
+    let tri = "[[[5,5],[6,5],[5,6],[5,5]]]";
+    for coordinates in [
+        format!("[[], {square}]"),
+        format!("[[], [], {square}, [], {tri}]"),
+        format!("[[[]], {square}, [], {tri}]"),
+    ] {
+        let geometry = format!(r#"{{"type": "MultiPolygon", "coordinates": {coordinates}}}"#);
+        let want = if coordinates.contains(tri) { 2 } else { 1 };
+        let mp = read_polygons(&geometry, Format::GeoJson, "g").unwrap();
+        assert_eq!(mp.0.len(), want, "{geometry}");
+        assert_eq!(mp.0[0].exterior.len(), 4, "{geometry}");
+        let fc = format!(
+            r#"{{"type": "FeatureCollection", "features": [
+                {{"type": "Feature", "properties": {{}}, "geometry": {{"type": "Polygon", "coordinates": {tri}}}}},
+                {{"type": "Feature", "properties": {{}}, "geometry":
+                    {{"type": "GeometryCollection", "geometries": [{geometry}]}}}}]}}"#
+        );
+        let read = compgeom::io::read_polygons_as_written(&fc, Format::GeoJson, "fc").unwrap();
+        assert_eq!(read.polygons.0.len(), 1 + want, "{fc}");
+        assert_eq!(read.features[0], 0);
+        assert!(
+            read.features[1..].iter().all(|&f| f == 1),
+            "{:?}",
+            read.features
+        );
+    }
+    // Still an error where the coordinates are wrong for other reasons.
+    let (m, line) = parse_error(read_polygons(
+        "{\"type\": \"MultiPolygon\",\n\"coordinates\": [[], [[[0, \"a\"]]]]}",
+        Format::GeoJson,
+        "g",
+    ));
+    assert!(m.contains("invalid GeoJSON"), "{m}");
+    assert_eq!(line, Some(2));
+}
+
 #[test]
 fn bare_json_arrays_as_points_rings_and_polygons() {
     assert_eq!(

@@ -154,7 +154,10 @@ pub(crate) fn read(text: &str, source: &str) -> Result<Vec<Part>> {
         let value: Value = serde_json::from_str(text).map_err(|e| json_error(&e, source))?;
         return bare_arrays(&value, source);
     }
-    let doc: GeoJson = serde_json::from_str(text).map_err(|e| json_error(&e, source))?;
+    let doc: GeoJson = match serde_json::from_str(text) {
+        Ok(doc) => doc,
+        Err(e) => without_empty_polygons(text).ok_or_else(|| json_error(&e, source))?,
+    };
     let mut parts = Vec::new();
     // The line of the opening brace.
     let leading = &text[..text.len() - trimmed.len()];
@@ -177,6 +180,31 @@ pub(crate) fn read(text: &str, source: &str) -> Result<Vec<Part>> {
         }
     }
     Ok(parts)
+}
+
+/// The document `text` with the empty polygons of its MultiPolygons left out, where
+/// that makes it GeoJSON. (The `geojson` crate tells how deeply coordinates nest from
+/// their first element, so a MultiPolygon whose first polygon is `[]` fails to parse;
+/// empty members are nothing, as [`flatten`] reads them.) Only tried on text that
+/// failed: none of this costs valid input anything.
+fn without_empty_polygons(text: &str) -> Option<GeoJson> {
+    fn mend(v: &mut Value) {
+        match v {
+            Value::Object(o) => {
+                if o.get("type").and_then(Value::as_str) == Some("MultiPolygon") {
+                    if let Some(Value::Array(polygons)) = o.get_mut("coordinates") {
+                        polygons.retain(|p| p.as_array().map_or(true, |rings| !rings.is_empty()));
+                    }
+                }
+                o.values_mut().for_each(mend);
+            }
+            Value::Array(items) => items.iter_mut().for_each(mend),
+            _ => {}
+        }
+    }
+    let mut value: Value = serde_json::from_str(text).ok()?;
+    mend(&mut value);
+    serde_json::from_value(value).ok()
 }
 
 /// How deeply arrays nest at the start of `v` (0 for a number).

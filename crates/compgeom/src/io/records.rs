@@ -217,10 +217,16 @@ pub(crate) fn segments(parts: &[Part], source: &str) -> Result<Vec<Segment2>> {
 pub(crate) fn polygon_features(parts: &[Part]) -> Vec<usize> {
     parts
         .iter()
-        .filter(|p| matches!(&p.body, Body::Polygon(rings) if !rings.is_empty()))
+        .filter(|p| matches!(&p.body, Body::Polygon(rings) if !all_empty(rings)))
         .enumerate()
         .map(|(i, p)| p.feature.unwrap_or(i))
         .collect()
+}
+
+/// Whether a polygon has no points: no rings, or only empty ones (GeoJSON's `[[]]`), is
+/// no polygon, as an EMPTY geometry contributes nothing.
+fn all_empty(rings: &[Vec<Coord>]) -> bool {
+    rings.iter().all(Vec::is_empty)
 }
 
 /// Polygons with open rings of at least 3 vertices; anything else is an error, and so
@@ -262,6 +268,9 @@ fn polygons_by(
         let Body::Polygon(rings) = &part.body else {
             return Err(part.error(source, "not a polygon"));
         };
+        if all_empty(rings) {
+            continue;
+        }
         let mut open = Vec::with_capacity(rings.len());
         for (i, ring) in rings.iter().enumerate() {
             if i > 0 && ring.is_empty() {
