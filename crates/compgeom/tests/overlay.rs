@@ -204,9 +204,40 @@ fn validity_reasons() {
     let over = MultiPolygon(vec![rect(0., 0., 2., 2.), rect(1., 1., 2., 2.)]);
     let p = validity_problems(&over).unwrap();
     assert!(p.iter().any(|q| q.message.contains("cross")), "{p:?}");
-    let inside = MultiPolygon(vec![rect(0., 0., 4., 4.), rect(1., 1., 1., 1.)]);
+    // Interiors overlapping are named by the polygons that overlap (once a pair), at a
+    // point inside both: one inside another, a diamond touching its square at every
+    // vertex (no vertex of it inside the other), one inside another's hole (valid).
+    let inside = MultiPolygon(vec![
+        rect(0., 0., 4., 4.),
+        rect(1., 1., 1., 1.),
+        rect(2.5, 2.5, 1., 1.),
+    ]);
     let p = validity_problems(&inside).unwrap();
-    assert!(p.iter().any(|q| q.message.contains("overlap")), "{p:?}");
+    let named: Vec<_> = p.iter().map(|q| (q.message.as_str(), q.polygon)).collect();
+    assert_eq!(
+        named,
+        [
+            ("interiors of polygon 0 and polygon 1 overlap", Some(0)),
+            ("interiors of polygon 0 and polygon 2 overlap", Some(0)),
+        ],
+        "{p:?}"
+    );
+    let at = p[1].at.unwrap();
+    assert!(
+        at.x > 2.5 && at.x < 3.5 && at.y > 2.5 && at.y < 3.5,
+        "{p:?}"
+    );
+    let diamond = Polygon::new(vec![pt(2., 0.), pt(4., 2.), pt(2., 4.), pt(0., 2.)], vec![]);
+    let p = validity_problems(&MultiPolygon(vec![rect(0., 0., 4., 4.), diamond.clone()])).unwrap();
+    assert_eq!(p.len(), 1, "{p:?}");
+    assert_eq!(p[0].message, "interiors of polygon 0 and polygon 1 overlap");
+    let mut square_hole = rect(0., 0., 4., 4.).exterior;
+    square_hole.reverse();
+    let frame = Polygon::new(rect(-1., -1., 6., 6.).exterior, vec![square_hole]);
+    assert_eq!(
+        validity_problems(&MultiPolygon(vec![frame, diamond])).unwrap(),
+        []
+    );
     let mut hole = rect(5., 5., 1., 1.).exterior;
     hole.reverse();
     let outside = MultiPolygon(vec![Polygon::new(
@@ -281,10 +312,19 @@ fn touching_rings_follow_the_ogc_rules() {
             "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (5 0, 4 2, 6 2, 5 0), (4 2, 2 5, 5 6, 4 2), (5 6, 8 5, 6 2, 5 6))",
             "not connected",
         ),
-        // A hole inside another.
+        // A hole inside another; also where an island in it covers the nesting, and
+        // where another hole of the polygon is outside its shell.
         (
             "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 9, 9 9, 9 1, 1 1), (2 2, 2 8, 8 8, 8 2, 2 2))",
-            "lies inside another",
+            "polygon 0 hole 1: lies inside hole 0",
+        ),
+        (
+            "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 9, 9 9, 9 1, 1 1), (2 2, 2 8, 8 8, 8 2, 2 2)), ((3 3, 7 3, 7 7, 3 7, 3 3)))",
+            "polygon 0 hole 1: lies inside hole 0",
+        ),
+        (
+            "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (20 0, 21 0, 21 1, 20 0), (2 2, 2 8, 8 8, 8 2, 2 2), (3 3, 3 7, 7 7, 7 3, 3 3))",
+            "polygon 0 hole 2: lies inside hole 1",
         ),
         // A ring through one point twice, and a vertex of a ring on its own edge.
         (

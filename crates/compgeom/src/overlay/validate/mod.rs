@@ -5,20 +5,27 @@
 //! intersection sweep); a ring passing twice through a point (self-touching: at a vertex
 //! of its own, or a vertex of it on another of its edges); the rings of a polygon
 //! touching in a loop (two rings meeting at two points, or a chain of rings back to the
-//! first: the interior is not connected); a hole with a vertex strictly outside its
-//! shell; interiors of two polygons overlapping (a face of the arrangement covered
-//! twice, after orienting every polygon); holes overlapping or nested (a face inside more
-//! holes than shells); and, as RFC 7946 asks, shells counter-clockwise and holes
-//! clockwise. As the OGC rules allow, two rings of a polygon may touch at one point (a
-//! vertex of both, or a vertex of one on an edge of the other), and two polygons at
-//! points. Cost: one intersection sweep and one labelled arrangement, O((n + k) log n),
-//! plus O(size of its shell) per hole for containment.
-use super::boolean::{boolean_dcel, FillRule};
+//! first: the interior is not connected); a hole outside its shell, and a hole inside
+//! another hole of its polygon ([`nesting`]); interiors of two polygons overlapping (a
+//! face of the arrangement covered twice, after orienting every polygon, named by the
+//! polygons covering a point inside it); and, as RFC 7946 asks, shells
+//! counter-clockwise and holes clockwise. As the OGC rules allow, two rings of a polygon
+//! may touch at one point (a vertex of both, or a vertex of one on an edge of the
+//! other), and two polygons at points. Cost: one intersection sweep and one labelled
+//! arrangement, O((n + k) log n); the nesting tests O(n log n) plus the holes of a
+//! polygon whose boxes overlap in x; naming the polygons of each overlap, a sweep over
+//! the shells' boxes and a point inside each face covered twice.
+mod nesting;
+
+use super::boolean::{boolean_dcel, BooleanEdge, FillRule};
+use crate::dcel::Dcel;
 use crate::intersect::find_intersections;
 use crate::io::{ring_orientation, OpenRing};
 use crate::kernel::{orient2d, MultiPolygon, Orientation, Point2, Polygon, Segment2};
 use crate::Result;
+use nesting::{bounds, boxes_within, point_inside, windings, Touches};
 use std::borrow::Cow;
+use std::ops::Range;
 
 /// One reason a polygon set is invalid.
 #[derive(Debug, Clone, PartialEq)]
@@ -72,20 +79,6 @@ pub fn validity_problems_as_written(
         .collect();
     out.extend(validity_problems(polygons)?);
     Ok(out)
-}
-
-/// Exact winding number of a closed ring around `q` (not on it).
-fn winding(ring: &[Point2], q: Point2) -> i32 {
-    let mut w = 0;
-    for i in 0..ring.len() {
-        let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
-        if a.y <= q.y && b.y > q.y && orient2d(a, b, q) == Orientation::CounterClockwise {
-            w += 1;
-        } else if a.y > q.y && b.y <= q.y && orient2d(a, b, q) == Orientation::Clockwise {
-            w -= 1;
-        }
-    }
-    w
 }
 
 /// Every reason `polygons` is not valid; empty when it is. A ring's closing point equal
@@ -171,6 +164,7 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
     // point.)
     let mut passes: Vec<(usize, usize)> = Vec::new();
     let mut at_point: Vec<(usize, usize)> = Vec::new();
+    let mut touches = Touches::default();
     for p in &found.points {
         // Edges crossing (two through the point, or one with nothing else there); one
         // edge through a vertex of another ring is a touch, below.
@@ -224,6 +218,11 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         // the ends of an overlap are touches, and the loop they make says nothing more.)
         let groups = at_point.chunk_by(|a, b| rings[a.0].0 == rings[b.0].0);
         for group in groups.filter(|_| found.overlaps.is_empty()) {
+            for (i, &(a, _)) in group.iter().enumerate() {
+                for &(b, _) in &group[i + 1..] {
+                    touches.add(a, b, p.point);
+                }
+            }
             let first = group[0].0;
             for &(k, _) in &group[1..] {
                 let (a, b) = (find(&mut joined, first), find(&mut joined, k));
@@ -248,51 +247,29 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
     if !out.is_empty() {
         return Ok(out);
     }
-    // Holes inside their shells. With no crossings, overlaps or loops left, a hole meets
-    // its shell at one point at most, so its other points are all on one side: one of
-    // them decides (O(shell) per hole).
-    let mut shell_of = vec![usize::MAX; polygons.0.len()];
-    for (k, (pi, ri, _)) in rings.iter().enumerate() {
-        if *ri == 0 {
-            shell_of[*pi] = k;
-        }
+    touches.sort();
+    // The rings of each polygon (numbered polygon by polygon, the shell first).
+    let mut spans: Vec<Range<usize>> = Vec::new();
+    for group in rings.chunk_by(|a, b| a.0 == b.0) {
+        let start = spans.last().map_or(0, |s| s.end);
+        spans.push(start..start + group.len());
     }
-    let mut holes_outside = false;
-    for (pi, ri, r) in &rings {
-        if *ri == 0 {
-            continue;
-        }
-        let shell = &rings[shell_of[*pi]].2;
-        let off_shell = r.iter().find(|&&q| !on_ring(shell, q));
-        if let Some(q) = off_shell.filter(|&&q| winding(shell, q) == 0) {
-            holes_outside = true;
-            out.push(Problem {
-                message: format!("{}: lies outside its shell", ring_name(*pi, *ri)),
-                at: Some(*q),
-                polygon: Some(*pi),
-            });
-        }
-    }
+    let before = out.len();
+    let outside = holes_outside_shells(&rings, &spans, &touches, &mut out);
+    holes_inside_holes(&rings, &spans, &touches, &outside, &mut out);
+    let hole_problems = out.len() > before;
     // Interiors of polygons overlapping: a face covered twice.
     let d = boolean_dcel(
         &without_empty_rings(polygons),
         &MultiPolygon::default(),
         FillRule::Positive,
     )?;
-    if let Some(f) = d.face_ids().find(|&f| d.face(f).data.0 > 1) {
-        let at = d.face_polygon(f).and_then(|p| p.exterior.first().copied());
-        out.push(Problem {
-            message: "polygon interiors overlap".into(),
-            at,
-            polygon: None,
-        });
-    }
-    // Inside more holes than shells (shells counted +1, holes -1), where every hole is
-    // inside its shell: holes overlapping, or one inside another. (A hole outside its
-    // shell, reported above, is such a place too.)
+    overlapping_polygons(&d, &rings, &spans, &mut out);
+    // A face inside more holes than shells (shells +1, holes -1) is a hole outside its
+    // shell or inside another, found above; the count is the check of that.
     if let Some(f) = d
         .face_ids()
-        .find(|&f| !holes_outside && d.face(f).data.0 < 0)
+        .find(|&f| !hole_problems && d.face(f).data.0 < 0)
     {
         let at = d.face_polygon(f).and_then(|p| p.exterior.first().copied());
         out.push(Problem {
@@ -325,6 +302,168 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
         }
     }
     Ok(out)
+}
+
+/// A ring of the polygons checked: its polygon, its number in the polygon (0 the shell),
+/// its points.
+type Ring = (usize, usize, Vec<Point2>);
+
+/// Reports each hole with a point outside its shell (so all of it, as nothing crosses);
+/// true per such hole.
+fn holes_outside_shells(
+    rings: &[Ring],
+    spans: &[Range<usize>],
+    touches: &Touches,
+    out: &mut Vec<Problem>,
+) -> Vec<bool> {
+    let mut outside = vec![false; rings.len()];
+    for span in spans {
+        let (shell, holes) = (span.start, span.start + 1..span.end);
+        let queries: Vec<Point2> = holes
+            .clone()
+            .map(|h| touches.off(&rings[h].2, h, shell))
+            .collect();
+        let windings = windings(&rings[shell].2, &queries);
+        for ((h, q), w) in holes.zip(queries).zip(windings) {
+            if w == 0 {
+                outside[h] = true;
+                out.push(Problem {
+                    message: format!(
+                        "{}: lies outside its shell",
+                        ring_name(rings[h].0, rings[h].1)
+                    ),
+                    at: Some(q),
+                    polygon: Some(rings[h].0),
+                });
+            }
+        }
+    }
+    outside
+}
+
+/// Reports each hole inside another hole of its polygon (holes overlapping in area
+/// without crossing are nested): tested where the box of one holds the other's.
+fn holes_inside_holes(
+    rings: &[Ring],
+    spans: &[Range<usize>],
+    touches: &Touches,
+    outside: &[bool],
+    out: &mut Vec<Problem>,
+) {
+    for span in spans {
+        let holes: Vec<usize> = (span.start + 1..span.end)
+            .filter(|&h| !outside[h])
+            .collect();
+        if holes.len() < 2 {
+            continue;
+        }
+        let boxes: Vec<_> = holes.iter().map(|&h| bounds(&rings[h].2)).collect();
+        // (inner, outer), by outer: each outer hole's winding numbers in one pass.
+        let mut pairs = boxes_within(&boxes);
+        pairs.sort_unstable_by_key(|&(inner, outer)| (outer, inner));
+        for group in pairs.chunk_by(|a, b| a.1 == b.1) {
+            let g = holes[group[0].1];
+            let inner = group.iter().map(|&(i, _)| holes[i]);
+            let queries: Vec<Point2> = inner
+                .clone()
+                .map(|h| touches.off(&rings[h].2, h, g))
+                .collect();
+            for ((h, q), w) in inner.zip(&queries).zip(windings(&rings[g].2, &queries)) {
+                if w != 0 {
+                    out.push(Problem {
+                        message: format!(
+                            "{}: lies inside hole {}",
+                            ring_name(rings[h].0, rings[h].1),
+                            rings[g].1 - 1
+                        ),
+                        at: Some(*q),
+                        polygon: Some(rings[h].0),
+                    });
+                }
+            }
+        }
+    }
+}
+
+/// Reports the pairs of polygons whose interiors overlap, from the faces of `d` (the
+/// arrangement of all rings, each face's count of polygons covering it) covered twice:
+/// two of the polygons covering a point inside such a face, each pair once, in order.
+/// Where no such point is found (a face thinner than the rounding of a point), the
+/// overlap is reported without names.
+fn overlapping_polygons(
+    d: &Dcel<(), BooleanEdge, (i32, i32)>,
+    rings: &[Ring],
+    spans: &[Range<usize>],
+    out: &mut Vec<Problem>,
+) {
+    let twice: Vec<_> = d.face_ids().filter(|&f| d.face(f).data.0 > 1).collect();
+    let Some(&first) = twice.first() else {
+        return;
+    };
+    let inside: Vec<Point2> = twice
+        .iter()
+        .filter_map(|&f| d.face_polygon(f))
+        .filter_map(|face| point_inside(&face.exterior, &face.holes))
+        .collect();
+    let mut pairs: Vec<(usize, usize, Point2)> = two_covering(rings, spans, &inside)
+        .into_iter()
+        .zip(&inside)
+        .filter_map(|(two, &q)| two.map(|(a, b)| (a, b, q)))
+        .collect();
+    if pairs.is_empty() {
+        let at = d
+            .face_polygon(first)
+            .and_then(|p| p.exterior.first().copied());
+        out.push(Problem {
+            message: "polygon interiors overlap".into(),
+            at,
+            polygon: None,
+        });
+    }
+    pairs.sort_by_key(|&(a, b, _)| (a, b));
+    pairs.dedup_by_key(|&mut (a, b, _)| (a, b));
+    out.extend(pairs.into_iter().map(|(a, b, q)| Problem {
+        message: format!("interiors of polygon {a} and polygon {b} overlap"),
+        at: Some(q),
+        polygon: Some(a),
+    }));
+}
+
+/// For each of `points` (none on a ring), two polygons that cover it, the smaller
+/// number first, if there are two: a sweep in x over the points and the shells' boxes,
+/// each point tested against the shells whose boxes hold it until two cover it.
+fn two_covering(
+    rings: &[Ring],
+    spans: &[Range<usize>],
+    points: &[Point2],
+) -> Vec<Option<(usize, usize)>> {
+    let boxes: Vec<_> = spans.iter().map(|s| bounds(&rings[s.start].2)).collect();
+    let covers = |span: &Range<usize>, q: Point2| {
+        windings(&rings[span.start].2, &[q])[0] != 0
+            && (span.start + 1..span.end).all(|h| windings(&rings[h].2, &[q])[0] == 0)
+    };
+    let mut by_x0: Vec<usize> = (0..spans.len()).collect();
+    by_x0.sort_unstable_by(|&i, &j| boxes[i].0.total_cmp(&boxes[j].0));
+    let mut by_x: Vec<usize> = (0..points.len()).collect();
+    by_x.sort_unstable_by(|&i, &j| points[i].x.total_cmp(&points[j].x));
+    let (mut active, mut next) = (Vec::new(), 0);
+    let mut out = vec![None; points.len()];
+    for i in by_x {
+        let q = points[i];
+        while next < by_x0.len() && boxes[by_x0[next]].0 <= q.x {
+            active.push(by_x0[next]);
+            next += 1;
+        }
+        active.retain(|&s| boxes[s].1 >= q.x);
+        let mut found = active
+            .iter()
+            .filter(|&&s| boxes[s].2 <= q.y && q.y <= boxes[s].3 && covers(&spans[s], q))
+            .map(|&s| rings[spans[s].start].0);
+        if let (Some(a), Some(b)) = (found.next(), found.next()) {
+            out[i] = Some((a.min(b), a.max(b)));
+        }
+    }
+    out
 }
 
 /// `polygons` without their empty holes and empty polygons (which the checks skip).

@@ -1,0 +1,238 @@
+//! Which rings lie inside which, for [`super::validity_problems`], once no edges cross or
+//! overlap and no rings of a polygon touch in a loop.
+//!
+//! Then two rings of one polygon meet at one point at most (the touches the intersection
+//! sweep found, [`Touches`]), so a vertex of one that is not that point lies strictly
+//! inside the other or strictly outside it, and so does the whole ring: one exact
+//! winding number decides. The winding numbers are taken in one pass over the edges of
+//! the ring around, for all the points asked of it at once ([`windings`]), so a shell
+//! with many holes costs O((s + h) log h), not O(s) per hole.
+
+use crate::kernel::{orient2d, Orientation, Point2};
+
+/// The point where each pair of rings of one polygon touch, `(ring, ring, point)` with
+/// the smaller ring first, sorted.
+#[derive(Default)]
+pub(super) struct Touches(Vec<(usize, usize, Point2)>);
+
+impl Touches {
+    /// Records that rings `a` and `b` (of one polygon) meet at `at`.
+    pub(super) fn add(&mut self, a: usize, b: usize, at: Point2) {
+        self.0.push((a.min(b), a.max(b), at));
+    }
+
+    /// Ready for [`Touches::between`].
+    pub(super) fn sort(&mut self) {
+        self.0.sort_unstable_by_key(|&(a, b, _)| (a, b));
+    }
+
+    /// Where rings `a` and `b` touch, if they do (at one point: with no loops there is
+    /// no second).
+    fn between(&self, a: usize, b: usize) -> Option<Point2> {
+        let key = (a.min(b), a.max(b));
+        let k = self.0.partition_point(|&(s, t, _)| (s, t) < key);
+        self.0
+            .get(k)
+            .filter(|&&(s, t, _)| (s, t) == key)
+            .map(|&(_, _, p)| p)
+    }
+
+    /// A vertex of `ring` (number `k`) that is not on ring `other`: its first, or its
+    /// second where the first is where they touch (consecutive vertices differ).
+    pub(super) fn off(&self, ring: &[Point2], k: usize, other: usize) -> Point2 {
+        if self.between(k, other) == Some(ring[0]) {
+            ring[1]
+        } else {
+            ring[0]
+        }
+    }
+}
+
+/// The winding number of the closed `ring` around each of `queries`, none of which is on
+/// it, exactly; O((n + m) log m) for n edges and m queries, plus the queries within each
+/// edge's span of y.
+pub(super) fn windings(ring: &[Point2], queries: &[Point2]) -> Vec<i32> {
+    let mut by_y: Vec<usize> = (0..queries.len()).collect();
+    by_y.sort_unstable_by(|&i, &j| queries[i].y.total_cmp(&queries[j].y));
+    let ys: Vec<f64> = by_y.iter().map(|&i| queries[i].y).collect();
+    let mut out = vec![0; queries.len()];
+    for (i, &a) in ring.iter().enumerate() {
+        let b = ring[(i + 1) % ring.len()];
+        // An edge counts for the points level with it from its lower end up to, not
+        // including, its upper end: +1 going up with the point on its left, -1 going
+        // down with the point on its right.
+        let (lo, hi, up) = if a.y < b.y {
+            (a.y, b.y, true)
+        } else {
+            (b.y, a.y, false)
+        };
+        let from = ys.partition_point(|&y| y < lo);
+        let to = ys.partition_point(|&y| y < hi);
+        for &q in &by_y[from..to] {
+            match (orient2d(a, b, queries[q]), up) {
+                (Orientation::CounterClockwise, true) => out[q] += 1,
+                (Orientation::Clockwise, false) => out[q] -= 1,
+                _ => {}
+            }
+        }
+    }
+    out
+}
+
+/// A box's sides: `(x0, x1, y0, y1)`.
+type Bounds = (f64, f64, f64, f64);
+
+pub(super) fn bounds(ring: &[Point2]) -> Bounds {
+    ring.iter().fold(
+        (
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ),
+        |(x0, x1, y0, y1), p| (x0.min(p.x), x1.max(p.x), y0.min(p.y), y1.max(p.y)),
+    )
+}
+
+/// The pairs `(inner, outer)` of `boxes` where the box of `outer` holds that of `inner`
+/// (both ways for equal boxes), each box against those it overlaps in x.
+pub(super) fn boxes_within(boxes: &[Bounds]) -> Vec<(usize, usize)> {
+    let holds = |o: &Bounds, i: &Bounds| o.0 <= i.0 && i.1 <= o.1 && o.2 <= i.2 && i.3 <= o.3;
+    let mut by_x: Vec<usize> = (0..boxes.len()).collect();
+    by_x.sort_unstable_by(|&i, &j| boxes[i].0.total_cmp(&boxes[j].0));
+    let mut out = Vec::new();
+    for (k, &i) in by_x.iter().enumerate() {
+        for &j in &by_x[k + 1..] {
+            if boxes[j].0 > boxes[i].1 {
+                break;
+            }
+            if holds(&boxes[i], &boxes[j]) {
+                out.push((j, i));
+            }
+            if holds(&boxes[j], &boxes[i]) {
+                out.push((i, j));
+            }
+        }
+    }
+    out
+}
+
+/// A point strictly inside the polygon with exterior `outer` and holes `holes` (rings of
+/// any orientation), checked exactly: the centroid of the triangle at a convex vertex
+/// and its neighbours, for the first of a few vertices where that centroid, rounded,
+/// is inside. None where none is (a sliver thinner than the rounding).
+pub(super) fn point_inside(outer: &[Point2], holes: &[Vec<Point2>]) -> Option<Point2> {
+    let n = outer.len();
+    let turn = super::ring_orientation(outer);
+    let inside = |q: Point2| {
+        let mut rings = std::iter::once(outer).chain(holes.iter().map(Vec::as_slice));
+        rings.all(|r| !super::on_ring(r, q))
+            && windings(outer, &[q])[0] != 0
+            && holes.iter().all(|h| windings(h, &[q])[0] == 0)
+    };
+    (0..n)
+        .filter(|&i| orient2d(outer[(i + n - 1) % n], outer[i], outer[(i + 1) % n]) == turn)
+        .take(CANDIDATES)
+        .map(|i| {
+            let (a, b, c) = (outer[(i + n - 1) % n], outer[i], outer[(i + 1) % n]);
+            Point2::new((a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0)
+        })
+        .find(|&q| q.is_finite() && inside(q))
+}
+
+/// How many convex vertices [`point_inside`] tries.
+const CANDIDATES: usize = 16;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point2 {
+        Point2::new(x, y)
+    }
+
+    /// The winding number of `ring` around `q`, edge by edge (the oracle).
+    fn winding(ring: &[Point2], q: Point2) -> i32 {
+        let mut w = 0;
+        for (i, &a) in ring.iter().enumerate() {
+            let b = ring[(i + 1) % ring.len()];
+            let side = orient2d(a, b, q);
+            if a.y <= q.y && b.y > q.y && side == Orientation::CounterClockwise {
+                w += 1;
+            } else if a.y > q.y && b.y <= q.y && side == Orientation::Clockwise {
+                w -= 1;
+            }
+        }
+        w
+    }
+
+    /// The batched winding numbers are those of one point at a time, on rings of both
+    /// orientations with points level with vertices and horizontal edges.
+    #[test]
+    fn windings_at_once_match_one_by_one() {
+        let mut below = crate::testing::below(0x71d1);
+        for _ in 0..300 {
+            let n = 3 + below(9) as usize;
+            let ring: Vec<Point2> = (0..n)
+                .map(|_| p(below(8) as f64, below(8) as f64))
+                .collect();
+            let queries: Vec<Point2> = (0..20)
+                .map(|_| p(below(16) as f64 / 2.0, below(16) as f64 / 2.0))
+                .filter(|&q| !super::super::on_ring(&ring, q))
+                .collect();
+            let got = windings(&ring, &queries);
+            for (q, w) in queries.iter().zip(got) {
+                assert_eq!(w, winding(&ring, *q), "{ring:?} {q:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn boxes_within_lists_every_held_box() {
+        let mut below = crate::testing::below(0xb0c5);
+        for _ in 0..200 {
+            let boxes: Vec<Bounds> = (0..12)
+                .map(|_| {
+                    let (x, y) = (below(10) as f64, below(10) as f64);
+                    (x, x + below(5) as f64, y, y + below(5) as f64)
+                })
+                .collect();
+            let mut got = boxes_within(&boxes);
+            got.sort_unstable();
+            let mut want = Vec::new();
+            for (i, a) in boxes.iter().enumerate() {
+                for (o, b) in boxes.iter().enumerate() {
+                    if i != o && b.0 <= a.0 && a.1 <= b.1 && b.2 <= a.2 && a.3 <= b.3 {
+                        want.push((i, o));
+                    }
+                }
+            }
+            assert_eq!(got, want);
+        }
+    }
+
+    #[test]
+    fn a_point_inside_is_inside() {
+        let square = vec![p(0.0, 0.0), p(4.0, 0.0), p(4.0, 4.0), p(0.0, 4.0)];
+        let q = point_inside(&square, &[]).unwrap();
+        assert!(q.x > 0.0 && q.x < 4.0 && q.y > 0.0 && q.y < 4.0);
+        // Clockwise, with a hole over the first ear's centroid.
+        let mut cw = square.clone();
+        cw.reverse();
+        let hole = vec![p(0.5, 0.5), p(2.0, 0.5), p(2.0, 2.0), p(0.5, 2.0)];
+        let q = point_inside(&cw, std::slice::from_ref(&hole)).unwrap();
+        assert_eq!(winding(&hole, q), 0);
+        assert!(!super::super::on_ring(&hole, q));
+        // A reflex vertex is not a candidate: an L whose first vertex is reflex.
+        let l = vec![
+            p(2.0, 2.0),
+            p(2.0, 4.0),
+            p(0.0, 4.0),
+            p(0.0, 0.0),
+            p(4.0, 0.0),
+            p(4.0, 2.0),
+        ];
+        let q = point_inside(&l, &[]).unwrap();
+        assert_ne!(winding(&l, q), 0);
+    }
+}
