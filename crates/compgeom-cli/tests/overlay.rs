@@ -247,4 +247,31 @@ fn validate_names_the_feature_of_a_problem() {
         (&2.into(), &1.into()),
         "{v}"
     );
+    // Overlapping polygons are named, the first of them with its feature (the last
+    // feature's MultiPolygon starts with an empty polygon, which is none).
+    fs::write(
+        &input,
+        format!(
+            r#"{{"type":"FeatureCollection","features":[{},{},{}]}}"#,
+            feature(format!(r#"{{"type":"Polygon","coordinates":{square}}}"#)),
+            feature(r#"{"type":"Polygon","coordinates":[[[2,0],[6,0],[6,4],[2,4],[2,0]]]}"#.into()),
+            feature(
+                r#"{"type":"MultiPolygon","coordinates":[[],[[[3,1],[4,1],[4,2],[3,2],[3,1]]]]}"#
+                    .into()
+            ),
+        ),
+    )
+    .unwrap();
+    let v = json(&["validate".as_ref(), input.as_os_str()]);
+    let problems = v["problems"].as_array().unwrap();
+    assert_eq!(problems.len(), 1, "{v}");
+    assert_eq!(
+        problems[0]["message"], "interiors of polygon 1 and polygon 2 overlap",
+        "{v}"
+    );
+    assert_eq!(
+        (&problems[0]["polygon"], &problems[0]["feature"]),
+        (&1.into(), &1.into()),
+        "{v}"
+    );
 }
