@@ -70,14 +70,39 @@ fn boolean_wkt_output_and_svg() {
     assert!(fs::read_to_string(svg).unwrap().contains("<svg"));
 }
 
+/// One input's polygons are united (positive fill rule unless another is asked for:
+/// even-odd makes their overlap a hole); other operations need B.
 #[test]
 fn union_of_one_input_and_missing_b() {
-    let (_d, a, _b) = files();
-    compgeom()
-        .args(["boolean", "union"])
-        .arg(&a)
-        .assert()
-        .success();
+    let (d, a, _b) = files();
+    let both = d.path().join("both.wkt");
+    fs::write(
+        &both,
+        format!("GEOMETRYCOLLECTION ({}, {})", A.trim(), B.trim()),
+    )
+    .unwrap();
+    let union = |rule: Option<&str>| {
+        let mut args = vec!["boolean", "union", both.to_str().unwrap(), "-f", "wkt"];
+        args.extend(rule.map(|r| ["--fill-rule", r]).into_iter().flatten());
+        let out = compgeom().args(&args).assert().success();
+        String::from_utf8(out.get_output().stdout.clone()).unwrap()
+    };
+    let united = "MULTIPOLYGON (((0 0, 4 0, 4 2, 6 2, 6 6, 2 6, 2 4, 0 4, 0 0)))";
+    assert_eq!(union(None).trim(), united);
+    assert_eq!(union(Some("positive")).trim(), united);
+    assert_eq!(
+        union(Some("evenodd")).trim(),
+        "MULTIPOLYGON (((0 0, 4 0, 4 2, 2 2, 2 4, 0 4, 0 0)), ((2 4, 4 4, 4 2, 6 2, 6 6, 2 6, 2 4)))"
+    );
+    let v = json(&["boolean".as_ref(), "union".as_ref(), both.as_os_str()]);
+    assert_eq!(v["fill_rule"], "positive");
+    let v = json(&[
+        "boolean".as_ref(),
+        "union".as_ref(),
+        a.as_os_str(),
+        both.as_os_str(),
+    ]);
+    assert_eq!(v["fill_rule"], "evenodd");
     compgeom().args(["boolean", "xor"]).arg(&a).assert().code(2);
 }
 

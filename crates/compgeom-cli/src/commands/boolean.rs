@@ -25,7 +25,8 @@ JSON output (--format json, the default) is one object:
 A and B are each read as one polygon set (all features of the file together), with the
 fill rule: evenodd (default; an odd number of ring crossings is inside), nonzero
 (winding number not zero, rings as given), positive (each polygon its shell
-minus its holes, the polygons united). With only A, `union` unites all of A's polygons.
+minus its holes, the polygons united). With only A, `union` unites all of A's polygons
+(its default fill rule is then positive; with evenodd, where two overlap is a hole).
 Coordinates of constructed crossings are the nearest f64 to the exact point; where that
 rounding could make the result invalid, the crossing takes another float around its exact
 point (one float away per axis) that keeps it valid, or else the rounded result is united
@@ -33,7 +34,7 @@ again.
 
 Examples:
   compgeom boolean intersection a.geojson b.geojson --format geojson -o out.geojson
-  compgeom boolean union parcels.wkt --fill-rule positive --svg union.svg";
+  compgeom boolean union parcels.wkt --svg union.svg";
 
 /// The operation argument.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -111,9 +112,10 @@ pub struct BooleanArgs {
     #[arg(value_name = "B")]
     pub b: Option<PathBuf>,
 
-    /// How rings define the inside of each input.
-    #[arg(long, value_enum, default_value_t = FillRuleArg::Evenodd)]
-    pub fill_rule: FillRuleArg,
+    /// How rings define the inside of each input [default: evenodd; positive for
+    /// `union` with one input, which unites its polygons].
+    #[arg(long, value_enum)]
+    pub fill_rule: Option<FillRuleArg>,
 
     /// Keep vertices where the result's boundary goes straight on.
     #[arg(long)]
@@ -159,8 +161,15 @@ pub fn run(args: &BooleanArgs) -> Result<(), CliError> {
             )))
         }
     };
+    // (One input is read as polygons to unite: even-odd would make where two of them
+    // overlap a hole.)
+    let fill_rule = args.fill_rule.unwrap_or(if args.b.is_none() {
+        FillRuleArg::Positive
+    } else {
+        FillRuleArg::Evenodd
+    });
     let opts = BooleanOptions {
-        fill_rule: args.fill_rule.rule(),
+        fill_rule: fill_rule.rule(),
         keep_collinear: args.keep_collinear,
     };
     let result = boolean_with(&a, &b, args.operation.op(), &opts)?;
@@ -168,7 +177,7 @@ pub fn run(args: &BooleanArgs) -> Result<(), CliError> {
     let text = match args.output.format.geometry_format() {
         None => serde_json::to_string(&BooleanJson {
             operation: args.operation.name(),
-            fill_rule: args.fill_rule.name(),
+            fill_rule: fill_rule.name(),
             result: io::to_geojson_value(&shape)?,
             polygons: result.0.len(),
         })
@@ -179,7 +188,7 @@ pub fn run(args: &BooleanArgs) -> Result<(), CliError> {
         let title = format!(
             "{} ({}): {} polygons",
             args.operation.name(),
-            args.fill_rule.name(),
+            fill_rule.name(),
             result.0.len()
         );
         let pic = boolean_picture(&a, &b, &result, &title);
