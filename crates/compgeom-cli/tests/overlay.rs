@@ -126,6 +126,75 @@ fn overlay_labels_faces() {
     assert_eq!(both, 1);
 }
 
+/// Faces are labelled by input features (a MultiPolygon feature is one, a feature
+/// without geometry still counts), and the GeoJSON output carries both features'
+/// properties.
+#[test]
+fn overlay_labels_faces_by_feature_with_their_properties() {
+    let d = TempDir::new().unwrap();
+    let (a, b) = (d.path().join("a.geojson"), d.path().join("b.geojson"));
+    let square = |x: i32| format!("[[[{x},0],[{},0],[{},2],[{x},2],[{x},0]]]", x + 2, x + 2);
+    fs::write(
+        &a,
+        format!(
+            r#"{{"type":"FeatureCollection","features":[
+            {{"type":"Feature","properties":{{"name":"none"}},"geometry":null}},
+            {{"type":"Feature","properties":{{"name":"forest"}},"geometry":{{"type":"MultiPolygon","coordinates":[{},{}]}}}},
+            {{"type":"Feature","properties":{{"name":"lake"}},"geometry":{{"type":"Polygon","coordinates":{}}}}}]}}"#,
+            square(0),
+            square(4),
+            square(8)
+        ),
+    )
+    .unwrap();
+    fs::write(
+        &b,
+        r#"{"type":"Feature","properties":{"river":"Rhine"},"geometry":{"type":"Polygon","coordinates":[[[5,-1],[9,-1],[9,1],[5,1],[5,-1]]]}}"#,
+    )
+    .unwrap();
+    let v = json(&[
+        "overlay".as_ref(),
+        a.as_os_str(),
+        b.as_os_str(),
+        "-f".as_ref(),
+        "geojson".as_ref(),
+    ]);
+    let mut labels: Vec<String> = v["features"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| {
+            let p = &f["properties"];
+            format!(
+                "{} {} {} {}",
+                p["a"], p["b"], p["a_properties"]["name"], p["b_properties"]["river"]
+            )
+        })
+        .collect();
+    labels.sort();
+    assert_eq!(
+        labels,
+        [
+            "1 0 \"forest\" \"Rhine\"",
+            "1 null \"forest\" null",
+            "1 null \"forest\" null",
+            "2 0 \"lake\" \"Rhine\"",
+            "2 null \"lake\" null",
+            "null 0 null \"Rhine\"",
+        ],
+        "{v}"
+    );
+    let v = json(&["overlay".as_ref(), a.as_os_str(), b.as_os_str()]);
+    let mut a_labels: Vec<String> = v["faces"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["a"].to_string())
+        .collect();
+    a_labels.sort();
+    assert_eq!(a_labels, ["1", "1", "1", "2", "2", "null", "null"], "{v}");
+}
+
 #[test]
 fn make_valid_splits_a_bow_tie_and_bad_input_fails() {
     let d = TempDir::new().unwrap();

@@ -3,14 +3,15 @@
 //! containing it.
 
 use crate::cli::{InputArgs, OutputArgs, OutputFormat};
-use crate::commands::boolean::{other_input, read_layer};
+use crate::commands::boolean::other_input;
 use crate::error::CliError;
 use crate::output;
 use clap::Args;
 use compgeom::dcel::FaceId;
-use compgeom::io::{to_geojson_value, Shape};
+use compgeom::io::{read_polygon_features, to_geojson_value, Format, Shape};
 use compgeom::overlay::{overlay_polygons, rounding_suspects};
-use compgeom::render::{Layer, Picture, Style};
+use compgeom::render::{Layer as PictureLayer, Picture, Style};
+use compgeom::MultiPolygon;
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
@@ -18,7 +19,7 @@ use std::path::PathBuf;
 pub const JSON_HELP: &str = "\
 JSON output (--format json, the default) is one object:
   faces     [{\"polygon\": <GeoJSON Polygon, or null for the unbounded face>,
-              \"a\": <index of A's polygon containing the face, or null>,
+              \"a\": <index of A's feature containing the face, or null>,
               \"b\": <the same for B>}, ...]; the unbounded face first. A face's polygon
             is its outer boundary (counter-clockwise) and one hole per inner boundary
             (clockwise), every vertex kept; crossings are rounded to the nearest f64,
@@ -31,10 +32,13 @@ JSON output (--format json, the default) is one object:
             f64 may have made edges touch or cross (faces thinner than a float; also
             printed as a warning); usually empty
 
-Polygons are numbered in reading order (a MultiPolygon feature gives several). Where
-polygons of one layer overlap, `a`/`b` is the lowest index containing the face.
+Features are numbered from 0 in reading order: the GeoJSON Features of a
+FeatureCollection, else each polygon (a WKT MULTIPOLYGON gives several). Where features
+of one layer overlap, `a`/`b` is the lowest index containing the face.
 --format geojson prints a FeatureCollection with one feature per bounded face and
-properties `a` and `b`.
+properties `a` and `b`, and `a_properties` and `b_properties`: the properties of those
+GeoJSON input features (null where there are none), so attributes of both layers reach
+each face.
 
 Examples:
   compgeom overlay vegetation.geojson rivers.geojson --svg overlay.svg
@@ -58,9 +62,9 @@ pub struct OverlayArgs {
 
 /// Run `compgeom overlay`.
 pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
-    let a = read_layer(&args.input)?;
-    let b = read_layer(&other_input(&args.input, &args.b))?;
-    let d = overlay_polygons(&a, &b)?;
+    let a = Layer::read(&args.input)?;
+    let b = Layer::read(&other_input(&args.input, &args.b))?;
+    let d = overlay_polygons(&a.polygons, &b.polygons)?;
     // With --verify: the structure's invariants, and the faces near which rounding may
     // have made edges meet (the overlay mended what it could; listed, not an error).
     let suspects = if args.output.verify {
@@ -80,6 +84,7 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
     let mut features = Vec::new();
     for f in d.face_ids() {
         let (la, lb) = &d.face(f).data;
+        let (fa, fb) = (a.feature(la.first()), b.feature(lb.first()));
         let polygon = match d.face_polygon(f) {
             Some(p) => to_geojson_value(&Shape::Polygon(p))?,
             None => Value::Null,
@@ -87,11 +92,16 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
         if f != FaceId::UNBOUNDED {
             features.push(json!({
                 "type": "Feature",
-                "properties": {"a": la.first(), "b": lb.first()},
+                "properties": {
+                    "a": fa,
+                    "b": fb,
+                    "a_properties": a.properties(fa),
+                    "b_properties": b.properties(fb),
+                },
                 "geometry": polygon.clone(),
             }));
         }
-        faces.push(json!({"polygon": polygon, "a": la.first(), "b": lb.first()}));
+        faces.push(json!({"polygon": polygon, "a": fa, "b": fb}));
     }
     let value = match args.output.format {
         OutputFormat::Json => {
@@ -127,10 +137,11 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
         for f in d.face_ids().skip(1) {
             let (la, lb) = &d.face(f).data;
             if let Some(p) = d.face_polygon(f) {
-                let name = format!("face {} (a {:?}, b {:?})", f.0, la.first(), lb.first());
+                let (fa, fb) = (a.feature(la.first()), b.feature(lb.first()));
+                let name = format!("face {} (a {fa:?}, b {fb:?})", f.0);
                 let style =
                     Style::area(colour(!la.is_empty(), !lb.is_empty())).with_fill_opacity(0.4);
-                pic.add(Layer::new(name, style).polygon(&p));
+                pic.add(PictureLayer::new(name, style).polygon(&p));
             }
         }
         output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
@@ -138,4 +149,58 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
     let text = serde_json::to_string(&value)
         .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?;
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
+}
+
+/// A polygon layer: its polygons, each one's input feature, and the features' GeoJSON
+/// properties (none for other formats).
+struct Layer {
+    polygons: MultiPolygon,
+    features: Vec<usize>,
+    properties: Vec<Value>,
+}
+
+impl Layer {
+    fn read(input: &InputArgs) -> Result<Layer, CliError> {
+        let src = input.read()?;
+        let (polygons, features) = read_polygon_features(&src.text, src.format, &src.name)?;
+        let properties = match src.format {
+            Format::GeoJson | Format::Json => feature_properties(&src.text),
+            _ => Vec::new(),
+        };
+        Ok(Layer {
+            polygons,
+            features,
+            properties,
+        })
+    }
+
+    /// The feature of polygon `p`.
+    fn feature(&self, p: Option<&usize>) -> Option<usize> {
+        p.map(|&p| self.features[p])
+    }
+
+    /// The properties of feature `f` (null where it has none).
+    fn properties(&self, f: Option<usize>) -> Value {
+        f.and_then(|f| self.properties.get(f).cloned())
+            .unwrap_or(Value::Null)
+    }
+}
+
+/// The `properties` of each Feature of a GeoJSON text (a FeatureCollection's in order,
+/// or a single Feature's); empty for anything else. The text has been read as polygons
+/// already, so it is valid JSON.
+fn feature_properties(text: &str) -> Vec<Value> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let Ok(mut doc) = serde_json::from_str::<Value>(text) else {
+        return Vec::new();
+    };
+    let properties = |f: &mut Value| f.get_mut("properties").map_or(Value::Null, Value::take);
+    match doc.get("type").and_then(Value::as_str) {
+        Some("FeatureCollection") => match doc.get_mut("features") {
+            Some(Value::Array(features)) => features.iter_mut().map(properties).collect(),
+            _ => Vec::new(),
+        },
+        Some("Feature") => vec![properties(&mut doc)],
+        _ => Vec::new(),
+    }
 }
