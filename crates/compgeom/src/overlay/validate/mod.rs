@@ -94,7 +94,7 @@ pub fn validity_problems_as_written(
 /// ```
 pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
     let mut out = Vec::new();
-    let mut rings: Vec<(usize, usize, Vec<Point2>)> = Vec::new();
+    let mut rings: Vec<Ring> = Vec::new();
     for (pi, poly) in polygons.0.iter().enumerate() {
         // (An empty hole is no hole, and a polygon of empty rings no polygon, as the
         // readers take `EMPTY`.)
