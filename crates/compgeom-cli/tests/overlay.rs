@@ -212,9 +212,19 @@ fn validate_reports_a_crossing() {
     let d = TempDir::new().unwrap();
     let p = d.path().join("bow.wkt");
     fs::write(&p, "POLYGON((0 0,2 2,2 0,0 2,0 0))\n").unwrap();
-    let v = json(&["validate".as_ref(), p.as_os_str()]);
+    let svg = d.path().join("bow.svg");
+    let v = json(&[
+        "validate".as_ref(),
+        p.as_os_str(),
+        "--svg".as_ref(),
+        svg.as_os_str(),
+    ]);
     assert_eq!(v["valid"], false);
     assert_eq!(v["problems"][0]["at"], serde_json::json!([1.0, 1.0]));
+    // The picture: the input and a mark per problem, the count in the title.
+    let picture = fs::read_to_string(&svg).unwrap();
+    assert!(picture.contains("validate: 1 problem(s)"), "{picture}");
+    assert_eq!(picture.matches("<circle").count(), 1 + 1, "{picture}");
     let (_d, a, _b) = files();
     let v = json(&["validate".as_ref(), a.as_os_str()]);
     assert_eq!(v["valid"], true);

@@ -323,12 +323,12 @@ pub fn run_validate(args: &ValidateArgs) -> Result<(), CliError> {
     }))
     .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?;
     if let Some(svg) = &args.output.svg {
-        let mut pic = boolean_picture(
-            &a,
-            &MultiPolygon::default(),
-            &MultiPolygon::default(),
-            "validate",
-        );
+        let title = match problems.len() {
+            0 => "validate: valid".to_string(),
+            n => format!("validate: {n} problem(s)"),
+        };
+        let mut pic = Picture::new(800, 640).with_title(title);
+        pic.add(Layer::new("input", Style::area("#1f77b4").with_fill_opacity(0.15)).polygons(&a.0));
         let pts: Vec<compgeom::Point2> = problems.iter().filter_map(|p| p.at).collect();
         pic.add(Layer::new("problems", Style::points("#d62728").with_radius(5.0)).points(&pts));
         output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
