@@ -95,8 +95,26 @@ pub(super) fn bounds(ring: &[Point2]) -> Bounds {
 }
 
 /// The pairs `(inner, outer)` of `boxes` where the box of `outer` holds that of `inner`
-/// (both ways for equal boxes), each box against those it overlaps in x.
+/// (both ways for equal boxes), each box against those it overlaps along one axis: the
+/// one along which the boxes are spread wider for their size (a column of holes is
+/// swept in y).
 pub(super) fn boxes_within(boxes: &[Bounds]) -> Vec<(usize, usize)> {
+    let spread = |lo: fn(&Bounds) -> f64, hi: fn(&Bounds) -> f64| {
+        let extent = boxes.iter().map(hi).fold(f64::NEG_INFINITY, f64::max)
+            - boxes.iter().map(lo).fold(f64::INFINITY, f64::min);
+        let sizes: f64 = boxes.iter().map(|b| hi(b) - lo(b)).sum();
+        extent * boxes.len() as f64 / sizes
+    };
+    // (Holding is the same with x and y swapped.)
+    if spread(|b| b.2, |b| b.3) > spread(|b| b.0, |b| b.1) {
+        let swapped: Vec<Bounds> = boxes.iter().map(|b| (b.2, b.3, b.0, b.1)).collect();
+        return boxes_within_by_x(&swapped);
+    }
+    boxes_within_by_x(boxes)
+}
+
+/// [`boxes_within`], sweeping in x.
+fn boxes_within_by_x(boxes: &[Bounds]) -> Vec<(usize, usize)> {
     let holds = |o: &Bounds, i: &Bounds| o.0 <= i.0 && i.1 <= o.1 && o.2 <= i.2 && i.3 <= o.3;
     let mut by_x: Vec<usize> = (0..boxes.len()).collect();
     by_x.sort_unstable_by(|&i, &j| boxes[i].0.total_cmp(&boxes[j].0));
@@ -199,6 +217,9 @@ mod tests {
                 .collect();
             let mut got = boxes_within(&boxes);
             got.sort_unstable();
+            let mut by_x = boxes_within_by_x(&boxes);
+            by_x.sort_unstable();
+            assert_eq!(got, by_x);
             let mut want = Vec::new();
             for (i, a) in boxes.iter().enumerate() {
                 for (o, b) in boxes.iter().enumerate() {
