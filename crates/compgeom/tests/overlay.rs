@@ -341,6 +341,10 @@ fn touching_rings_follow_the_ogc_rules() {
         let p = problems(invalid);
         assert!(p.iter().any(|q| q.message.contains(want)), "{invalid}: {p:?}");
     }
+    // Each hole inside another is reported once: of three nested holes, the two inner.
+    let p = problems("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 9, 9 9, 9 1, 1 1), (2 2, 2 8, 8 8, 8 2, 2 2), (3 3, 3 7, 7 7, 7 3, 3 3))");
+    let named: Vec<&str> = p.iter().map(|q| &q.message[..17]).collect();
+    assert_eq!(named, ["polygon 0 hole 1:", "polygon 0 hole 2:"], "{p:?}");
     // A hole sharing part of an edge with its shell: the overlap, not also a loop.
     let p = problems("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (0 2, 0 4, 3 3, 0 2))");
     assert!(p.iter().any(|q| q.message.contains("overlap")), "{p:?}");

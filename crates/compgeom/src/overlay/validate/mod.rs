@@ -23,7 +23,7 @@ use crate::intersect::find_intersections;
 use crate::io::{ring_orientation, OpenRing};
 use crate::kernel::{orient2d, MultiPolygon, Orientation, Point2, Polygon, Segment2};
 use crate::Result;
-use nesting::{bounds, boxes_within, point_inside, windings, Touches};
+use nesting::{bounds, holes_inside_holes, holes_outside_shells, point_inside, windings, Touches};
 use std::borrow::Cow;
 use std::ops::Range;
 
@@ -307,83 +307,6 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
 /// A ring of the polygons checked: its polygon, its number in the polygon (0 the shell),
 /// its points.
 type Ring = (usize, usize, Vec<Point2>);
-
-/// Reports each hole with a point outside its shell (so all of it, as nothing crosses);
-/// true per such hole.
-fn holes_outside_shells(
-    rings: &[Ring],
-    spans: &[Range<usize>],
-    touches: &Touches,
-    out: &mut Vec<Problem>,
-) -> Vec<bool> {
-    let mut outside = vec![false; rings.len()];
-    for span in spans {
-        let (shell, holes) = (span.start, span.start + 1..span.end);
-        let queries: Vec<Point2> = holes
-            .clone()
-            .map(|h| touches.off(&rings[h].2, h, shell))
-            .collect();
-        let windings = windings(&rings[shell].2, &queries);
-        for ((h, q), w) in holes.zip(queries).zip(windings) {
-            if w == 0 {
-                outside[h] = true;
-                out.push(Problem {
-                    message: format!(
-                        "{}: lies outside its shell",
-                        ring_name(rings[h].0, rings[h].1)
-                    ),
-                    at: Some(q),
-                    polygon: Some(rings[h].0),
-                });
-            }
-        }
-    }
-    outside
-}
-
-/// Reports each hole inside another hole of its polygon (holes overlapping in area
-/// without crossing are nested): tested where the box of one holds the other's.
-fn holes_inside_holes(
-    rings: &[Ring],
-    spans: &[Range<usize>],
-    touches: &Touches,
-    outside: &[bool],
-    out: &mut Vec<Problem>,
-) {
-    for span in spans {
-        let holes: Vec<usize> = (span.start + 1..span.end)
-            .filter(|&h| !outside[h])
-            .collect();
-        if holes.len() < 2 {
-            continue;
-        }
-        let boxes: Vec<_> = holes.iter().map(|&h| bounds(&rings[h].2)).collect();
-        // (inner, outer), by outer: each outer hole's winding numbers in one pass.
-        let mut pairs = boxes_within(&boxes);
-        pairs.sort_unstable_by_key(|&(inner, outer)| (outer, inner));
-        for group in pairs.chunk_by(|a, b| a.1 == b.1) {
-            let g = holes[group[0].1];
-            let inner = group.iter().map(|&(i, _)| holes[i]);
-            let queries: Vec<Point2> = inner
-                .clone()
-                .map(|h| touches.off(&rings[h].2, h, g))
-                .collect();
-            for ((h, q), w) in inner.zip(&queries).zip(windings(&rings[g].2, &queries)) {
-                if w != 0 {
-                    out.push(Problem {
-                        message: format!(
-                            "{}: lies inside hole {}",
-                            ring_name(rings[h].0, rings[h].1),
-                            rings[g].1 - 1
-                        ),
-                        at: Some(*q),
-                        polygon: Some(rings[h].0),
-                    });
-                }
-            }
-        }
-    }
-}
 
 /// Reports the pairs of polygons whose interiors overlap, from the faces of `d` (the
 /// arrangement of all rings, each face's count of polygons covering it) covered twice:

@@ -8,7 +8,9 @@
 //! the ring around, for all the points asked of it at once ([`windings`]), so a shell
 //! with many holes costs O((s + h) log h), not O(s) per hole.
 
+use super::{ring_name, Problem, Ring};
 use crate::kernel::{orient2d, Orientation, Point2};
+use std::ops::Range;
 
 /// The point where each pair of rings of one polygon touch, `(ring, ring, point)` with
 /// the smaller ring first, sorted.
@@ -94,11 +96,11 @@ pub(super) fn bounds(ring: &[Point2]) -> Bounds {
     )
 }
 
-/// The pairs `(inner, outer)` of `boxes` where the box of `outer` holds that of `inner`
-/// (both ways for equal boxes), each box against those it overlaps along one axis: the
-/// one along which the boxes are spread wider for their size (a column of holes is
-/// swept in y).
-pub(super) fn boxes_within(boxes: &[Bounds]) -> Vec<(usize, usize)> {
+/// Calls `f(inner, outer)` for the pairs of `boxes` where the box of `outer` holds that
+/// of `inner` (both ways for equal boxes), each box against those it overlaps along one
+/// axis: the one along which the boxes are spread wider for their size (a column of
+/// holes is swept in y).
+pub(super) fn for_each_box_within(boxes: &[Bounds], f: impl FnMut(usize, usize)) {
     let spread = |lo: fn(&Bounds) -> f64, hi: fn(&Bounds) -> f64| {
         let extent = boxes.iter().map(hi).fold(f64::NEG_INFINITY, f64::max)
             - boxes.iter().map(lo).fold(f64::INFINITY, f64::min);
@@ -108,31 +110,140 @@ pub(super) fn boxes_within(boxes: &[Bounds]) -> Vec<(usize, usize)> {
     // (Holding is the same with x and y swapped.)
     if spread(|b| b.2, |b| b.3) > spread(|b| b.0, |b| b.1) {
         let swapped: Vec<Bounds> = boxes.iter().map(|b| (b.2, b.3, b.0, b.1)).collect();
-        return boxes_within_by_x(&swapped);
+        for_each_box_within_by_x(&swapped, f);
+    } else {
+        for_each_box_within_by_x(boxes, f);
     }
-    boxes_within_by_x(boxes)
 }
 
-/// [`boxes_within`], sweeping in x.
-fn boxes_within_by_x(boxes: &[Bounds]) -> Vec<(usize, usize)> {
+/// [`for_each_box_within`], sweeping in x.
+fn for_each_box_within_by_x(boxes: &[Bounds], mut f: impl FnMut(usize, usize)) {
     let holds = |o: &Bounds, i: &Bounds| o.0 <= i.0 && i.1 <= o.1 && o.2 <= i.2 && i.3 <= o.3;
     let mut by_x: Vec<usize> = (0..boxes.len()).collect();
     by_x.sort_unstable_by(|&i, &j| boxes[i].0.total_cmp(&boxes[j].0));
-    let mut out = Vec::new();
     for (k, &i) in by_x.iter().enumerate() {
         for &j in &by_x[k + 1..] {
             if boxes[j].0 > boxes[i].1 {
                 break;
             }
             if holds(&boxes[i], &boxes[j]) {
-                out.push((j, i));
+                f(j, i);
             }
             if holds(&boxes[j], &boxes[i]) {
-                out.push((i, j));
+                f(i, j);
             }
         }
     }
-    out
+}
+
+/// Reports each hole with a point outside its shell (so all of it, as nothing crosses);
+/// true per such hole.
+pub(super) fn holes_outside_shells(
+    rings: &[Ring],
+    spans: &[Range<usize>],
+    touches: &Touches,
+    out: &mut Vec<Problem>,
+) -> Vec<bool> {
+    let mut outside = vec![false; rings.len()];
+    for span in spans {
+        let (shell, holes) = (span.start, span.start + 1..span.end);
+        let queries: Vec<Point2> = holes
+            .clone()
+            .map(|h| touches.off(&rings[h].2, h, shell))
+            .collect();
+        let windings = windings(&rings[shell].2, &queries);
+        for ((h, q), w) in holes.zip(queries).zip(windings) {
+            if w == 0 {
+                outside[h] = true;
+                out.push(Problem {
+                    message: format!(
+                        "{}: lies outside its shell",
+                        ring_name(rings[h].0, rings[h].1)
+                    ),
+                    at: Some(q),
+                    polygon: Some(rings[h].0),
+                });
+            }
+        }
+    }
+    outside
+}
+
+/// Pairs of holes [`holes_inside_holes`] collects before it tests them (a batch: the
+/// pairs of nested boxes can be quadratic in number, the holes found inside another
+/// are not tested again).
+const NESTING_BATCH: usize = 1 << 14;
+
+/// Reports each hole inside another hole of its polygon, once (holes overlapping in
+/// area without crossing are nested): tested where the box of one holds the other's,
+/// in batches, each batch by outer hole (one pass over its edges for all its inner
+/// candidates), a hole already found inside another left out of later batches.
+pub(super) fn holes_inside_holes(
+    rings: &[Ring],
+    spans: &[Range<usize>],
+    touches: &Touches,
+    outside: &[bool],
+    out: &mut Vec<Problem>,
+) {
+    for span in spans {
+        let holes: Vec<usize> = (span.start + 1..span.end)
+            .filter(|&h| !outside[h])
+            .collect();
+        if holes.len() < 2 {
+            continue;
+        }
+        let boxes: Vec<_> = holes.iter().map(|&h| bounds(&rings[h].2)).collect();
+        // Per hole (by its place in `holes`), the hole it was found inside and where.
+        let mut inside: Vec<Option<(usize, Point2)>> = vec![None; holes.len()];
+        let mut batch: Vec<(usize, usize)> = Vec::new();
+        let test = |batch: &mut Vec<(usize, usize)>, inside: &mut [Option<(usize, Point2)>]| {
+            batch.sort_unstable_by_key(|&(inner, outer)| (outer, inner));
+            for group in batch.chunk_by(|a, b| a.1 == b.1) {
+                let g = holes[group[0].1];
+                let inner: Vec<usize> = group
+                    .iter()
+                    .map(|&(i, _)| i)
+                    .filter(|&i| inside[i].is_none())
+                    .collect();
+                let queries: Vec<Point2> = inner
+                    .iter()
+                    .map(|&i| touches.off(&rings[holes[i]].2, holes[i], g))
+                    .collect();
+                for ((&i, &q), w) in inner
+                    .iter()
+                    .zip(&queries)
+                    .zip(windings(&rings[g].2, &queries))
+                {
+                    if w != 0 {
+                        inside[i] = Some((g, q));
+                    }
+                }
+            }
+            batch.clear();
+        };
+        for_each_box_within(&boxes, |inner, outer| {
+            if inside[inner].is_none() {
+                batch.push((inner, outer));
+                if batch.len() == NESTING_BATCH {
+                    test(&mut batch, &mut inside);
+                }
+            }
+        });
+        test(&mut batch, &mut inside);
+        for (&h, found) in holes.iter().zip(inside) {
+            if let Some((g, q)) = found {
+                out.push(Problem {
+                    message: format!(
+                        "{}: lies inside hole {}",
+                        ring_name(rings[h].0, rings[h].1),
+                        rings[g].1 - 1
+                    ),
+                    at: Some(q),
+                    polygon: Some(rings[h].0),
+                });
+            }
+        }
+    }
 }
 
 /// A point strictly inside the polygon with exterior `outer` and holes `holes` (rings of
@@ -215,11 +326,18 @@ mod tests {
                     (x, x + below(5) as f64, y, y + below(5) as f64)
                 })
                 .collect();
-            let mut got = boxes_within(&boxes);
-            got.sort_unstable();
-            let mut by_x = boxes_within_by_x(&boxes);
-            by_x.sort_unstable();
-            assert_eq!(got, by_x);
+            let collect = |by_x: bool| {
+                let mut pairs = Vec::new();
+                if by_x {
+                    for_each_box_within_by_x(&boxes, |i, o| pairs.push((i, o)));
+                } else {
+                    for_each_box_within(&boxes, |i, o| pairs.push((i, o)));
+                }
+                pairs.sort_unstable();
+                pairs
+            };
+            let got = collect(false);
+            assert_eq!(got, collect(true));
             let mut want = Vec::new();
             for (i, a) in boxes.iter().enumerate() {
                 for (o, b) in boxes.iter().enumerate() {
