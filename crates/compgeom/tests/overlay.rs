@@ -231,6 +231,37 @@ fn validity_reasons() {
     let p = validity_problems(&MultiPolygon(vec![rect(0., 0., 4., 4.), diamond.clone()])).unwrap();
     assert_eq!(p.len(), 1, "{p:?}");
     assert_eq!(p[0].message, "interiors of polygon 0 and polygon 1 overlap");
+    // Three piled up: every one named (not every pair); an overlap with a hole in it
+    // (no point near the middle of its corners is inside it), beside another overlap.
+    let wkt = |text: &str| {
+        let polygons = compgeom::io::read_polygons(text, compgeom::io::Format::Wkt, "t").unwrap();
+        validity_problems(&polygons).unwrap()
+    };
+    let messages =
+        |p: &[compgeom::overlay::Problem]| p.iter().map(|q| q.message.clone()).collect::<Vec<_>>();
+    let p = wkt("MULTIPOLYGON (((0 0, 8 0, 8 8, 0 8, 0 0)), ((2 2, 6 2, 6 6, 2 6, 2 2)), ((3 3, 5 3, 5 5, 3 5, 3 3)))");
+    assert_eq!(
+        messages(&p),
+        [
+            "interiors of polygon 0 and polygon 1 overlap",
+            "interiors of polygon 0 and polygon 2 overlap"
+        ]
+    );
+    let p = wkt("MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0)), ((2 2, 8 2, 8 8, 2 8, 2 2), (3 3, 3 7, 7 7, 7 3, 3 3)), ((20 20, 21 20, 21 21, 20 21, 20 20)), ((20.2 20.2, 20.8 20.2, 20.8 20.8, 20.2 20.8, 20.2 20.2)))");
+    assert_eq!(
+        messages(&p),
+        [
+            "interiors of polygon 0 and polygon 1 overlap",
+            "interiors of polygon 2 and polygon 3 overlap"
+        ]
+    );
+    let at = p[0].at.unwrap();
+    let in_frame = |v: f64| (2.0..3.0).contains(&v) || (7.0..8.0).contains(&v);
+    assert!(
+        (in_frame(at.x) && (2.0..8.0).contains(&at.y))
+            || (in_frame(at.y) && (2.0..8.0).contains(&at.x)),
+        "{p:?}"
+    );
     let mut square_hole = rect(0., 0., 4., 4.).exterior;
     square_hole.reverse();
     let frame = Polygon::new(rect(-1., -1., 6., 6.).exterior, vec![square_hole]);

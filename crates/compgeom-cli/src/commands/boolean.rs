@@ -274,10 +274,11 @@ Checked (OGC simple features, as JTS's isValid judges them): rings closed (WKT a
 GeoJSON; in z too, where given, unlike JTS) with at least 3 distinct points; no edges
 crossing or overlapping; no ring passing twice through a point; the rings of a polygon
 meeting at most once each and not in a loop (else its interior is cut apart); holes
-inside their shell, not overlapping or nested; polygon interiors not overlapping (each
-overlapping pair named once, at a point inside both). Two rings of a polygon may touch
-at one point, polygons at points. Then, as RFC 7946 asks (OGC does not): shells
-counter-clockwise, holes clockwise. Exact throughout.
+inside their shell, not overlapping or nested (each hole inside another named once);
+polygon interiors not overlapping (every polygon that overlaps another named, with one
+it overlaps, at a point inside both). Two rings of a polygon may touch at one point,
+polygons at points. Then, as RFC 7946 asks (OGC does not): shells counter-clockwise,
+holes clockwise. Exact throughout.
 
 Rings other commands reject as bad input (not closed, too short) are reported here.
 

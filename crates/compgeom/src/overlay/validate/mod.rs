@@ -16,14 +16,15 @@
 //! polygon whose boxes overlap in x; naming the polygons of each overlap, a sweep over
 //! the shells' boxes and a point inside each face covered twice.
 mod nesting;
+mod overlaps;
 
-use super::boolean::{boolean_dcel, BooleanEdge, FillRule};
-use crate::dcel::Dcel;
+use super::boolean::{boolean_dcel, FillRule};
 use crate::intersect::find_intersections;
 use crate::io::{ring_orientation, OpenRing};
 use crate::kernel::{orient2d, MultiPolygon, Orientation, Point2, Polygon, Segment2};
 use crate::Result;
-use nesting::{bounds, holes_inside_holes, holes_outside_shells, point_inside, windings, Touches};
+use nesting::{holes_inside_holes, holes_outside_shells, Touches};
+use overlaps::overlapping_polygons;
 use std::borrow::Cow;
 use std::ops::Range;
 
@@ -307,87 +308,6 @@ pub fn validity_problems(polygons: &MultiPolygon) -> Result<Vec<Problem>> {
 /// A ring of the polygons checked: its polygon, its number in the polygon (0 the shell),
 /// its points.
 type Ring = (usize, usize, Vec<Point2>);
-
-/// Reports the pairs of polygons whose interiors overlap, from the faces of `d` (the
-/// arrangement of all rings, each face's count of polygons covering it) covered twice:
-/// two of the polygons covering a point inside such a face, each pair once, in order.
-/// Where no such point is found (a face thinner than the rounding of a point), the
-/// overlap is reported without names.
-fn overlapping_polygons(
-    d: &Dcel<(), BooleanEdge, (i32, i32)>,
-    rings: &[Ring],
-    spans: &[Range<usize>],
-    out: &mut Vec<Problem>,
-) {
-    let twice: Vec<_> = d.face_ids().filter(|&f| d.face(f).data.0 > 1).collect();
-    let Some(&first) = twice.first() else {
-        return;
-    };
-    let inside: Vec<Point2> = twice
-        .iter()
-        .filter_map(|&f| d.face_polygon(f))
-        .filter_map(|face| point_inside(&face.exterior, &face.holes))
-        .collect();
-    let mut pairs: Vec<(usize, usize, Point2)> = two_covering(rings, spans, &inside)
-        .into_iter()
-        .zip(&inside)
-        .filter_map(|(two, &q)| two.map(|(a, b)| (a, b, q)))
-        .collect();
-    if pairs.is_empty() {
-        let at = d
-            .face_polygon(first)
-            .and_then(|p| p.exterior.first().copied());
-        out.push(Problem {
-            message: "polygon interiors overlap".into(),
-            at,
-            polygon: None,
-        });
-    }
-    pairs.sort_by_key(|&(a, b, _)| (a, b));
-    pairs.dedup_by_key(|&mut (a, b, _)| (a, b));
-    out.extend(pairs.into_iter().map(|(a, b, q)| Problem {
-        message: format!("interiors of polygon {a} and polygon {b} overlap"),
-        at: Some(q),
-        polygon: Some(a),
-    }));
-}
-
-/// For each of `points` (none on a ring), two polygons that cover it, the smaller
-/// number first, if there are two: a sweep in x over the points and the shells' boxes,
-/// each point tested against the shells whose boxes hold it until two cover it.
-fn two_covering(
-    rings: &[Ring],
-    spans: &[Range<usize>],
-    points: &[Point2],
-) -> Vec<Option<(usize, usize)>> {
-    let boxes: Vec<_> = spans.iter().map(|s| bounds(&rings[s.start].2)).collect();
-    let covers = |span: &Range<usize>, q: Point2| {
-        windings(&rings[span.start].2, &[q])[0] != 0
-            && (span.start + 1..span.end).all(|h| windings(&rings[h].2, &[q])[0] == 0)
-    };
-    let mut by_x0: Vec<usize> = (0..spans.len()).collect();
-    by_x0.sort_unstable_by(|&i, &j| boxes[i].0.total_cmp(&boxes[j].0));
-    let mut by_x: Vec<usize> = (0..points.len()).collect();
-    by_x.sort_unstable_by(|&i, &j| points[i].x.total_cmp(&points[j].x));
-    let (mut active, mut next) = (Vec::new(), 0);
-    let mut out = vec![None; points.len()];
-    for i in by_x {
-        let q = points[i];
-        while next < by_x0.len() && boxes[by_x0[next]].0 <= q.x {
-            active.push(by_x0[next]);
-            next += 1;
-        }
-        active.retain(|&s| boxes[s].1 >= q.x);
-        let mut found = active
-            .iter()
-            .filter(|&&s| boxes[s].2 <= q.y && q.y <= boxes[s].3 && covers(&spans[s], q))
-            .map(|&s| rings[spans[s].start].0);
-        if let (Some(a), Some(b)) = (found.next(), found.next()) {
-            out[i] = Some((a.min(b), a.max(b)));
-        }
-    }
-    out
-}
 
 /// `polygons` without their empty holes and empty polygons (which the checks skip).
 fn without_empty_rings(polygons: &MultiPolygon) -> Cow<'_, MultiPolygon> {

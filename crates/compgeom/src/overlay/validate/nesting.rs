@@ -50,6 +50,21 @@ impl Touches {
     }
 }
 
+/// The winding number of the closed `ring` around `q` (not on it), exactly, edge by
+/// edge: for one point (the batched [`windings`] is tested against it).
+pub(super) fn winding(ring: &[Point2], q: Point2) -> i32 {
+    let mut w = 0;
+    for (i, &a) in ring.iter().enumerate() {
+        let b = ring[(i + 1) % ring.len()];
+        if a.y <= q.y && b.y > q.y && orient2d(a, b, q) == Orientation::CounterClockwise {
+            w += 1;
+        } else if a.y > q.y && b.y <= q.y && orient2d(a, b, q) == Orientation::Clockwise {
+            w -= 1;
+        }
+    }
+    w
+}
+
 /// The winding number of the closed `ring` around each of `queries`, none of which is on
 /// it, exactly; O((n + m) log m) for n edges and m queries, plus the queries within each
 /// edge's span of y.
@@ -247,24 +262,35 @@ pub(super) fn holes_inside_holes(
 }
 
 /// A point strictly inside the polygon with exterior `outer` and holes `holes` (rings of
-/// any orientation), checked exactly: the centroid of the triangle at a convex vertex
-/// and its neighbours, for the first of a few vertices where that centroid, rounded,
-/// is inside. None where none is (a sliver thinner than the rounding).
+/// any orientation), checked exactly: near a convex vertex `v` of the exterior, between
+/// its neighbours `u` and `w`, the point `v + t (u − v) + t (w − v)` rounded, for `t`
+/// from 1/3 (the centroid of the triangle) down to 2⁻²⁰ (close to `v`, clear of a hole
+/// over the triangle), at the first vertices that have one. None where none is (a
+/// sliver thinner than the rounding).
 pub(super) fn point_inside(outer: &[Point2], holes: &[Vec<Point2>]) -> Option<Point2> {
     let n = outer.len();
     let turn = super::ring_orientation(outer);
     let inside = |q: Point2| {
         let mut rings = std::iter::once(outer).chain(holes.iter().map(Vec::as_slice));
         rings.all(|r| !super::on_ring(r, q))
-            && windings(outer, &[q])[0] != 0
-            && holes.iter().all(|h| windings(h, &[q])[0] == 0)
+            && winding(outer, q) != 0
+            && holes.iter().all(|h| winding(h, q) == 0)
     };
+    let corner = |i: usize| (outer[(i + n - 1) % n], outer[i], outer[(i + 1) % n]);
     (0..n)
-        .filter(|&i| orient2d(outer[(i + n - 1) % n], outer[i], outer[(i + 1) % n]) == turn)
+        .filter(|&i| {
+            let (u, v, w) = corner(i);
+            orient2d(u, v, w) == turn
+        })
         .take(CANDIDATES)
-        .map(|i| {
-            let (a, b, c) = (outer[(i + n - 1) % n], outer[i], outer[(i + 1) % n]);
-            Point2::new((a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0)
+        .flat_map(|i| {
+            let (u, v, w) = corner(i);
+            STEPS.iter().map(move |&t| {
+                Point2::new(
+                    v.x + t * ((u.x - v.x) + (w.x - v.x)),
+                    v.y + t * ((u.y - v.y) + (w.y - v.y)),
+                )
+            })
         })
         .find(|&q| q.is_finite() && inside(q))
 }
@@ -272,27 +298,15 @@ pub(super) fn point_inside(outer: &[Point2], holes: &[Vec<Point2>]) -> Option<Po
 /// How many convex vertices [`point_inside`] tries.
 const CANDIDATES: usize = 16;
 
+/// The steps from a vertex towards its neighbours [`point_inside`] tries.
+const STEPS: [f64; 4] = [1.0 / 3.0, 1.0 / 16.0, 1.0 / 1024.0, 1.0 / 1_048_576.0];
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn p(x: f64, y: f64) -> Point2 {
         Point2::new(x, y)
-    }
-
-    /// The winding number of `ring` around `q`, edge by edge (the oracle).
-    fn winding(ring: &[Point2], q: Point2) -> i32 {
-        let mut w = 0;
-        for (i, &a) in ring.iter().enumerate() {
-            let b = ring[(i + 1) % ring.len()];
-            let side = orient2d(a, b, q);
-            if a.y <= q.y && b.y > q.y && side == Orientation::CounterClockwise {
-                w += 1;
-            } else if a.y > q.y && b.y <= q.y && side == Orientation::Clockwise {
-                w -= 1;
-            }
-        }
-        w
     }
 
     /// The batched winding numbers are those of one point at a time, on rings of both
