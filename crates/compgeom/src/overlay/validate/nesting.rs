@@ -69,6 +69,10 @@ pub(super) fn winding(ring: &[Point2], q: Point2) -> i32 {
 /// it, exactly; O((n + m) log m) for n edges and m queries, plus the queries within each
 /// edge's span of y.
 pub(super) fn windings(ring: &[Point2], queries: &[Point2]) -> Vec<i32> {
+    if queries.is_empty() {
+        // (Most polygons have no holes: no pass over their shells.)
+        return Vec::new();
+    }
     let mut by_y: Vec<usize> = (0..queries.len()).collect();
     by_y.sort_unstable_by(|&i, &j| queries[i].y.total_cmp(&queries[j].y));
     let ys: Vec<f64> = by_y.iter().map(|&i| queries[i].y).collect();

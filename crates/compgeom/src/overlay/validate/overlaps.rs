@@ -23,7 +23,8 @@ pub(super) fn overlapping_polygons(
     out: &mut Vec<Problem>,
 ) {
     let mut inside = Vec::new();
-    let mut unnamed = None;
+    // (The first face without an inside point, and its first vertex.)
+    let mut unnamed: Option<Option<Point2>> = None;
     for f in d.face_ids().filter(|&f| d.face(f).data.0 > 1) {
         let Some(face) = d.face_polygon(f) else {
             continue;
@@ -31,7 +32,7 @@ pub(super) fn overlapping_polygons(
         match point_inside(&face.exterior, &face.holes) {
             Some(q) => inside.push(q),
             None => {
-                unnamed.get_or_insert(face.exterior[0]);
+                unnamed.get_or_insert(face.exterior.first().copied());
             }
         }
     }
@@ -62,7 +63,7 @@ pub(super) fn overlapping_polygons(
     if let Some(at) = unnamed {
         out.push(Problem {
             message: "polygon interiors overlap".into(),
-            at: Some(at),
+            at,
             polygon: None,
         });
     }
