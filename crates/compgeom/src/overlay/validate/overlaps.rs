@@ -2,7 +2,7 @@
 //! arrangement of all rings covered twice or more, and the polygons covering a point
 //! inside each.
 
-use super::nesting::{bounds, point_inside, winding};
+use super::nesting::{bounds, point_inside, windings};
 use super::{Problem, Ring};
 use crate::dcel::Dcel;
 use crate::kernel::Point2;
@@ -11,11 +11,11 @@ use std::ops::Range;
 
 /// Reports overlapping polygons from the faces of `d` (the arrangement of all rings,
 /// each face's count of polygons covering it) covered twice or more: at a point inside
-/// each, every polygon covering it that no problem names yet is named with another one
-/// covering it (so every polygon whose interior overlaps another's is named, each pair
-/// once, without listing every pair where many polygons pile up). A face where no
-/// inside point is found (thinner than the rounding of one) is reported without names,
-/// the first such.
+/// each, a polygon covering it that no problem names yet is named with another one
+/// covering it (so every polygon whose interior overlaps another's there is named,
+/// each pair once, without listing every pair where many polygons pile up). Where no
+/// inside point is found (a face thinner than the rounding of one, or whose first
+/// convex corners all fail), the first such face is reported without names.
 pub(super) fn overlapping_polygons(
     d: &Dcel<(), BooleanEdge, (i32, i32)>,
     rings: &[Ring],
@@ -36,27 +36,28 @@ pub(super) fn overlapping_polygons(
             }
         }
     }
-    let polygons = spans.len();
-    let mut named = vec![false; polygons];
-    let mut pairs: Vec<(usize, usize, Point2)> = Vec::new();
-    for_each_covering(rings, spans, &inside, |q, cover| {
-        for &p in cover {
-            if named[p] {
-                continue;
+    // Per point, the first polygon found covering it; per polygon, whether a problem
+    // names it.
+    let mut first: Vec<Option<usize>> = vec![None; inside.len()];
+    let mut named = vec![false; spans.len()];
+    let mut pairs: Vec<(usize, usize, usize)> = Vec::new();
+    for_each_cover(rings, spans, &inside, |point, polygon| match first[point] {
+        None => first[point] = Some(polygon),
+        Some(other) => {
+            if !named[polygon] || !named[other] {
+                pairs.push((other.min(polygon), other.max(polygon), point));
+                (named[polygon], named[other]) = (true, true);
             }
-            let other = if p == cover[0] { cover[1] } else { cover[0] };
-            pairs.push((p.min(other), p.max(other), q));
-            (named[p], named[other]) = (true, true);
         }
     });
-    pairs.sort_by_key(|&(a, b, _)| (a, b));
+    pairs.sort_unstable();
     pairs.dedup_by_key(|&mut (a, b, _)| (a, b));
     let polygon_of = |s: usize| rings[spans[s].start].0;
-    out.extend(pairs.into_iter().map(|(a, b, q)| {
+    out.extend(pairs.into_iter().map(|(a, b, point)| {
         let (a, b) = (polygon_of(a), polygon_of(b));
         Problem {
             message: format!("interiors of polygon {a} and polygon {b} overlap"),
-            at: Some(q),
+            at: Some(inside[point]),
             polygon: Some(a),
         }
     }));
@@ -69,25 +70,26 @@ pub(super) fn overlapping_polygons(
     }
 }
 
-/// Calls `f(q, cover)` for each of `points` (none on a ring) covered by two polygons or
-/// more, `cover` their numbers in `spans`, ascending: a sweep in x over the points and
-/// the shells' boxes, each point tested against the shells whose boxes hold it.
-fn for_each_covering(
+/// Candidate (polygon, point) pairs [`for_each_cover`] collects before it tests them.
+const COVER_BATCH: usize = 1 << 14;
+
+/// Calls `f(point, polygon)` for each of `points` (none on a ring) and each polygon (its
+/// number in `spans`) covering it. The candidates come from a sweep in x over the points
+/// and the shells' boxes; they are tested in batches, each batch by polygon: one pass
+/// over each of its rings for all its candidate points ([`windings`]), so a large
+/// polygon over many small ones is not walked once per point.
+fn for_each_cover(
     rings: &[Ring],
     spans: &[Range<usize>],
     points: &[Point2],
-    mut f: impl FnMut(Point2, &[usize]),
+    mut f: impl FnMut(usize, usize),
 ) {
     let boxes: Vec<_> = spans.iter().map(|s| bounds(&rings[s.start].2)).collect();
-    let covers = |span: &Range<usize>, q: Point2| {
-        winding(&rings[span.start].2, q) != 0
-            && (span.start + 1..span.end).all(|h| winding(&rings[h].2, q) == 0)
-    };
     let mut by_x0: Vec<usize> = (0..spans.len()).collect();
     by_x0.sort_unstable_by(|&i, &j| boxes[i].0.total_cmp(&boxes[j].0));
     let mut by_x: Vec<usize> = (0..points.len()).collect();
     by_x.sort_unstable_by(|&i, &j| points[i].x.total_cmp(&points[j].x));
-    let (mut active, mut next, mut cover) = (Vec::new(), 0, Vec::new());
+    let (mut active, mut next, mut batch) = (Vec::new(), 0, Vec::new());
     for i in by_x {
         let q = points[i];
         while next < by_x0.len() && boxes[by_x0[next]].0 <= q.x {
@@ -95,16 +97,58 @@ fn for_each_covering(
             next += 1;
         }
         active.retain(|&s| boxes[s].1 >= q.x);
-        cover.clear();
-        cover.extend(
-            active
-                .iter()
-                .copied()
-                .filter(|&s| boxes[s].2 <= q.y && q.y <= boxes[s].3 && covers(&spans[s], q)),
-        );
-        if cover.len() >= 2 {
-            cover.sort_unstable();
-            f(q, &cover);
+        for &s in &active {
+            if boxes[s].2 <= q.y && q.y <= boxes[s].3 {
+                batch.push((s, i));
+                if batch.len() == COVER_BATCH {
+                    test_covers(rings, spans, points, &mut batch, &mut f);
+                }
+            }
         }
     }
+    test_covers(rings, spans, points, &mut batch, &mut f);
+}
+
+/// The pairs `(polygon, point)` of `batch` where the polygon covers the point, to `f`
+/// (as `f(point, polygon)`); `batch` is left empty.
+fn test_covers(
+    rings: &[Ring],
+    spans: &[Range<usize>],
+    points: &[Point2],
+    batch: &mut Vec<(usize, usize)>,
+    f: &mut impl FnMut(usize, usize),
+) {
+    batch.sort_unstable();
+    for group in batch.chunk_by(|a, b| a.0 == b.0) {
+        let span = &spans[group[0].0];
+        let queries: Vec<Point2> = group.iter().map(|&(_, i)| points[i]).collect();
+        let shell = windings(&rings[span.start].2, &queries);
+        let mut covered: Vec<bool> = shell.iter().map(|&w| w != 0).collect();
+        for hole in &rings[span.start + 1..span.end] {
+            // (Only the points in the hole's box: most holes are far from most points.)
+            let b = bounds(&hole.2);
+            let near: Vec<usize> = (0..queries.len())
+                .filter(|&k| covered[k])
+                .filter(|&k| {
+                    let q = queries[k];
+                    b.0 <= q.x && q.x <= b.1 && b.2 <= q.y && q.y <= b.3
+                })
+                .collect();
+            let in_hole = windings(
+                &hole.2,
+                &near.iter().map(|&k| queries[k]).collect::<Vec<_>>(),
+            );
+            for (k, w) in near.into_iter().zip(in_hole) {
+                if w != 0 {
+                    covered[k] = false;
+                }
+            }
+        }
+        for (&(polygon, point), covered) in group.iter().zip(covered) {
+            if covered {
+                f(point, polygon);
+            }
+        }
+    }
+    batch.clear();
 }
