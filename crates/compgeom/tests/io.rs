@@ -653,14 +653,19 @@ fn geojson_multipolygons_with_empty_members() {
             read.features
         );
     }
-    // Still an error where the coordinates are wrong for other reasons.
+    // Still an error where the coordinates are wrong for other reasons, naming that
+    // reason; and the retry does not make other broken documents acceptable (a key given
+    // twice).
     let (m, line) = parse_error(read_polygons(
         "{\"type\": \"MultiPolygon\",\n\"coordinates\": [[], [[[0, \"a\"]]]]}",
         Format::GeoJson,
         "g",
     ));
-    assert!(m.contains("invalid GeoJSON"), "{m}");
+    assert!(m.contains("invalid GeoJSON") && m.contains("\"a\""), "{m}");
     assert_eq!(line, Some(2));
+    let twice = r#"{"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]],"coordinates":[[[5,5],[6,5],[6,6],[5,5]]]}"#;
+    let (m, _) = parse_error(read_polygons(twice, Format::GeoJson, "g"));
+    assert!(m.contains("duplicate field"), "{m}");
 }
 
 #[test]

@@ -20,11 +20,15 @@ fn json_error(e: &serde_json::Error, source: &str) -> Error {
     } else {
         format!("invalid GeoJSON: {message}")
     };
-    let location = Location {
+    Error::parse(message, json_location(e, source))
+}
+
+/// The file and line of a serde_json error.
+fn json_location(e: &serde_json::Error, source: &str) -> Location {
+    Location {
         source: Some(source.to_string()),
         line: (e.line() > 0).then_some(e.line()),
-    };
-    Error::parse(message, location)
+    }
 }
 
 fn coord(p: &Position) -> Coord {
@@ -156,7 +160,7 @@ pub(crate) fn read(text: &str, source: &str) -> Result<Vec<Part>> {
     }
     let doc: GeoJson = match serde_json::from_str(text) {
         Ok(doc) => doc,
-        Err(e) => without_empty_polygons(text).ok_or_else(|| json_error(&e, source))?,
+        Err(e) => without_empty_polygons(text, &e, source)?,
     };
     let mut parts = Vec::new();
     // The line of the opening brace.
@@ -182,29 +186,52 @@ pub(crate) fn read(text: &str, source: &str) -> Result<Vec<Part>> {
     Ok(parts)
 }
 
-/// The document `text` with the empty polygons of its MultiPolygons left out, where
-/// that makes it GeoJSON. (The `geojson` crate tells how deeply coordinates nest from
-/// their first element, so a MultiPolygon whose first polygon is `[]` fails to parse;
-/// empty members are nothing, as [`flatten`] reads them.) Only tried on text that
-/// failed: none of this costs valid input anything.
-fn without_empty_polygons(text: &str) -> Option<GeoJson> {
-    fn mend(v: &mut Value) {
-        match v {
-            Value::Object(o) => {
-                if o.get("type").and_then(Value::as_str) == Some("MultiPolygon") {
-                    if let Some(Value::Array(polygons)) = o.get_mut("coordinates") {
-                        polygons.retain(|p| p.as_array().map_or(true, |rings| !rings.is_empty()));
-                    }
-                }
-                o.values_mut().for_each(mend);
+/// The document `text`, which failed to parse with `error`, with the empty polygons of
+/// its MultiPolygons left out, where there are any. (The `geojson` crate tells how
+/// deeply coordinates nest from their first element, so a MultiPolygon whose first
+/// polygon is `[]` fails to parse; empty members are nothing, as [`flatten`] reads
+/// them.) Where there are none, or the document still fails, the error is the parse's:
+/// the first one, else the message of the second (which names what is wrong with the
+/// mended document) at the line of the first. Only tried on text that failed: none of
+/// this costs valid input anything.
+fn without_empty_polygons(text: &str, error: &serde_json::Error, source: &str) -> Result<GeoJson> {
+    /// Leaves out the empty polygons of the MultiPolygons at `v`, where GeoJSON puts
+    /// geometries (not in properties); whether there were any.
+    fn mend(v: &mut Value) -> bool {
+        let Value::Object(o) = v else {
+            return false;
+        };
+        let mut mended = false;
+        if o.get("type").and_then(Value::as_str) == Some("MultiPolygon") {
+            if let Some(Value::Array(polygons)) = o.get_mut("coordinates") {
+                let before = polygons.len();
+                polygons.retain(|p| p.as_array().map_or(true, |rings| !rings.is_empty()));
+                mended |= polygons.len() < before;
             }
-            Value::Array(items) => items.iter_mut().for_each(mend),
-            _ => {}
         }
+        if let Some(g) = o.get_mut("geometry") {
+            mended |= mend(g);
+        }
+        for list in ["geometries", "features"] {
+            if let Some(Value::Array(items)) = o.get_mut(list) {
+                for item in items {
+                    mended |= mend(item);
+                }
+            }
+        }
+        mended
     }
-    let mut value: Value = serde_json::from_str(text).ok()?;
-    mend(&mut value);
-    serde_json::from_value(value).ok()
+    let first = || json_error(error, source);
+    let mut value: Value = serde_json::from_str(text).map_err(|_| first())?;
+    if !mend(&mut value) {
+        return Err(first());
+    }
+    serde_json::from_value(value).map_err(|e| {
+        Error::parse(
+            format!("invalid GeoJSON: {e}"),
+            json_location(error, source),
+        )
+    })
 }
 
 /// How deeply arrays nest at the start of `v` (0 for a number).
