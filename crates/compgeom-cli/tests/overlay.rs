@@ -193,6 +193,21 @@ fn overlay_labels_faces_by_feature_with_their_properties() {
         .collect();
     a_labels.sort();
     assert_eq!(a_labels, ["1", "1", "1", "2", "2", "null", "null"], "{v}");
+    // WKT input has no properties: each polygon is a feature, its properties null.
+    let (_d, wa, wb) = files();
+    let v = json(&[
+        "overlay".as_ref(),
+        wa.as_os_str(),
+        wb.as_os_str(),
+        "-f".as_ref(),
+        "geojson".as_ref(),
+    ]);
+    let features = v["features"].as_array().unwrap();
+    assert_eq!(features.len(), 3, "{v}");
+    assert!(features
+        .iter()
+        .all(|f| f["properties"]["a_properties"].is_null()
+            && f["properties"]["b_properties"].is_null()));
 }
 
 #[test]
@@ -224,6 +239,7 @@ fn validate_reports_a_crossing() {
     // The picture: the input and a mark per problem, the count in the title.
     let picture = fs::read_to_string(&svg).unwrap();
     assert!(picture.contains("validate: 1 problem(s)"), "{picture}");
+    // (The problem's mark and the legend's.)
     assert_eq!(picture.matches("<circle").count(), 1 + 1, "{picture}");
     let (_d, a, _b) = files();
     let v = json(&["validate".as_ref(), a.as_os_str()]);

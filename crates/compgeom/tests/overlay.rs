@@ -376,6 +376,31 @@ fn touching_rings_follow_the_ogc_rules() {
     let p = problems("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 9, 9 9, 9 1, 1 1), (2 2, 2 8, 8 8, 8 2, 2 2), (3 3, 3 7, 7 7, 7 3, 3 3))");
     let named: Vec<&str> = p.iter().map(|q| &q.message[..17]).collect();
     assert_eq!(named, ["polygon 0 hole 1:", "polygon 0 hole 2:"], "{p:?}");
+    // A hole touching another at its first vertex is tested from its second, inside the
+    // other or not (a triangle in the mouth of a C-shaped hole).
+    let p = problems(
+        "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 9, 9 9, 9 1, 1 1), (1 5, 3 6, 3 4, 1 5))",
+    );
+    let messages: Vec<&str> = p.iter().map(|q| q.message.as_str()).collect();
+    assert_eq!(messages, ["polygon 0 hole 1: lies inside hole 0"]);
+    assert_eq!(
+        problems("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (1 1, 1 9, 9 9, 9 8, 2 8, 2 2, 9 2, 9 1, 1 1), (2 5, 5 6, 5 4, 2 5))"),
+        []
+    );
+    // Nested boxes past one batch of tests (200 concentric holes: 19 900 pairs), each
+    // hole inside another reported once.
+    let holes: Vec<String> = (1..=200)
+        .map(|k| {
+            let (a, b) = (k, 402 - k);
+            format!("({a} {a}, {a} {b}, {b} {b}, {b} {a}, {a} {a})")
+        })
+        .collect();
+    let p = problems(&format!(
+        "POLYGON ((0 0, 402 0, 402 402, 0 402, 0 0), {})",
+        holes.join(", ")
+    ));
+    assert_eq!(p.len(), 199, "{:?}", &p[..3.min(p.len())]);
+    assert!(p.iter().all(|q| q.message.contains("lies inside hole")));
     // A hole sharing part of an edge with its shell: the overlap, not also a loop.
     let p = problems("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (0 2, 0 4, 3 3, 0 2))");
     assert!(p.iter().any(|q| q.message.contains("overlap")), "{p:?}");

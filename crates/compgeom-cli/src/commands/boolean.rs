@@ -276,9 +276,10 @@ crossing or overlapping; no ring passing twice through a point; the rings of a p
 meeting at most once each and not in a loop (else its interior is cut apart); holes
 inside their shell, not overlapping or nested (each hole inside another named once);
 polygon interiors not overlapping (every polygon that overlaps another named, with one
-it overlaps, at a point inside both). Two rings of a polygon may touch at one point,
-polygons at points. Then, as RFC 7946 asks (OGC does not): shells counter-clockwise,
-holes clockwise. Exact throughout.
+it overlaps, at a point inside both; an overlap too thin for such a point is reported
+without names). Two rings of a polygon may touch at one point, polygons at points.
+Then, as RFC 7946 asks (OGC does not): shells counter-clockwise, holes clockwise.
+Exact throughout.
 
 Rings other commands reject as bad input (not closed, too short) are reported here.
 

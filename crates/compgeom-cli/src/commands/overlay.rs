@@ -10,7 +10,7 @@ use clap::Args;
 use compgeom::dcel::FaceId;
 use compgeom::io::{read_polygon_features, to_geojson_value, Format, Shape};
 use compgeom::overlay::{overlay_polygons, rounding_suspects};
-use compgeom::render::{Layer as PictureLayer, Picture, Style};
+use compgeom::render::{Layer, Picture, Style};
 use compgeom::MultiPolygon;
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -33,7 +33,8 @@ JSON output (--format json, the default) is one object:
             printed as a warning); usually empty
 
 Features are numbered from 0 in reading order: the GeoJSON Features of a
-FeatureCollection, else each polygon (a WKT MULTIPOLYGON gives several). Where features
+FeatureCollection (a single Feature is feature 0, whatever its geometry), else each
+polygon (a WKT MULTIPOLYGON gives several). Where features
 of one layer overlap, `a`/`b` is the lowest index containing the face.
 --format geojson prints a FeatureCollection with one feature per bounded face and
 properties `a` and `b`, and `a_properties` and `b_properties`: the properties of those
@@ -62,8 +63,8 @@ pub struct OverlayArgs {
 
 /// Run `compgeom overlay`.
 pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
-    let a = Layer::read(&args.input)?;
-    let b = Layer::read(&other_input(&args.input, &args.b))?;
+    let a = InputLayer::read(&args.input)?;
+    let b = InputLayer::read(&other_input(&args.input, &args.b))?;
     let d = overlay_polygons(&a.polygons, &b.polygons)?;
     // With --verify: the structure's invariants, and the faces near which rounding may
     // have made edges meet (the overlay mended what it could; listed, not an error).
@@ -141,7 +142,7 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
                 let name = format!("face {} (a {fa:?}, b {fb:?})", f.0);
                 let style =
                     Style::area(colour(!la.is_empty(), !lb.is_empty())).with_fill_opacity(0.4);
-                pic.add(PictureLayer::new(name, style).polygon(&p));
+                pic.add(Layer::new(name, style).polygon(&p));
             }
         }
         output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
@@ -153,21 +154,21 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
 
 /// A polygon layer: its polygons, each one's input feature, and the features' GeoJSON
 /// properties (none for other formats).
-struct Layer {
+struct InputLayer {
     polygons: MultiPolygon,
     features: Vec<usize>,
     properties: Vec<Value>,
 }
 
-impl Layer {
-    fn read(input: &InputArgs) -> Result<Layer, CliError> {
+impl InputLayer {
+    fn read(input: &InputArgs) -> Result<InputLayer, CliError> {
         let src = input.read()?;
         let (polygons, features) = read_polygon_features(&src.text, src.format, &src.name)?;
         let properties = match src.format {
             Format::GeoJson | Format::Json => feature_properties(&src.text),
             _ => Vec::new(),
         };
-        Ok(Layer {
+        Ok(InputLayer {
             polygons,
             features,
             properties,

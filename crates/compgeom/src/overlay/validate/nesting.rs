@@ -5,8 +5,10 @@
 //! sweep found, [`Touches`]), so a vertex of one that is not that point lies strictly
 //! inside the other or strictly outside it, and so does the whole ring: one exact
 //! winding number decides. The winding numbers are taken in one pass over the edges of
-//! the ring around, for all the points asked of it at once ([`windings`]), so a shell
-//! with many holes costs O((s + h) log h), not O(s) per hole.
+//! the ring around, for all the points asked of it at once ([`windings`]): a shell of s
+//! edges with h holes costs O((s + h) log h) plus, per edge, the holes level with it
+//! (usually few; O(s h) only where many edges span the heights of many holes, as the
+//! test of each hole against the whole shell always cost).
 
 use super::{ring_name, Problem, Ring};
 use crate::kernel::{orient2d, Orientation, Point2};
