@@ -262,6 +262,11 @@ fn validity_reasons() {
             || (in_frame(at.y) && (2.0..8.0).contains(&at.x)),
         "{p:?}"
     );
+    // An overlap with no float point inside it (a triangle less than a float gap high
+    // over its whole length, inside a square): reported, without names.
+    let p = wkt("MULTIPOLYGON (((0 1, 9007199254740992 1, 9007199254740992 1.0000000000000002, 0 1)), ((-1 0, 18014398509481984 0, 18014398509481984 2, -1 2, -1 0)))");
+    assert_eq!(messages(&p), ["polygon interiors overlap"]);
+    assert_eq!(p[0].polygon, None);
     let mut square_hole = rect(0., 0., 4., 4.).exterior;
     square_hole.reverse();
     let frame = Polygon::new(rect(-1., -1., 6., 6.).exterior, vec![square_hole]);
