@@ -1044,7 +1044,7 @@ fn traced(
 }
 
 /// `[min x, max x, min y, max y]` of `points`.
-fn box_of(points: &[Point2]) -> [f64; 4] {
+pub(super) fn box_of(points: &[Point2]) -> [f64; 4] {
     let mut b = [
         f64::INFINITY,
         f64::NEG_INFINITY,

@@ -12,6 +12,7 @@
 
 use super::{ring_name, Problem, Ring};
 use crate::kernel::{orient2d, Orientation, Point2};
+use crate::overlay::trace::box_of;
 use std::ops::Range;
 
 /// The point where each pair of rings of one polygon touch, `(ring, ring, point)` with
@@ -102,20 +103,8 @@ pub(super) fn windings(ring: &[Point2], queries: &[Point2]) -> Vec<i32> {
     out
 }
 
-/// A box's sides: `(x0, x1, y0, y1)`.
-type Bounds = (f64, f64, f64, f64);
-
-pub(super) fn bounds(ring: &[Point2]) -> Bounds {
-    ring.iter().fold(
-        (
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-        ),
-        |(x0, x1, y0, y1), p| (x0.min(p.x), x1.max(p.x), y0.min(p.y), y1.max(p.y)),
-    )
-}
+/// A box's sides: `[x0, x1, y0, y1]`, as [`box_of`] gives them.
+type Bounds = [f64; 4];
 
 /// Calls `f(inner, outer)` for the pairs of `boxes` where the box of `outer` holds that
 /// of `inner` (both ways for equal boxes), each box against those it overlaps along one
@@ -129,8 +118,8 @@ pub(super) fn for_each_box_within(boxes: &[Bounds], f: impl FnMut(usize, usize))
         extent * boxes.len() as f64 / sizes
     };
     // (Holding is the same with x and y swapped.)
-    if spread(|b| b.2, |b| b.3) > spread(|b| b.0, |b| b.1) {
-        let swapped: Vec<Bounds> = boxes.iter().map(|b| (b.2, b.3, b.0, b.1)).collect();
+    if spread(|b| b[2], |b| b[3]) > spread(|b| b[0], |b| b[1]) {
+        let swapped: Vec<Bounds> = boxes.iter().map(|b| [b[2], b[3], b[0], b[1]]).collect();
         for_each_box_within_by_x(&swapped, f);
     } else {
         for_each_box_within_by_x(boxes, f);
@@ -139,12 +128,13 @@ pub(super) fn for_each_box_within(boxes: &[Bounds], f: impl FnMut(usize, usize))
 
 /// [`for_each_box_within`], sweeping in x.
 fn for_each_box_within_by_x(boxes: &[Bounds], mut f: impl FnMut(usize, usize)) {
-    let holds = |o: &Bounds, i: &Bounds| o.0 <= i.0 && i.1 <= o.1 && o.2 <= i.2 && i.3 <= o.3;
+    let holds =
+        |o: &Bounds, i: &Bounds| o[0] <= i[0] && i[1] <= o[1] && o[2] <= i[2] && i[3] <= o[3];
     let mut by_x: Vec<usize> = (0..boxes.len()).collect();
-    by_x.sort_unstable_by(|&i, &j| boxes[i].0.total_cmp(&boxes[j].0));
+    by_x.sort_unstable_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
     for (k, &i) in by_x.iter().enumerate() {
         for &j in &by_x[k + 1..] {
-            if boxes[j].0 > boxes[i].1 {
+            if boxes[j][0] > boxes[i][1] {
                 break;
             }
             if holds(&boxes[i], &boxes[j]) {
@@ -213,7 +203,7 @@ pub(super) fn holes_inside_holes(
         if holes.len() < 2 {
             continue;
         }
-        let boxes: Vec<_> = holes.iter().map(|&h| bounds(&rings[h].2)).collect();
+        let boxes: Vec<_> = holes.iter().map(|&h| box_of(&rings[h].2)).collect();
         // Per hole (by its place in `holes`), the hole it was found inside and where.
         let mut inside: Vec<Option<(usize, Point2)>> = vec![None; holes.len()];
         let mut batch: Vec<(usize, usize)> = Vec::new();
@@ -343,7 +333,7 @@ mod tests {
             let boxes: Vec<Bounds> = (0..12)
                 .map(|_| {
                     let (x, y) = (below(10) as f64, below(10) as f64);
-                    (x, x + below(5) as f64, y, y + below(5) as f64)
+                    [x, x + below(5) as f64, y, y + below(5) as f64]
                 })
                 .collect();
             let collect = |by_x: bool| {
@@ -361,7 +351,7 @@ mod tests {
             let mut want = Vec::new();
             for (i, a) in boxes.iter().enumerate() {
                 for (o, b) in boxes.iter().enumerate() {
-                    if i != o && b.0 <= a.0 && a.1 <= b.1 && b.2 <= a.2 && a.3 <= b.3 {
+                    if i != o && b[0] <= a[0] && a[1] <= b[1] && b[2] <= a[2] && a[3] <= b[3] {
                         want.push((i, o));
                     }
                 }

@@ -2,10 +2,11 @@
 //! arrangement of all rings covered twice or more, and the polygons covering a point
 //! inside each.
 
-use super::nesting::{bounds, point_inside, windings};
+use super::nesting::{point_inside, windings};
 use super::{Problem, Ring};
 use crate::dcel::Dcel;
 use crate::kernel::Point2;
+use crate::overlay::trace::box_of;
 use crate::overlay::BooleanEdge;
 use std::ops::Range;
 
@@ -84,21 +85,21 @@ fn for_each_cover(
     points: &[Point2],
     mut f: impl FnMut(usize, usize),
 ) {
-    let boxes: Vec<_> = spans.iter().map(|s| bounds(&rings[s.start].2)).collect();
+    let boxes: Vec<_> = spans.iter().map(|s| box_of(&rings[s.start].2)).collect();
     let mut by_x0: Vec<usize> = (0..spans.len()).collect();
-    by_x0.sort_unstable_by(|&i, &j| boxes[i].0.total_cmp(&boxes[j].0));
+    by_x0.sort_unstable_by(|&i, &j| boxes[i][0].total_cmp(&boxes[j][0]));
     let mut by_x: Vec<usize> = (0..points.len()).collect();
     by_x.sort_unstable_by(|&i, &j| points[i].x.total_cmp(&points[j].x));
     let (mut active, mut next, mut batch) = (Vec::new(), 0, Vec::new());
     for i in by_x {
         let q = points[i];
-        while next < by_x0.len() && boxes[by_x0[next]].0 <= q.x {
+        while next < by_x0.len() && boxes[by_x0[next]][0] <= q.x {
             active.push(by_x0[next]);
             next += 1;
         }
-        active.retain(|&s| boxes[s].1 >= q.x);
+        active.retain(|&s| boxes[s][1] >= q.x);
         for &s in &active {
-            if boxes[s].2 <= q.y && q.y <= boxes[s].3 {
+            if boxes[s][2] <= q.y && q.y <= boxes[s][3] {
                 batch.push((s, i));
                 if batch.len() == COVER_BATCH {
                     test_covers(rings, spans, points, &mut batch, &mut f);
@@ -126,12 +127,12 @@ fn test_covers(
         let mut covered: Vec<bool> = shell.iter().map(|&w| w != 0).collect();
         for hole in &rings[span.start + 1..span.end] {
             // (Only the points in the hole's box: most holes are far from most points.)
-            let b = bounds(&hole.2);
+            let b = box_of(&hole.2);
             let near: Vec<usize> = (0..queries.len())
                 .filter(|&k| covered[k])
                 .filter(|&k| {
                     let q = queries[k];
-                    b.0 <= q.x && q.x <= b.1 && b.2 <= q.y && q.y <= b.3
+                    b[0] <= q.x && q.x <= b[1] && b[2] <= q.y && q.y <= b[3]
                 })
                 .collect();
             let in_hole = windings(
