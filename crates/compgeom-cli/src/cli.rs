@@ -29,6 +29,7 @@ use crate::commands::range::RangeArgs;
 use crate::commands::voronoi::VoronoiArgs;
 use crate::commands::window::WindowArgs;
 use crate::demo::DemoArgs;
+use crate::error::CliError;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 
@@ -126,9 +127,10 @@ pub struct InputArgs {
 /// How results are checked, written and drawn.
 #[derive(Debug, Clone, Args)]
 pub struct OutputArgs {
-    /// Output format.
-    #[arg(short = 'f', long, value_enum, default_value_t = OutputFormat::Json)]
-    pub format: OutputFormat,
+    /// Output format. Default: from the extension of the `-o` file (.json, .geojson,
+    /// .wkt, .csv), otherwise json.
+    #[arg(short = 'f', long = "format", value_enum, value_name = "FORMAT")]
+    pub format_asked: Option<OutputFormat>,
 
     /// Write the result to this file (atomically: complete or not at all) instead of
     /// standard output. `-` means standard output.
@@ -142,6 +144,47 @@ pub struct OutputArgs {
     /// Check the result exactly with the library's verifier; exit 1 if it fails.
     #[arg(long)]
     pub verify: bool,
+}
+
+impl OutputArgs {
+    /// The output format: `--format` where given, else the one the `-o` file's extension
+    /// names (`out.geojson` is GeoJSON, as a reader of the file expects), else JSON.
+    pub fn format(&self) -> OutputFormat {
+        self.format_asked
+            .or_else(|| self.format_of_extension())
+            .unwrap_or(OutputFormat::Json)
+    }
+
+    /// The format the `-o` file's extension names, if any (case aside).
+    fn format_of_extension(&self) -> Option<OutputFormat> {
+        let extension = self.output.as_ref()?.extension()?.to_str()?;
+        match extension.to_ascii_lowercase().as_str() {
+            "json" => Some(OutputFormat::Json),
+            "geojson" => Some(OutputFormat::Geojson),
+            "wkt" => Some(OutputFormat::Wkt),
+            "csv" => Some(OutputFormat::Csv),
+            _ => None,
+        }
+    }
+
+    /// The error for a command that cannot write the output format: `what` says what it
+    /// writes (e.g. "json only"); where the format came from the `-o` file's name, so
+    /// does the message.
+    pub fn unsupported(&self, command: &str, what: &str) -> CliError {
+        let name = self
+            .format()
+            .to_possible_value()
+            .map(|v| v.get_name().to_string())
+            .unwrap_or_default();
+        let origin = match (&self.format_asked, &self.output) {
+            (None, Some(out)) => format!(
+                " (the format of {}'s extension; name the format with --format)",
+                out.display()
+            ),
+            _ => String::new(),
+        };
+        CliError::bad_input(format!("{command} writes {what}, not {name}{origin}"))
+    }
 }
 
 /// Input formats.

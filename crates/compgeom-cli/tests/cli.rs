@@ -401,6 +401,42 @@ mod with_io_and_hull {
         assert_eq!(got, want);
     }
 
+    /// Without `--format`, the `-o` file's extension names the format (in any case);
+    /// `--format` wins over it; another extension, or standard output, gets JSON.
+    #[test]
+    fn output_format_from_the_file_extension() {
+        let (dir, path) = input("square.csv", SQUARE_CSV);
+        let write = |name: &str, extra: &[&str]| {
+            let out = dir.path().join(name);
+            compgeom()
+                .arg("hull")
+                .arg(&path)
+                .arg("-o")
+                .arg(&out)
+                .args(extra)
+                .assert()
+                .success()
+                .stdout("");
+            fs::read_to_string(&out).unwrap()
+        };
+        let gj: Value = serde_json::from_str(&write("hull.geojson", &[])).unwrap();
+        assert_eq!(gj["type"], "Polygon");
+        let gj: Value = serde_json::from_str(&write("HULL.GeoJSON", &[])).unwrap();
+        assert_eq!(gj["type"], "Polygon");
+        assert!(write("hull.wkt", &[]).starts_with("POLYGON"));
+        assert_eq!(csv_vertices(&write("hull.csv", &[])), SQUARE_HULL);
+        for (name, extra) in [
+            ("hull.json", &[][..]),
+            ("hull.txt", &[]),
+            ("hull.geojson", &["--format", "json"]),
+        ] {
+            let v: Value = serde_json::from_str(&write(name, extra)).unwrap();
+            assert_eq!(hull_of(&v), SQUARE_HULL, "{name} {extra:?}");
+        }
+        // `--format` over the extension, the other way too.
+        assert!(write("hull.json", &["--format", "wkt"]).starts_with("POLYGON"));
+    }
+
     #[test]
     fn small_hulls_take_smaller_shapes() {
         let wkt_of = |text: &str| {

@@ -70,6 +70,52 @@ fn boolean_wkt_output_and_svg() {
     assert!(fs::read_to_string(svg).unwrap().contains("<svg"));
 }
 
+/// `-o out.geojson` writes the result as GeoJSON (the format the name says), which
+/// `validate` reads back; a format the command cannot write, named by the file's
+/// extension, is bad input that names the file, and nothing is written.
+#[test]
+fn output_format_from_the_file_extension() {
+    let (d, a, b) = files();
+    let out = d.path().join("x.geojson");
+    compgeom()
+        .args(["boolean", "intersection"])
+        .arg(&a)
+        .arg(&b)
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .success();
+    let v: Value = serde_json::from_str(&fs::read_to_string(&out).unwrap()).unwrap();
+    assert_eq!(v["type"], "MultiPolygon", "{v}");
+    let report = json(&["validate".as_ref(), out.as_os_str()]);
+    assert_eq!(report["valid"], true, "{report}");
+    let faces = d.path().join("faces.geojson");
+    compgeom()
+        .arg("overlay")
+        .arg(&a)
+        .arg(&b)
+        .arg("-o")
+        .arg(&faces)
+        .assert()
+        .success();
+    let v: Value = serde_json::from_str(&fs::read_to_string(&faces).unwrap()).unwrap();
+    assert_eq!(v["type"], "FeatureCollection", "{v}");
+    let csv = d.path().join("faces.csv");
+    compgeom()
+        .arg("overlay")
+        .arg(&a)
+        .arg(&b)
+        .arg("-o")
+        .arg(&csv)
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains(
+            "overlay writes json or geojson, not csv",
+        ))
+        .stderr(predicates::str::contains("faces.csv"));
+    assert!(!csv.exists());
+}
+
 /// One input's polygons are united (positive fill rule unless another is asked for:
 /// even-odd makes their overlap a hole); other operations need B.
 #[test]

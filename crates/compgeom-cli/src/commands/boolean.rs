@@ -174,7 +174,7 @@ pub fn run(args: &BooleanArgs) -> Result<(), CliError> {
     };
     let result = boolean_with(&a, &b, args.operation.op(), &opts)?;
     let shape = Shape::MultiPolygon(result.clone());
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => serde_json::to_string(&BooleanJson {
             operation: args.operation.name(),
             fill_rule: fill_rule.name(),
@@ -243,7 +243,7 @@ pub fn run_make_valid(args: &MakeValidArgs) -> Result<(), CliError> {
     let a = read_layer(&args.input)?;
     let result = make_valid(&a, args.fill_rule.rule())?;
     let shape = Shape::MultiPolygon(result.clone());
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => serde_json::to_string(&serde_json::json!({
             "operation": "make-valid",
             "fill_rule": args.fill_rule.name(),

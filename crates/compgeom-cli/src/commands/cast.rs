@@ -68,10 +68,8 @@ pub fn run(args: &CastArgs) -> Result<(), CliError> {
         e @ compgeom::Error::Parse { .. } => CliError::from(e),
         e => CliError::bad_input(format!("{name}: {e}")),
     })?;
-    if args.output.format.geometry_format().is_some() {
-        return Err(CliError::bad_input(
-            "cast writes JSON only; use --format json",
-        ));
+    if args.output.format().geometry_format().is_some() {
+        return Err(args.output.unsupported("cast", "json only"));
     }
     let text = serde_json::to_string(&CastJson {
         result: &result,

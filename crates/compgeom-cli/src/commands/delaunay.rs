@@ -223,7 +223,7 @@ pub fn run(args: &DelaunayArgs) -> Result<(), CliError> {
             }
         }
     };
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => {
             let json = DelaunayJson {
                 vertices: tri.vertices().iter().map(|p| [p.x, p.y]).collect(),

@@ -67,7 +67,7 @@ pub fn run(args: &EncloseArgs) -> Result<(), CliError> {
     if args.output.verify {
         verify_enclosing_disc(&points, &disc)?;
     }
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => serde_json::to_string(&DiscJson {
             center: [disc.center.x, disc.center.y],
             radius: disc.radius,

@@ -84,7 +84,7 @@ pub fn run(args: &GuardArgs) -> Result<(), CliError> {
     let polygons = read_layer(&args.input)?;
     let t = triangulate_all(polygons, args.output.verify)?;
     let g = guard_all(&t, args.output.verify)?;
-    let text = match args.output.format {
+    let text = match args.output.format() {
         OutputFormat::Json => {
             let mut v = json!({
                 "guards": points_json(&g.guards),
@@ -98,11 +98,7 @@ pub fn run(args: &GuardArgs) -> Result<(), CliError> {
             serde_json::to_string(&v)
                 .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?
         }
-        OutputFormat::Csv => {
-            return Err(CliError::bad_input(
-                "guard writes json, geojson or wkt, not csv",
-            ))
-        }
+        OutputFormat::Csv => return Err(args.output.unsupported("guard", "json, geojson or wkt")),
         other => {
             let format = other.geometry_format().unwrap_or(compgeom::io::Format::Wkt);
             write_shape(&Shape::MultiPoint(g.guards.clone()), format)?

@@ -126,7 +126,7 @@ pub fn run(args: &HalfplanesArgs) -> Result<(), CliError> {
     if args.output.verify {
         verify_region(&hs, &region)?;
     }
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => serde_json::to_string(&RegionJson {
             kind: region.kind.name(),
             vertices: region.vertices.iter().map(|p| [p.x, p.y]).collect(),

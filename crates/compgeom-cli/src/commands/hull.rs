@@ -123,7 +123,7 @@ pub fn run(args: &HullArgs) -> Result<(), CliError> {
     }
 
     // Everything is computed and checked before anything is written.
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => {
             let json = HullJson {
                 hull: hull.iter().map(|p| [p.x, p.y]).collect(),

@@ -153,7 +153,7 @@ pub fn run(args: &IntersectArgs) -> Result<(), CliError> {
             let _spin = Spinner::start("counting", segments.len() >= LARGE_INPUT);
             count_intersections_with(&segments, args.algorithm.algorithm())?
         };
-        let text = match args.output.format.geometry_format() {
+        let text = match args.output.format().geometry_format() {
             None => to_json(&CountJson {
                 intersections: count.points,
                 overlaps: count.overlaps,
@@ -175,7 +175,7 @@ pub fn run(args: &IntersectArgs) -> Result<(), CliError> {
     let verified = args.output.verify.then_some(true);
 
     // Everything is computed and checked before anything is written.
-    let text = match (args.count_only, args.output.format.geometry_format()) {
+    let text = match (args.count_only, args.output.format().geometry_format()) {
         (true, None) => to_json(&CountJson {
             intersections: found.points.len(),
             overlaps: found.overlaps.len(),

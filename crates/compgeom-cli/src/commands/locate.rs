@@ -5,7 +5,7 @@
 use crate::cli::{InputArgs, InputFormat, OutputArgs, OutputFormat};
 use crate::error::CliError;
 use crate::output;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use compgeom::dcel::{Dcel, FaceId, HalfEdgeId};
 use compgeom::io::{read_polygon_features, read_segments};
 use compgeom::kernel::{orient2d, orient_exact, ExactPoint, Orientation};
@@ -266,16 +266,8 @@ fn read_map(args: &LocateArgs) -> Result<Map, CliError> {
 
 /// Run `compgeom locate`.
 pub fn run(args: &LocateArgs) -> Result<(), CliError> {
-    if args.output.format != OutputFormat::Json {
-        let name = args
-            .output
-            .format
-            .to_possible_value()
-            .map(|v| v.get_name().to_string())
-            .unwrap_or_default();
-        return Err(CliError::bad_input(format!(
-            "locate writes json only, not {name}"
-        )));
+    if args.output.format() != OutputFormat::Json {
+        return Err(args.output.unsupported("locate", "json only"));
     }
     let map = read_map(args)?;
     let queries = InputArgs {

@@ -176,7 +176,7 @@ pub fn run(args: &LpArgs) -> Result<(), CliError> {
     let rows = read_constraints(&text, &name, Some(c.len() + 1))?;
     let mut result = solve(&rows, &c, args.seed, args.output.verify)?;
     result.verified = args.output.verify.then_some(true);
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => serde_json::to_string(&result)
             .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?,
         Some(format) => {

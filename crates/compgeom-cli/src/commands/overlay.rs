@@ -104,7 +104,7 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
         }
         faces.push(json!({"polygon": polygon, "a": fa, "b": fb}));
     }
-    let value = match args.output.format {
+    let value = match args.output.format() {
         OutputFormat::Json => {
             let mut v =
                 json!({"faces": faces, "vertices": d.vertex_count(), "edges": d.edge_count()});
@@ -116,11 +116,7 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
             v
         }
         OutputFormat::Geojson => json!({"type": "FeatureCollection", "features": features}),
-        other => {
-            return Err(CliError::bad_input(format!(
-                "overlay writes json or geojson, not {other:?}"
-            )))
-        }
+        _ => return Err(args.output.unsupported("overlay", "json or geojson")),
     };
     if let Some(svg) = &args.output.svg {
         let mut pic = Picture::new(800, 640).with_title(format!(

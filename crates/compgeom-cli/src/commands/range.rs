@@ -200,7 +200,7 @@ pub fn run(args: &RangeArgs) -> Result<(), CliError> {
         }
     };
     let queries = rects.len().max(probes.len());
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => {
             let json = RangeJson {
                 results: results.clone(),

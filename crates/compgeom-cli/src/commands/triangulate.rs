@@ -147,7 +147,7 @@ pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
     } else {
         None
     };
-    let text = match args.output.format {
+    let text = match args.output.format() {
         OutputFormat::Json => {
             let mut v = json!({
                 "vertices": t.vertices.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>(),
@@ -164,9 +164,9 @@ pub fn run(args: &TriangulateArgs) -> Result<(), CliError> {
                 .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?
         }
         OutputFormat::Csv => {
-            return Err(CliError::bad_input(
-                "triangulate writes json, geojson or wkt, not csv",
-            ))
+            return Err(args
+                .output
+                .unsupported("triangulate", "json, geojson or wkt"))
         }
         other => {
             let tris = MultiPolygon(
@@ -306,7 +306,7 @@ fn run_subdivision(args: &TriangulateArgs) -> Result<(), CliError> {
             (t, None)
         }
     };
-    let text = match args.output.format {
+    let text = match args.output.format() {
         OutputFormat::Json => {
             let mut v = json!({
                 "vertices": t.vertices.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>(),
@@ -324,9 +324,9 @@ fn run_subdivision(args: &TriangulateArgs) -> Result<(), CliError> {
                 .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?
         }
         OutputFormat::Csv => {
-            return Err(CliError::bad_input(
-                "triangulate writes json, geojson or wkt, not csv",
-            ))
+            return Err(args
+                .output
+                .unsupported("triangulate", "json, geojson or wkt"))
         }
         other => {
             let tris = MultiPolygon(

@@ -388,7 +388,7 @@ pub fn run(args: &VoronoiArgs) -> Result<(), CliError> {
         }
         (d, cells, clip, args.algorithm.name())
     };
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => serde_json::to_string(&to_json(&d, &cells, &clip, algorithm, verify))
             .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?,
         Some(Format::GeoJson) => to_geojson(&d, &cells).to_string(),

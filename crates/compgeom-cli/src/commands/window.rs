@@ -103,7 +103,7 @@ pub fn run(args: &WindowArgs) -> Result<(), CliError> {
             compgeom::windowing::verify_window(&segments, w, r)?;
         }
     }
-    let text = match args.output.format.geometry_format() {
+    let text = match args.output.format().geometry_format() {
         None => {
             let json = WindowJson {
                 results: results.clone(),
