@@ -114,6 +114,18 @@ fn output_format_from_the_file_extension() {
         ))
         .stderr(predicates::str::contains("faces.csv"));
     assert!(!csv.exists());
+    // `validate` writes its report as JSON only, whatever the name asks.
+    for format in ["wkt", "geojson"] {
+        compgeom()
+            .arg("validate")
+            .arg(&a)
+            .args(["--format", format])
+            .assert()
+            .code(2)
+            .stderr(predicates::str::contains(format!(
+                "validate writes json only, not {format}"
+            )));
+    }
 }
 
 /// One input's polygons are united (positive fill rule unless another is asked for:

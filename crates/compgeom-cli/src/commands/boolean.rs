@@ -1,7 +1,7 @@
 //! `compgeom boolean` (book §2.4: intersection, union, difference, xor of polygon sets via
 //! `compgeom::overlay::boolean_with`) and `compgeom make-valid` (`compgeom::overlay::make_valid`).
 
-use crate::cli::{InputArgs, OutputArgs};
+use crate::cli::{InputArgs, OutputArgs, OutputFormat};
 use crate::error::CliError;
 use crate::output;
 use clap::{Args, ValueEnum};
@@ -262,7 +262,7 @@ pub fn run_make_valid(args: &MakeValidArgs) -> Result<(), CliError> {
 
 /// `--help` text describing what `validate` checks and prints.
 pub const VALIDATE_HELP: &str = "\
-JSON output is one object:
+JSON output (--format json, the only format) is one object:
   valid     true when there is no problem
   problems  [{\"message\", \"at\": [x, y] | null, \"polygon\", \"feature\"}], in the order
             checked; polygons and rings are numbered from 0 in reading order, holes
@@ -302,6 +302,9 @@ pub struct ValidateArgs {
 /// Run `compgeom validate`: JSON `{"valid": bool, "problems": [{"message", "at": [x, y] |
 /// null, "polygon", "feature"}]}`; exit 0 either way (the answer is the output).
 pub fn run_validate(args: &ValidateArgs) -> Result<(), CliError> {
+    if args.output.format() != OutputFormat::Json {
+        return Err(args.output.unsupported("validate", "json only"));
+    }
     // (As written: a ring the other commands reject as bad input is a problem to report.)
     let src = args.input.read()?;
     let read = io::read_polygons_as_written(&src.text, src.format, &src.name)?;

@@ -1,7 +1,7 @@
 //! `compgeom interpolate`: heights of the piecewise-linear terrain over the Delaunay
 //! triangulation of (x, y, z) samples (book §9.1), via `compgeom::delaunay::Terrain`.
 
-use crate::cli::{InputArgs, OutputArgs};
+use crate::cli::{InputArgs, OutputArgs, OutputFormat};
 use crate::error::CliError;
 use crate::output;
 use clap::Args;
@@ -13,7 +13,7 @@ use std::path::PathBuf;
 
 /// `--help` text describing the JSON output.
 pub const JSON_HELP: &str = "\
-JSON output is one object:
+JSON output (--format json, the only format) is one object:
   heights   [z or null, ...]  one per query point, in input order: the height of the
                               piecewise-linear terrain over the Delaunay triangulation of the
                               samples' (x, y); null outside the samples' convex hull
@@ -55,6 +55,9 @@ struct HeightsJson {
 
 /// Run `compgeom interpolate`.
 pub fn run(args: &InterpolateArgs) -> Result<(), CliError> {
+    if args.output.format() != OutputFormat::Json {
+        return Err(args.output.unsupported("interpolate", "json only"));
+    }
     let src = args.input.read()?;
     let samples = compgeom::io::read_points3(&src.text, src.format, &src.name)?;
     let queries = InputArgs {
