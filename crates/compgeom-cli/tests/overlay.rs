@@ -184,6 +184,55 @@ fn overlay_labels_faces() {
     assert_eq!(both, 1);
 }
 
+/// The picture colours faces by label: each pair of labels in a colour of its own, named
+/// in the legend, where there are few pairs (two squares: three); by which layers
+/// contain them, with counts, where there are more (two grids of 30 squares: 91 pairs).
+#[test]
+fn overlay_picture_colours_faces_by_label() {
+    let (d, a, b) = files();
+    let svg = d.path().join("o.svg");
+    let draw = |a: &std::path::Path, b: &std::path::Path| {
+        compgeom()
+            .arg("overlay")
+            .arg(a)
+            .arg(b)
+            .arg("--svg")
+            .arg(&svg)
+            .assert()
+            .success();
+        fs::read_to_string(&svg).unwrap()
+    };
+    let picture = draw(&a, &b);
+    for pair in ["A 0, B none", "A none, B 0", "A 0, B 0"] {
+        assert!(picture.contains(pair), "{pair}");
+    }
+    assert!(!picture.contains("Some("));
+    let grid = |name: &str, offset: f64| {
+        let path = d.path().join(name);
+        let mut text = String::new();
+        for k in 0..30 {
+            let (x, y) = (
+                f64::from(k % 6) * 2.0 + offset,
+                f64::from(k / 6) * 2.0 + offset,
+            );
+            let (u, v) = (x + 1.5, y + 1.5);
+            text += &format!("POLYGON(({x} {y},{u} {y},{u} {v},{x} {v},{x} {y}))\n");
+        }
+        fs::write(&path, text).unwrap();
+        path
+    };
+    let picture = draw(&grid("ga.wkt", 0.0), &grid("gb.wkt", 0.5));
+    for class in [
+        "in A and B (30 faces)",
+        "in A only (30 faces)",
+        "in B only (30 faces)",
+        "in neither (40 faces)",
+    ] {
+        assert!(picture.contains(class), "{class}");
+    }
+    assert!(!picture.contains("A 0, B"));
+}
+
 /// Faces are labelled by input features (a MultiPolygon feature is one, a feature
 /// without geometry still counts), and the GeoJSON output carries both features'
 /// properties.

@@ -11,7 +11,7 @@ use compgeom::dcel::FaceId;
 use compgeom::io::{read_polygon_features, to_geojson_value, Format, Shape};
 use compgeom::overlay::{overlay_polygons, rounding_suspects};
 use compgeom::render::{Layer, Picture, Style};
-use compgeom::MultiPolygon;
+use compgeom::{MultiPolygon, Polygon};
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
@@ -40,6 +40,9 @@ of one layer overlap, `a`/`b` is the lowest index containing the face.
 properties `a` and `b`, and `a_properties` and `b_properties`: the properties of those
 GeoJSON input features (null where there are none), so attributes of both layers reach
 each face.
+--svg FILE draws the bounded faces coloured by label: each pair (A's feature, B's
+feature) in a colour of its own, named in the legend, up to ten pairs; with more, by
+which layers contain the face (both, A only, B only, neither), with the counts.
 
 Examples:
   compgeom overlay vegetation.geojson rivers.geojson --svg overlay.svg
@@ -119,33 +122,86 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
         _ => return Err(args.output.unsupported("overlay", "json or geojson")),
     };
     if let Some(svg) = &args.output.svg {
-        let mut pic = Picture::new(800, 640).with_title(format!(
+        let title = format!(
             "overlay: {} faces, {} vertices, {} edges",
             d.face_count(),
             d.vertex_count(),
             d.edge_count()
-        ));
-        let colour = |la: bool, lb: bool| match (la, lb) {
-            (true, true) => "#2ca02c",
-            (true, false) => "#1f77b4",
-            (false, true) => "#ff7f0e",
-            (false, false) => "#bbbbbb",
-        };
-        for f in d.face_ids().skip(1) {
+        );
+        let labelled = d.face_ids().skip(1).filter_map(|f| {
             let (la, lb) = &d.face(f).data;
-            if let Some(p) = d.face_polygon(f) {
-                let (fa, fb) = (a.feature(la.first()), b.feature(lb.first()));
-                let name = format!("face {} (a {fa:?}, b {fb:?})", f.0);
-                let style =
-                    Style::area(colour(!la.is_empty(), !lb.is_empty())).with_fill_opacity(0.4);
-                pic.add(Layer::new(name, style).polygon(&p));
-            }
-        }
+            let p = d.face_polygon(f)?;
+            Some((p, a.feature(la.first()), b.feature(lb.first())))
+        });
+        let pic = overlay_picture(labelled.collect(), ("A", "B"), title);
         output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
     }
     let text = serde_json::to_string(&value)
         .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?;
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
+}
+
+/// Colours of the label pairs of [`overlay_picture`], when there are few.
+const PAIR_COLOURS: [&str; 10] = [
+    "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
+    "#bcbd22", "#17becf",
+];
+
+/// The bounded faces of an overlay, each with the feature (or polygon) of map A and of
+/// map B containing it, coloured by label: with at most ten different pairs, each pair in
+/// a colour of its own, named in the legend ("A 0, B none"); with more, by which maps
+/// contain the face (in both, in A only, in B only, in neither: a hole of both), with
+/// the number of faces of each. `names` name the maps.
+pub fn overlay_picture(
+    faces: Vec<(Polygon, Option<usize>, Option<usize>)>,
+    names: (&str, &str),
+    title: String,
+) -> Picture {
+    let mut pic = Picture::new(800, 640).with_title(title);
+    let mut pairs: Vec<(Option<usize>, Option<usize>)> =
+        faces.iter().map(|&(_, a, b)| (a, b)).collect();
+    pairs.sort_unstable();
+    pairs.dedup();
+    let label = |name: &str, f: Option<usize>| match f {
+        Some(k) => format!("{name} {k}"),
+        None => format!("{name} none"),
+    };
+    let style = |colour: &str| Style::area(colour).with_fill_opacity(0.45);
+    if pairs.len() <= PAIR_COLOURS.len() {
+        for (&(a, b), colour) in pairs.iter().zip(PAIR_COLOURS) {
+            let these: Vec<Polygon> = faces
+                .iter()
+                .filter(|f| (f.1, f.2) == (a, b))
+                .map(|f| f.0.clone())
+                .collect();
+            let name = format!("{}, {}", label(names.0, a), label(names.1, b));
+            pic.add(Layer::new(name, style(colour)).polygons(&these));
+        }
+        return pic;
+    }
+    let classes = [
+        (
+            true,
+            true,
+            "#2ca02c",
+            format!("in {} and {}", names.0, names.1),
+        ),
+        (true, false, "#1f77b4", format!("in {} only", names.0)),
+        (false, true, "#ff7f0e", format!("in {} only", names.1)),
+        (false, false, "#bbbbbb", "in neither".to_string()),
+    ];
+    for (in_a, in_b, colour, what) in classes {
+        let these: Vec<Polygon> = faces
+            .iter()
+            .filter(|f| (f.1.is_some(), f.2.is_some()) == (in_a, in_b))
+            .map(|f| f.0.clone())
+            .collect();
+        if !these.is_empty() {
+            let name = format!("{what} ({} faces)", these.len());
+            pic.add(Layer::new(name, style(colour)).polygons(&these));
+        }
+    }
+    pic
 }
 
 /// A polygon layer: its polygons, each one's input feature, and the features' GeoJSON

@@ -4,9 +4,10 @@
 
 use super::{format_duration, timed, Demo};
 use crate::commands::boolean::boolean_picture;
+use crate::commands::overlay::overlay_picture;
 use crate::error::CliError;
 use compgeom::overlay::{boolean, overlay_polygons, validity_problems, BooleanOp};
-use compgeom::render::{Layer, Picture, Section, Style};
+use compgeom::render::Section;
 use compgeom::{MultiPolygon, Point2, Polygon};
 
 fn poly(pts: &[(f64, f64)]) -> Polygon {
@@ -56,37 +57,23 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
         "2.2–2.4 Map overlay and boolean operations",
         "A vegetation map (three polygons, the forest with a clearing) overlaid with rivers \
          as regions: every face of the exact overlay is labelled with the polygon of each \
-         map containing it (green: both, blue: vegetation only, orange: river only). Then the \
+         map containing it (or none), each pair of labels in a colour of its own. Then the \
          boolean operations of the two maps; every result is checked valid.",
     );
     let (o, time) = timed(|| overlay_polygons(&a, &b));
     let o = o?;
     o.validate()?;
-    let mut pic = Picture::new(800, 640).with_title(format!(
+    let title = format!(
         "overlay: {} faces, {} vertices, {} edges",
         o.face_count(),
         o.vertex_count(),
         o.edge_count()
-    ));
-    for f in o.face_ids().skip(1) {
+    );
+    let faces = o.face_ids().skip(1).filter_map(|f| {
         let (la, lb) = &o.face(f).data;
-        let colour = match (la.is_empty(), lb.is_empty()) {
-            (false, false) => "#2ca02c",
-            (false, true) => "#1f77b4",
-            (true, false) => "#ff7f0e",
-            (true, true) => "#bbbbbb",
-        };
-        if let Some(p) = o.face_polygon(f) {
-            let label = |l: Option<&usize>| l.map_or("none".to_string(), |i| i.to_string());
-            let name = format!(
-                "face {}: vegetation {}, river {}",
-                f.0,
-                label(la.first()),
-                label(lb.first())
-            );
-            pic.add(Layer::new(name, Style::area(colour).with_fill_opacity(0.45)).polygon(&p));
-        }
-    }
+        Some((o.face_polygon(f)?, la.first().copied(), lb.first().copied()))
+    });
+    let pic = overlay_picture(faces.collect(), ("vegetation", "river"), title);
     // Times go in the facts, not the pictures, so the pictures are reproducible.
     section.push(
         demo.figure("overlay-maps.svg", "Overlay of vegetation and rivers", &pic)?
