@@ -28,7 +28,20 @@ impl<V, E, F> Dcel<V, E, F> {
     /// A bounded face as a polygon: its outer boundary (counter-clockwise) and one hole
     /// per inner component (clockwise), with rounded coordinates, every vertex kept.
     /// `None` for the unbounded face. A boundary that touches itself at a vertex is one
-    /// ring here; [`crate::overlay`]'s output splits such rings.
+    /// ring here; [`crate::overlay`]'s output splits such rings. O(size of the face).
+    ///
+    /// ```
+    /// use compgeom::dcel::{Dcel, FaceId};
+    /// use compgeom::{MultiPolygon, Point2, Polygon};
+    /// let p = |x, y| Point2::new(x, y);
+    /// let frame = Polygon::new(vec![p(0., 0.), p(4., 0.), p(4., 4.), p(0., 4.)],
+    ///     vec![vec![p(1., 1.), p(1., 3.), p(3., 3.), p(3., 1.)]]);
+    /// let d = Dcel::from_polygons(&MultiPolygon(vec![frame])).unwrap();
+    /// assert!(d.face_polygon(FaceId::UNBOUNDED).is_none());
+    /// let inside = d.face_ids().find(|&f| d.face(f).data == vec![0]).unwrap();
+    /// let polygon = d.face_polygon(inside).unwrap();
+    /// assert_eq!((polygon.exterior.len(), polygon.holes.len()), (4, 1));
+    /// ```
     pub fn face_polygon(&self, f: FaceId) -> Option<Polygon> {
         let face = &self.faces[f.0];
         let outer = face.outer?;

@@ -19,7 +19,22 @@ use std::cmp::Ordering;
 /// The region made of the faces `inside` says yes to, as polygons: shells
 /// counter-clockwise, holes clockwise, rings open (first point not repeated), rounded
 /// coordinates; collinear vertices dropped unless `keep_collinear`. `carrier` gives each
-/// half-edge's exact direction.
+/// half-edge's exact direction. O(n) for n half-edges (walks in place, no sorting). The
+/// coordinates are rounded without the check the boolean
+/// operations make (see [`crate::overlay`]).
+///
+/// ```
+/// use compgeom::overlay::{boolean_dcel, faces_to_polygons, FillRule};
+/// use compgeom::{MultiPolygon, Point2, Polygon};
+/// let sq = |x: f64, y: f64| Polygon::new(vec![Point2::new(x, y), Point2::new(x + 2.0, y),
+///     Point2::new(x + 2.0, y + 2.0), Point2::new(x, y + 2.0)], vec![]);
+/// let a = MultiPolygon(vec![sq(0.0, 0.0), sq(1.0, 1.0)]);
+/// let d = boolean_dcel(&a, &MultiPolygon::default(), FillRule::NonZero).unwrap();
+/// // The faces covered twice: the overlap of the two squares.
+/// let twice = faces_to_polygons(&d, |f| d.face(f).data.0 == 2, |e| e.carrier, false);
+/// assert_eq!(twice.0.len(), 1);
+/// assert_eq!(twice.0[0].exterior.len(), 4);
+/// ```
 pub fn faces_to_polygons<V, E, F>(
     d: &Dcel<V, E, F>,
     inside: impl Fn(FaceId) -> bool,
