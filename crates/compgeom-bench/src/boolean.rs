@@ -757,6 +757,35 @@
 //! x (binary search, then a walk over the edge's x-range) instead of each point against
 //! the moved edges' boxes: intersection 10.69 M → 10.85 M, xor 16.42 M → 17.26 M a round
 //! (the sort costs more than the queries it saves on results of ~100 points).
+//!
+//! Session 47 (no change to the boolean path; these are what was measured and tried).
+//! Which JTS pairs lose: per pair (`BOOLEAN_ONE=pairs`, intersection, µs, ours /
+//! i_overlay / geo; sums 689.5 / 646.0 / 675.1) the isochrone pairs where one polygon
+//! lies inside the other and they share long stretches of boundary (#9, #12, #16, #19,
+//! #23, #30, #31: 1.5–2.4× geo) lose, those that overlap in part (#0, #2, #4, #20, #27,
+//! #29: 0.8–0.95×) win. The peers' cost follows the crossings, ours the segments: per
+//! call (callgrind) isochrone#9 (89 segments, few crossings) ours 156 k, i_overlay 75 k,
+//! geo 79 k; isochrone#27 (105 segments, many crossings) ours 182 k, i_overlay 195 k,
+//! geo 200 k. Of ours on #9: noding 89 k (candidate search 37 k for 373 box-overlapping
+//! pairs, crossing tests 14 k for 111 of them, assembly 30 k), the rounding check 13 k,
+//! the tracing about 40 k in `traced` itself: no piece is the gap, each is ~2× what the
+//! peers spend per segment. The near-pair search of the check, per round of the JTS
+//! intersection (52 calls, 1 858 points, 256 moved, 473 moved edges): setup 0.19 M, the
+//! points against the moved edges 0.38 M (~200 instructions a point), the unmoved edges
+//! against the moved points 0.22 M. On the xor, of 1 274 near pairs a round 140 fail
+//! before the nudge and 36 after it (in 18 results, which are united again); of the 36,
+//! most are a vertex of a sliver ring of three or four points turned over by rounding.
+//! Tried and dropped: (1) deciding a failing pair with one moved point by its actual
+//! path (the moving vertex's segment against the edge, or the triangle a moving end
+//! sweeps against the vertex, exactly) instead of the side test: not one of the 140
+//! failing pairs passed (they are real crossings of the rounded rings), and the exact
+//! tests cost +3% (16.52 M → 17.04 M a round); (2) the near-pair search transposed for
+//! small results (each moved item's box against all points' or edges' boxes, 64 at a
+//! time, pairs sorted after): intersection 10.71 M → 10.89 M, xor 16.52 M → 17.39 M (the
+//! per-point union-box test of the present search skips a third of the points, the
+//! transposed one tests them all); (3) dropping a turned-over triangle (exact area of
+//! the wrong sign) instead of uniting its polygon again: would spare 3 of the 18
+//! re-unions a round, not taken.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
