@@ -7,7 +7,7 @@ use crate::commands::boolean::other_input;
 use crate::error::CliError;
 use crate::output;
 use clap::Args;
-use compgeom::dcel::FaceId;
+use compgeom::dcel::{Dcel, FaceId, PolygonLabel};
 use compgeom::io::{read_polygon_features, to_geojson_value, Format, Shape};
 use compgeom::overlay::{overlay_polygons, rounding_suspects};
 use compgeom::render::{Layer, Picture, Style};
@@ -122,18 +122,9 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
         _ => return Err(args.output.unsupported("overlay", "json or geojson")),
     };
     if let Some(svg) = &args.output.svg {
-        let title = format!(
-            "overlay: {} faces, {} vertices, {} edges",
-            d.face_count(),
-            d.vertex_count(),
-            d.edge_count()
-        );
-        let labelled = d.face_ids().skip(1).filter_map(|f| {
-            let (la, lb) = &d.face(f).data;
-            let p = d.face_polygon(f)?;
-            Some((p, a.feature(la.first()), b.feature(lb.first())))
-        });
-        let pic = overlay_picture(labelled.collect(), ("A", "B"), title);
+        let label =
+            |la: &PolygonLabel, lb: &PolygonLabel| (a.feature(la.first()), b.feature(lb.first()));
+        let pic = overlay_picture(&d, label, ("A", "B"));
         output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
     }
     let text = serde_json::to_string(&value)
@@ -141,65 +132,90 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
 }
 
+/// A face's labels in [`overlay_picture`]: the feature (or polygon) of A and of B
+/// containing it.
+type LabelPair = (Option<usize>, Option<usize>);
+
 /// Colours of the label pairs of [`overlay_picture`], when there are few.
 const PAIR_COLOURS: [&str; 10] = [
     "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
     "#bcbd22", "#17becf",
 ];
 
-/// The bounded faces of an overlay, each with the feature (or polygon) of map A and of
-/// map B containing it, coloured by label: with at most ten different pairs, each pair in
-/// a colour of its own, named in the legend ("A 0, B none"); with more, by which maps
-/// contain the face (in both, in A only, in B only, in neither: a hole of both), with
-/// the number of faces of each. `names` name the maps.
-pub fn overlay_picture(
-    faces: Vec<(Polygon, Option<usize>, Option<usize>)>,
+/// The bounded faces of an overlay coloured by label, `label` giving each face's pair
+/// (A's feature or polygon containing it, B's): with at most ten different pairs, each
+/// pair in a colour of its own, named in the legend ("A 0, B none"); with more, by which
+/// maps contain the face (in both, in A only, in B only, in neither: a hole of both),
+/// with the number of faces of each. `names` name the maps.
+pub fn overlay_picture<E>(
+    d: &Dcel<(), E, (PolygonLabel, PolygonLabel)>,
+    label: impl Fn(&PolygonLabel, &PolygonLabel) -> LabelPair,
     names: (&str, &str),
-    title: String,
 ) -> Picture {
-    let mut pic = Picture::new(800, 640).with_title(title);
-    let mut pairs: Vec<(Option<usize>, Option<usize>)> =
-        faces.iter().map(|&(_, a, b)| (a, b)).collect();
+    let mut pic = Picture::new(800, 640).with_title(format!(
+        "overlay: {} faces, {} vertices, {} edges",
+        d.face_count(),
+        d.vertex_count(),
+        d.edge_count()
+    ));
+    let faces: Vec<(Polygon, LabelPair)> = d
+        .face_ids()
+        .filter_map(|f| {
+            let (la, lb) = &d.face(f).data;
+            Some((d.face_polygon(f)?, label(la, lb)))
+        })
+        .collect();
+    let mut pairs: Vec<_> = faces.iter().map(|f| f.1).collect();
     pairs.sort_unstable();
     pairs.dedup();
-    let label = |name: &str, f: Option<usize>| match f {
+    let few = pairs.len() <= PAIR_COLOURS.len();
+    let named = |name: &str, f: Option<usize>| match f {
         Some(k) => format!("{name} {k}"),
         None => format!("{name} none"),
     };
-    let style = |colour: &str| Style::area(colour).with_fill_opacity(0.45);
-    if pairs.len() <= PAIR_COLOURS.len() {
-        for (&(a, b), colour) in pairs.iter().zip(PAIR_COLOURS) {
-            let these: Vec<Polygon> = faces
-                .iter()
-                .filter(|f| (f.1, f.2) == (a, b))
-                .map(|f| f.0.clone())
-                .collect();
-            let name = format!("{}, {}", label(names.0, a), label(names.1, b));
-            pic.add(Layer::new(name, style(colour)).polygons(&these));
-        }
-        return pic;
-    }
-    let classes = [
-        (
-            true,
-            true,
-            "#2ca02c",
-            format!("in {} and {}", names.0, names.1),
-        ),
-        (true, false, "#1f77b4", format!("in {} only", names.0)),
-        (false, true, "#ff7f0e", format!("in {} only", names.1)),
-        (false, false, "#bbbbbb", "in neither".to_string()),
-    ];
-    for (in_a, in_b, colour, what) in classes {
-        let these: Vec<Polygon> = faces
+    // The groups (pairs, or classes by which maps contain the face), their colours and
+    // legend names.
+    let groups: Vec<(&str, String)> = if few {
+        pairs
             .iter()
-            .filter(|f| (f.1.is_some(), f.2.is_some()) == (in_a, in_b))
-            .map(|f| f.0.clone())
-            .collect();
-        if !these.is_empty() {
-            let name = format!("{what} ({} faces)", these.len());
-            pic.add(Layer::new(name, style(colour)).polygons(&these));
+            .zip(PAIR_COLOURS)
+            .map(|(&(a, b), colour)| {
+                (
+                    colour,
+                    format!("{}, {}", named(names.0, a), named(names.1, b)),
+                )
+            })
+            .collect()
+    } else {
+        vec![
+            ("#2ca02c", format!("in {} and {}", names.0, names.1)),
+            ("#1f77b4", format!("in {} only", names.0)),
+            ("#ff7f0e", format!("in {} only", names.1)),
+            ("#bbbbbb", "in neither".to_string()),
+        ]
+    };
+    let group_of = |pair: LabelPair| match (few, pair) {
+        (true, _) => pairs.partition_point(|&q| q < pair),
+        (false, (Some(_), Some(_))) => 0,
+        (false, (Some(_), None)) => 1,
+        (false, (None, Some(_))) => 2,
+        (false, (None, None)) => 3,
+    };
+    let mut members: Vec<Vec<Polygon>> = vec![Vec::new(); groups.len()];
+    for (p, pair) in faces {
+        members[group_of(pair)].push(p);
+    }
+    for ((colour, name), these) in groups.into_iter().zip(members) {
+        if these.is_empty() {
+            continue;
         }
+        let name = if few {
+            name
+        } else {
+            format!("{name} ({} faces)", these.len())
+        };
+        let style = Style::area(colour).with_fill_opacity(0.45);
+        pic.add(Layer::new(name, style).polygons(&these));
     }
     pic
 }

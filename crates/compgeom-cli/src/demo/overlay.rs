@@ -6,6 +6,7 @@ use super::{format_duration, timed, Demo};
 use crate::commands::boolean::boolean_picture;
 use crate::commands::overlay::overlay_picture;
 use crate::error::CliError;
+use compgeom::dcel::PolygonLabel;
 use compgeom::overlay::{boolean, overlay_polygons, validity_problems, BooleanOp};
 use compgeom::render::Section;
 use compgeom::{MultiPolygon, Point2, Polygon};
@@ -63,17 +64,8 @@ pub fn section(demo: &Demo) -> Result<Section, CliError> {
     let (o, time) = timed(|| overlay_polygons(&a, &b));
     let o = o?;
     o.validate()?;
-    let title = format!(
-        "overlay: {} faces, {} vertices, {} edges",
-        o.face_count(),
-        o.vertex_count(),
-        o.edge_count()
-    );
-    let faces = o.face_ids().skip(1).filter_map(|f| {
-        let (la, lb) = &o.face(f).data;
-        Some((o.face_polygon(f)?, la.first().copied(), lb.first().copied()))
-    });
-    let pic = overlay_picture(faces.collect(), ("vegetation", "river"), title);
+    let label = |la: &PolygonLabel, lb: &PolygonLabel| (la.first().copied(), lb.first().copied());
+    let pic = overlay_picture(&o, label, ("vegetation", "river"));
     // Times go in the facts, not the pictures, so the pictures are reproducible.
     section.push(
         demo.figure("overlay-maps.svg", "Overlay of vegetation and rivers", &pic)?
