@@ -798,8 +798,10 @@
 //! per thread): 480 and 2 550 page faults, 250 → 200 ms (geo 210, i_overlay 184) and
 //! 84.5 → 50.4 ms (i_overlay 100, geo 103). The table's alternating single calls did not
 //! move (the peers' calls in between leave the heap grown), hence the "in a row" column;
-//! in the full table the dissolve in a row stays 1.19 / 1.08 (0.59 ms: in that process,
-//! after the other rows, our calls run slower than alone, not explained yet). Full table
+//! in the full table the dissolve in a row stays 1.19 / 1.08 (0.59 ms; alone 0.50: in
+//! that process the earlier rows have raised glibc's trim threshold already, and what is
+//! left is session 29's second cause, the branch predictor trained on other code). This
+//! is session 29's first cause (the heap), now gone for calls alone. Full table
 //! after the change (machine shared with a fuzzer on one core), ratio to i_overlay / geo,
 //! alternating (in a row): stars 1e3 0.70–0.80 / 0.76–0.84 (0.64–0.90 / 0.66–0.89), 1e4
 //! 0.49–0.58 / 0.48–0.57 (0.49–0.57 / 0.50–0.54), 1e5 0.52–0.60 / 0.46–0.60 (0.51–0.53 /
