@@ -800,7 +800,8 @@
 //! move (the peers' calls in between leave the heap grown), hence the "in a row" column;
 //! in the full table the dissolve in a row stays 1.19 / 1.08 (0.59 ms; alone 0.50: in
 //! that process the earlier rows have raised glibc's trim threshold already, and what is
-//! left is session 29's second cause, the branch predictor trained on other code). This
+//! left is presumably session 29's second cause, the branch predictor trained on other
+//! code; not measured again). This
 //! is session 29's first cause (the heap), now gone for calls alone. Full table
 //! after the change (machine shared with a fuzzer on one core), ratio to i_overlay / geo,
 //! alternating (in a row): stars 1e3 0.70–0.80 / 0.76–0.84 (0.64–0.90 / 0.66–0.89), 1e4
