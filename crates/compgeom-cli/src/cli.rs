@@ -70,6 +70,7 @@ pub enum Command {
     #[command(after_long_help = crate::commands::boolean::VALIDATE_HELP)]
     Validate(ValidateArgs),
     /// Repair polygons into valid ones, reading rings by a fill rule (book 2.4).
+    #[command(after_long_help = crate::commands::boolean::MAKE_VALID_HELP)]
     MakeValid(MakeValidArgs),
     /// Triangulation of polygons with holes by monotone pieces (book chapter 3).
     #[command(after_long_help = crate::commands::triangulate::JSON_HELP)]

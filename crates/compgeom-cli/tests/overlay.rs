@@ -329,6 +329,41 @@ fn make_valid_splits_a_bow_tie_and_bad_input_fails() {
     compgeom().arg("make-valid").arg(&bad).assert().code(2);
 }
 
+/// `--per-polygon`: a polygon drawn twice stays (read together by even-odd, it cancels).
+#[test]
+fn make_valid_per_polygon_keeps_a_polygon_drawn_twice() {
+    let d = TempDir::new().unwrap();
+    let p = d.path().join("twice.wkt");
+    fs::write(
+        &p,
+        "MULTIPOLYGON(((0 0,2 0,2 2,0 2,0 0)),((0 0,2 0,2 2,0 2,0 0)),((1 1,3 1,3 3,1 3,1 1)))\n",
+    )
+    .unwrap();
+    let together = json(&["make-valid".as_ref(), p.as_os_str()]);
+    assert_eq!(together["per_polygon"], false);
+    // Even-odd over all rings: the squares drawn twice cancel, the third stays whole
+    // (where it overlaps them it is covered three times).
+    assert_eq!(together["polygons"], 1);
+    let ring = together["result"]["coordinates"][0][0]
+        .as_array()
+        .unwrap()
+        .len();
+    assert_eq!(ring, 5, "{together}");
+    let each = json(&[
+        "make-valid".as_ref(),
+        p.as_os_str(),
+        "--per-polygon".as_ref(),
+    ]);
+    assert_eq!(each["per_polygon"], true);
+    assert_eq!(each["polygons"], 1);
+    // The union of the squares: an eight-corner outline (closed: nine positions).
+    let ring = each["result"]["coordinates"][0][0]
+        .as_array()
+        .unwrap()
+        .len();
+    assert_eq!(ring, 9, "{each}");
+}
+
 #[test]
 fn validate_reports_a_crossing() {
     let d = TempDir::new().unwrap();

@@ -20,7 +20,7 @@
 //! | 2.1 | line segment intersection (plane sweep) | [`intersect::find_intersections`], [`intersect::sweep_intersections`], [`intersect::count_intersections`], [`intersect::any_intersection`], [`intersect::is_simple`], [`intersect::red_blue_intersections`], [`intersect::verify_intersections`] |
 //! | 2.2 | doubly-connected edge list | [`dcel::Dcel`], [`dcel::Dcel::from_segments`], [`dcel::Dcel::from_polygons`], [`dcel::Dcel::validate`] |
 //! | 2.3 | map overlay | [`overlay::overlay`], [`overlay::overlay_polygons`] |
-//! | 2.4 | boolean operations | [`overlay::boolean`], [`overlay::boolean_with`], [`overlay::union_all`], [`overlay::make_valid`] |
+//! | 2.4 | boolean operations | [`overlay::boolean`], [`overlay::boolean_with`], [`overlay::union_all`], [`overlay::make_valid`], [`overlay::make_valid_per_polygon`] |
 //! | 3 | polygon triangulation, monotone partition, art gallery, subdivision in its bounding box | [`triangulate::triangulate`], [`triangulate::triangulate_subdivision`], [`triangulate::monotone_partition`], [`triangulate::triangulate_monotone_polygon`], [`triangulate::classify_vertices`], [`triangulate::art_gallery`], [`triangulate::verify_triangulation`] |
 //! | 4 | half-plane intersection, linear programming, smallest enclosing disc, casting | [`lp::intersect_halfplanes`], [`lp::intersect_halfplanes_dc`], [`lp::lp2d`], [`lp::lp_d`], [`lp::smallest_enclosing_disc`], [`lp::castability`] |
 //! | 5 | orthogonal range searching | [`range::KdTree`], [`range::RangeTree`], [`range::LayeredRangeTree`], [`range::RangeTreeD`] |

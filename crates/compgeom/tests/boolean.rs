@@ -2,8 +2,8 @@
 //! membership against exact point-in-polygon, on random and degenerate inputs.
 use compgeom::kernel::{orient2d, Orientation};
 use compgeom::overlay::{
-    boolean, boolean_dcel, boolean_with, union_all, validity_problems, BooleanOp, BooleanOptions,
-    FillRule,
+    boolean, boolean_dcel, boolean_with, make_valid, make_valid_per_polygon, union_all,
+    validity_problems, BooleanOp, BooleanOptions, FillRule,
 };
 use compgeom::{MultiPolygon, Point2, Polygon};
 use num_rational::BigRational;
@@ -439,6 +439,44 @@ fn nonzero_and_union_all() {
     assert_valid(&all);
 }
 
+/// Per polygon, then united: a bow tie keeps both its lobes, a square overlapping it and
+/// another drawn twice stay inside (even-odd over the whole set would cut out their
+/// overlaps), a hole cuts only its own polygon; bad input names its place in the set.
+#[test]
+fn make_valid_per_polygon_unites_the_repaired_parts() {
+    let bow = vec![pt(0., 0.), pt(4., 4.), pt(4., 0.), pt(0., 4.)];
+    let frame = Polygon::new(square(3., 1., 4.), vec![square(4., 2., 1.)]);
+    let set = MultiPolygon(vec![
+        Polygon::new(bow, vec![]),
+        frame,
+        Polygon::new(square(10., 0., 1.), vec![]),
+        Polygon::new(square(10., 0., 1.), vec![]),
+        // Covers the frame's hole: the hole cuts only its own polygon.
+        Polygon::new(square(4., 2., 1.), vec![]),
+    ]);
+    let fixed = make_valid_per_polygon(&set, FillRule::EvenOdd).unwrap();
+    assert_valid(&fixed);
+    let inside = |p: Point2| containing(&fixed, p) == 1;
+    assert!(inside(pt(0.5, 2.0)) && inside(pt(3.5, 2.0)), "both lobes");
+    assert!(inside(pt(4.5, 2.5)), "the hole, covered by another polygon");
+    assert!(
+        inside(pt(3.7, 1.5)),
+        "where the bow tie and the frame overlap"
+    );
+    assert!(inside(pt(10.5, 0.5)), "the square drawn twice");
+    assert!(!inside(pt(2.0, 1.0)) && !inside(pt(8.0, 2.0)));
+    // Even-odd over the whole set: the square drawn twice and the overlaps are out.
+    let whole = make_valid(&set, FillRule::EvenOdd).unwrap();
+    assert_eq!(containing(&whole, pt(10.5, 0.5)), 0);
+    assert_eq!(containing(&whole, pt(3.7, 1.5)), 0);
+    let bad = MultiPolygon(vec![
+        Polygon::new(square(0., 0., 1.), vec![]),
+        Polygon::new(vec![pt(0., 0.), pt(1., 1.)], vec![]),
+    ]);
+    let err = make_valid_per_polygon(&bad, FillRule::EvenOdd).unwrap_err();
+    assert!(err.to_string().contains("polygon 1"), "{err}");
+}
+
 #[test]
 fn keep_collinear_keeps_split_points() {
     let a = mp(vec![square(0., 0., 4.)]);
@@ -563,6 +601,22 @@ proptest! {
     #[test]
     fn random_grid_polygons(a in grid_set(7), b in grid_set(7)) {
         check(&a, &b, &grid_samples(-0.5, 7.0, 0.5));
+    }
+
+    /// Per polygon, then united: a point (off every input ring) is inside iff some
+    /// polygon alone has it inside by even-odd.
+    #[test]
+    fn make_valid_per_polygon_is_the_union_of_the_parts(a in grid_set(7), b in grid_set(7)) {
+        let set = MultiPolygon(a.0.into_iter().chain(b.0).collect());
+        let out = make_valid_per_polygon(&set, FillRule::EvenOdd).unwrap();
+        assert_valid(&out);
+        for p in grid_samples(-0.5, 7.0, 0.5) {
+            if on_boundary(&set, p) {
+                continue;
+            }
+            let expect = set.0.iter().any(|q| in_even_odd(&MultiPolygon(vec![q.clone()]), p));
+            prop_assert_eq!(containing(&out, p) == 1, expect, "{:?}", p);
+        }
     }
 
     #[test]

@@ -51,7 +51,7 @@
 //! hole-linking sweep (see [`crate::dcel`]).
 #[cfg(test)]
 use super::result::faces_to_polygons;
-use crate::dcel::{push_ring_segments, Carrier, Dcel, Flat};
+use crate::dcel::{polygon_segments, push_ring_segments, Carrier, Dcel, Flat};
 use crate::io::ring_orientation;
 use crate::kernel::{MultiPolygon, Orientation, Segment2};
 use crate::scratch::{self, Scratch};
@@ -343,10 +343,41 @@ pub fn make_valid(polygons: &MultiPolygon, rule: FillRule) -> Result<MultiPolygo
     )
 }
 
+/// Repair each polygon of a set on its own, its shell and holes read together by `rule`
+/// (as [`make_valid`] reads a set of one polygon), then unite the repaired polygons: where
+/// polygons of the set overlap, the result is inside (with [`make_valid`] and the
+/// even-odd rule, two polygons covering a place cancel out). For layers of parts that may
+/// overlap and may cross themselves (a parcel drawn twice, a bow tie beside a square).
+/// Errors as [`boolean_with`].
+///
+/// Each polygon's repair is rounded to `f64` (and checked, as every result is) before
+/// the union, which is exact on those points: the result is the union of the repaired
+/// polygons as written out. Cost: one [`make_valid`] per polygon and one [`union_all`].
+///
+/// ```
+/// use compgeom::overlay::{make_valid, make_valid_per_polygon, FillRule};
+/// use compgeom::{MultiPolygon, Point2, Polygon};
+/// let p = |x, y| Point2::new(x, y);
+/// let square = Polygon::new(vec![p(0., 0.), p(2., 0.), p(2., 2.), p(0., 2.)], vec![]);
+/// // The same square twice: even-odd over the set cancels it, per polygon it stays.
+/// let twice = MultiPolygon(vec![square.clone(), square]);
+/// assert!(make_valid(&twice, FillRule::EvenOdd).unwrap().0.is_empty());
+/// let kept = make_valid_per_polygon(&twice, FillRule::EvenOdd).unwrap();
+/// assert_eq!(kept.0.len(), 1);
+/// ```
+pub fn make_valid_per_polygon(polygons: &MultiPolygon, rule: FillRule) -> Result<MultiPolygon> {
+    // (Bad input is reported with its place in the whole set, before any polygon alone.)
+    polygon_segments(polygons)?;
+    let mut parts = Vec::new();
+    for polygon in &polygons.0 {
+        parts.extend(make_valid(&MultiPolygon(vec![polygon.clone()]), rule)?.0);
+    }
+    union_all(&MultiPolygon(parts))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dcel::polygon_segments;
     use crate::Point2;
     use proptest::prelude::*;
 

@@ -77,8 +77,8 @@ mod trace;
 mod validate;
 
 pub use boolean::{
-    boolean, boolean_dcel, boolean_with, make_valid, union_all, BooleanEdge, BooleanOp,
-    BooleanOptions, FillRule,
+    boolean, boolean_dcel, boolean_with, make_valid, make_valid_per_polygon, union_all,
+    BooleanEdge, BooleanOp, BooleanOptions, FillRule,
 };
 pub use result::faces_to_polygons;
 pub use validate::{validity_problems, validity_problems_as_written, Problem};
