@@ -60,7 +60,7 @@ const POSITIVE: BooleanOptions = BooleanOptions {
 
 /// `got` equals `want` as a point set: area(got △ want) ≈ 0; `got` is valid.
 fn compare(name: &str, got: &MultiPolygon, want: &MultiPolygon) -> Result<(), String> {
-    assert_valid_with(got, false);
+    assert_valid_with(got, true);
     let diff = boolean_with(got, want, BooleanOp::Xor, &POSITIVE).map_err(|e| e.to_string())?;
     let s = scale(&[got, want]);
     let err = area(&diff).abs();
@@ -270,7 +270,7 @@ fn martinez_suites() {
 /// As [`compare`], but the expected rings are not oriented (martinez outputs holes in
 /// either orientation): the expected set is read even-odd.
 fn compare_loose(name: &str, got: &MultiPolygon, want: &MultiPolygon) -> Result<(), String> {
-    assert_valid_with(got, false);
+    assert_valid_with(got, true);
     let opts = BooleanOptions::default();
     // Drop the degenerate slivers (fewer than 3 distinct points) some expected outputs hold.
     let distinct = |r: &Vec<Point2>| {
@@ -427,7 +427,7 @@ fn ioverlay_suite() {
                     continue;
                 }
             };
-            assert_valid_with(&got, false);
+            assert_valid_with(&got, true);
             let mut best = f64::INFINITY;
             let mut ok = false;
             for alt in alts {

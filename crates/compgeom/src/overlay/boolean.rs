@@ -37,7 +37,9 @@
 //! again (the [`FillRule::Positive`] rule: each shell minus its holes), which makes the
 //! new crossings vertices, and checked the same way among the others. The region then
 //! differs from the exact one by slivers within rounding. Vertices from the input are
-//! never moved.
+//! never moved. A point that rounding left straight between its neighbours (a crossing
+//! rounded onto their line) is dropped where no other ring passes through it: the ring
+//! is the same curve without it.
 //!
 //! ## Order of the output
 //!

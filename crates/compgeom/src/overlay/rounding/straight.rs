@@ -1,0 +1,256 @@
+//! Points that rounding left on a straight line between their neighbours.
+//!
+//! A result is minimal exactly: the tracing drops every vertex where the boundary goes
+//! straight on, unless another ring passes through it or the caller keeps them. Rounding
+//! can make a vertex that turned a little go straight in floats: a crossing a fraction
+//! of a float gap from its neighbours' line, or a vertex where a sliver ring touched,
+//! the sliver rounded away. Such a point lies inside the segment between its
+//! neighbours, so the ring without it is the same closed curve: it stays valid, and its
+//! point set, and so every decision of the rounding check, is unchanged. The rule, on
+//! the rounded result alone: a point strictly inside the segment between the points
+//! kept before and after it, and in no other ring, is dropped.
+
+use super::PointIds;
+use crate::kernel::{orient2d, Orientation, Point2};
+
+/// The ring `points` (with what the check knows of each point, `ids`) from its point
+/// `lowest` (the smallest in x, then y), without the points that lie strictly inside
+/// the segment between the points kept before and after them, where `may_drop` allows
+/// it (the point is in no other ring). O(n), and `may_drop` asked of straight points
+/// only.
+///
+/// Only the points that may go straight are looked at: those next to a moved one, and
+/// the `crowded` ones (where a ring that rounded away touched this one: the tracing
+/// keeps a point where rings touch, even where each goes straight). Other points and
+/// their neighbours are the exact vertices, which turn. The lowest point never lies inside a segment between two
+/// others (one of them would be lower), so the ring starts there.
+pub(in crate::overlay) fn without_straight_points(
+    points: &[Point2],
+    ids: &[PointIds],
+    lowest: usize,
+    crowded: impl Fn(&PointIds) -> bool,
+    may_drop: impl Fn(Point2) -> bool,
+) -> Vec<Point2> {
+    let n = points.len();
+    let after = |i: usize| if i + 1 == n { 0 } else { i + 1 };
+    // (Most rings have none: the first point dropped below is straight between its
+    // neighbours as they are. Looked for first, each point that may be once: those
+    // inside the array, then the two whose neighbours wrap around.)
+    let look = |a: &PointIds, b: &PointIds, c: &PointIds| a.moved | b.moved | c.moved || crowded(b);
+    let wrap = [(n - 1, 0, 1 % n), (n - 2, n - 1, 0)];
+    let some = points
+        .windows(3)
+        .zip(ids.windows(3))
+        .any(|(p, id)| look(&id[0], &id[1], &id[2]) && strictly_inside(p[0], p[1], p[2]))
+        || wrap.iter().any(|&(a, b, c)| {
+            look(&ids[a], &ids[b], &ids[c]) && strictly_inside(points[a], points[b], points[c])
+        });
+    let rotated = || [&points[lowest..], &points[..lowest]].concat();
+    if !some {
+        return rotated();
+    }
+    let mut kept = Vec::with_capacity(n);
+    kept.push(points[lowest]);
+    // Whether the point kept last, or one dropped since, moved.
+    let mut moved_before = ids[lowest].moved;
+    let mut i = lowest;
+    for _ in 1..n {
+        i = after(i);
+        let next = after(i);
+        let (p, q, r) = (kept[kept.len() - 1], points[i], points[next]);
+        let look = moved_before || ids[i].moved || ids[next].moved || crowded(&ids[i]);
+        if look && strictly_inside(p, q, r) && may_drop(q) {
+            // (The dropped point counts as moved for the next: the segment it was in
+            // now ends at the next point.)
+            moved_before = true;
+            continue;
+        }
+        kept.push(q);
+        moved_before = ids[i].moved;
+    }
+    if kept.len() < 3 {
+        // (A flat ring: the check never passes one; left as it was, for it to see.)
+        return rotated();
+    }
+    kept
+}
+
+/// Whether `q` lies on segment `p r` and is neither end (exactly).
+#[inline]
+fn strictly_inside(p: Point2, q: Point2, r: Point2) -> bool {
+    let within = |a: f64, b: f64, c: f64| (a <= b && b <= c) || (c <= b && b <= a);
+    q != p
+        && q != r
+        && within(p.x, q.x, r.x)
+        && within(p.y, q.y, r.y)
+        && !clearly_turns(p, q, r)
+        && orient2d(p, q, r) == Orientation::Collinear
+}
+
+/// Whether `p q r` turns, decided in floats where the rounding error of the
+/// determinant is smaller than its size (Shewchuk's first bound, with margin; `false`
+/// where it cannot tell: tiny or huge products, ties).
+#[inline]
+fn clearly_turns(p: Point2, q: Point2, r: Point2) -> bool {
+    let (a, b) = ((q.x - p.x) * (r.y - p.y), (q.y - p.y) * (r.x - p.x));
+    let size = a.abs() + b.abs();
+    // (Where the products are tiny, underflow may have cost them more than the bound's
+    // share; where they are huge they may have overflowed: there `orient2d` decides.
+    // 4e-16 is above the bound's 3.33e-16 by far more than what underflow costs above
+    // 1e-270.)
+    size > 1e-270 && size < 1e270 && (a - b).abs() > 4e-16 * size
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ids(moved: &[bool]) -> Vec<PointIds> {
+        moved
+            .iter()
+            .enumerate()
+            .map(|(v, &m)| PointIds::of(v as u32, m))
+            .collect()
+    }
+
+    fn p(x: f64, y: f64) -> Point2 {
+        Point2::new(x, y)
+    }
+
+    /// No point where other boundary edges meet.
+    fn calm(_: &PointIds) -> bool {
+        false
+    }
+
+    #[test]
+    fn straight_points_next_to_a_moved_one_are_dropped() {
+        // A square with a point on its right side (moved) and one on its top (not
+        // moved, beside an unmoved one on each side: left as it is).
+        let pts = [
+            p(0.0, 0.0),
+            p(4.0, 0.0),
+            p(4.0, 1.5),
+            p(4.0, 4.0),
+            p(2.0, 4.0),
+            p(0.0, 4.0),
+        ];
+        let all = |_: Point2| true;
+        let out = without_straight_points(
+            &pts,
+            &ids(&[false, false, true, false, false, false]),
+            0,
+            calm,
+            all,
+        );
+        assert_eq!(
+            out,
+            vec![
+                p(0.0, 0.0),
+                p(4.0, 0.0),
+                p(4.0, 4.0),
+                p(2.0, 4.0),
+                p(0.0, 4.0)
+            ]
+        );
+        // A neighbour moved: dropped too. Two in a row on one side: both.
+        let pts = [
+            p(0.0, 0.0),
+            p(1.0, 0.0),
+            p(3.0, 0.0),
+            p(4.0, 0.0),
+            p(0.0, 4.0),
+        ];
+        let out = without_straight_points(
+            &pts,
+            &ids(&[false, true, false, false, false]),
+            0,
+            calm,
+            all,
+        );
+        assert_eq!(out, vec![p(0.0, 0.0), p(4.0, 0.0), p(0.0, 4.0)]);
+    }
+
+    /// A point where other rings met (they rounded away) is looked at though nothing
+    /// moved near it.
+    #[test]
+    fn crowded_straight_points_are_dropped() {
+        let pts = [
+            p(0.0, 0.0),
+            p(4.0, 0.0),
+            p(4.0, 4.0),
+            p(2.0, 4.0),
+            p(0.0, 4.0),
+        ];
+        let still = ids(&[false; 5]);
+        let at_2_4 = |id: &PointIds| id.enter == 3;
+        let out = without_straight_points(&pts, &still, 0, at_2_4, |_| true);
+        assert_eq!(
+            out,
+            vec![p(0.0, 0.0), p(4.0, 0.0), p(4.0, 4.0), p(0.0, 4.0)]
+        );
+        // Another ring still has it: kept.
+        let out = without_straight_points(&pts, &still, 0, at_2_4, |q| q != p(2.0, 4.0));
+        assert_eq!(out, pts.to_vec());
+    }
+
+    #[test]
+    fn turning_shared_and_folded_points_stay() {
+        let all = |_: Point2| true;
+        // A point a float off the line turns: kept.
+        let off = f64::from_bits(4.0f64.to_bits() + 1);
+        let pts = [
+            p(0.0, 0.0),
+            p(4.0, 0.0),
+            p(off, 2.0),
+            p(4.0, 4.0),
+            p(0.0, 4.0),
+        ];
+        let moved = ids(&[false, false, true, false, false]);
+        assert_eq!(
+            without_straight_points(&pts, &moved, 0, calm, all),
+            pts.to_vec()
+        );
+        // Straight but shared (`may_drop` says no): kept.
+        let pts = [
+            p(0.0, 0.0),
+            p(4.0, 0.0),
+            p(4.0, 2.0),
+            p(4.0, 4.0),
+            p(0.0, 4.0),
+        ];
+        let none = |_: Point2| false;
+        assert_eq!(
+            without_straight_points(&pts, &moved, 0, calm, none),
+            pts.to_vec()
+        );
+        // On the line but beyond its neighbour (the ring folds back there): kept.
+        let pts = [
+            p(0.0, 0.0),
+            p(4.0, 0.0),
+            p(4.0, 5.0),
+            p(4.0, 4.0),
+            p(0.0, 4.0),
+        ];
+        assert_eq!(
+            without_straight_points(&pts, &moved, 0, calm, all),
+            pts.to_vec()
+        );
+    }
+
+    #[test]
+    fn the_ring_starts_at_its_lowest_point() {
+        let pts = [
+            p(4.0, 4.0),
+            p(0.0, 4.0),
+            p(0.0, 0.0),
+            p(4.0, 0.0),
+            p(4.0, 2.0),
+        ];
+        let moved = ids(&[false, false, false, false, true]);
+        let out = without_straight_points(&pts, &moved, 2, calm, |_| true);
+        assert_eq!(
+            out,
+            vec![p(0.0, 0.0), p(4.0, 0.0), p(4.0, 4.0), p(0.0, 4.0)]
+        );
+    }
+}
