@@ -501,6 +501,48 @@ fn no_vertex_is_left_straight_by_rounding() {
     }
 }
 
+/// A sliver whose three vertices round onto one point leaves a chord over a
+/// neighbouring polygon's corner; the polygons near it are united again with it (the
+/// union where nothing moves did not see the neighbour: two polygons whose edges
+/// crossed). Found by an independent review's random search.
+#[test]
+fn polygons_near_a_ring_rounded_onto_one_point_are_united_with_it() {
+    let parts = polygons(&[
+        (
+            &[
+                (0.3, 5.3),
+                (7.3, 1.8000000000000005),
+                (7.3, 3.3),
+                (8.3, 3.3),
+            ],
+            &[],
+        ),
+        (
+            &[
+                (1.3, 8.3),
+                (2.3, 4.3),
+                (3.5000000000000004, 6.1000000000000005),
+            ],
+            &[],
+        ),
+        (
+            &[
+                (2.3000000000000003, 4.3),
+                (3.3, 0.3),
+                (4.633333333333333, 2.966666666666667),
+            ],
+            &[],
+        ),
+    ]);
+    let u = union_all(&parts).unwrap();
+    assert_valid(&u);
+    assert_eq!(
+        u.0.len(),
+        1,
+        "the triangle's corner is inside the first polygon"
+    );
+}
+
 #[test]
 fn keep_collinear_keeps_split_points() {
     let a = mp(vec![square(0., 0., 4.)]);

@@ -965,6 +965,31 @@ fn traced(
     for &k in &three_on_one {
         suspect[k] = true;
     }
+    // Nor does it follow such a ring against its neighbours: rounding may have carried
+    // it into a polygon near it (a chord from the point of a sliver to a far vertex,
+    // over a polygon's corner), which the next union, where nothing moves, would not
+    // see. The polygons near it, this result's and the context's, are united with it.
+    if !three_on_one.is_empty() {
+        let shell_box = |k: usize| {
+            regions[k]
+                .0
+                .map(|s| box_of(&rounded.points[rounded.starts[s]..rounded.starts[s + 1]]))
+        };
+        let boxes: Vec<Option<[f64; 4]>> = (0..regions.len()).map(shell_box).collect();
+        for &k in &three_on_one {
+            let Some(b) = boxes[k] else { continue };
+            for (j, other) in boxes.iter().enumerate() {
+                if other.is_some_and(|o| boxes_near(&b, &o)) {
+                    suspect[j] = true;
+                }
+            }
+            for &c in &near {
+                if boxes_near(&b, &box_of(&context[c].exterior)) {
+                    context_suspect[c] = true;
+                }
+            }
+        }
+    }
     // A polygon inside a hole that rounded away (an island in a sliver of a lake) would
     // overlap the hole's polygon: both are united again, which merges them. Rounding to
     // nearest is monotone, so the island's rounded points are in the hole's box too.
@@ -1082,6 +1107,15 @@ fn own_point_uses(
         *uses.entry((okey(q.x), okey(q.y))).or_insert(0) += 1;
     }
     uses
+}
+
+/// Whether boxes `a` and `b` (`[min x, max x, min y, max y]`) meet once widened by
+/// 2⁻⁴⁰ of their largest coordinate (and the smallest normal `f64`), as in
+/// [`near_context`]: more than rounding moves a point.
+fn boxes_near(a: &[f64; 4], b: &[f64; 4]) -> bool {
+    let largest = a.iter().chain(b).fold(0.0f64, |m, v| m.max(v.abs()));
+    let pad = largest / (1u64 << 40) as f64 + f64::MIN_POSITIVE;
+    a[0] - pad <= b[1] && b[0] - pad <= a[1] && a[2] - pad <= b[3] && b[2] - pad <= a[3]
 }
 
 /// `[min x, max x, min y, max y]` of `points`.
