@@ -536,11 +536,8 @@ fn polygons_near_a_ring_rounded_onto_one_point_are_united_with_it() {
     ]);
     let u = union_all(&parts).unwrap();
     assert_valid(&u);
-    assert_eq!(
-        u.0.len(),
-        1,
-        "the triangle's corner is inside the first polygon"
-    );
+    // (Exactly, the corner is a hair outside; rounded, the chord passes over it.)
+    assert_eq!(u.0.len(), 1);
 }
 
 #[test]
