@@ -501,6 +501,46 @@ fn no_vertex_is_left_straight_by_rounding() {
     }
 }
 
+/// After a repair (a polygon united again), a point a settled polygon kept because the
+/// repaired one passed through it may be in no other ring: dropped where straight.
+/// Found by an independent review's random search.
+#[test]
+fn no_vertex_is_left_straight_after_a_repair() {
+    let a = polygons(&[
+        (&[(6.3, 1.3), (3.3, 4.3), (0.3, 8.3)], &[]),
+        (&[(5.3, 3.3), (4.3, 5.3), (3.3, 9.3)], &[]),
+    ]);
+    let b = polygons(&[
+        (
+            &[(8.3, 3.3), (8.3, 7.3), (4.3, 3.3)],
+            &[&[(9.3, 0.3), (6.3, 8.3), (1.3, 3.3)]],
+        ),
+        (&[(4.3, 1.3), (6.3, 8.3), (7.3, 6.3)], &[]),
+        (&[(1.3, 2.3), (9.3, 0.3), (1.3, 6.3)], &[]),
+    ]);
+    let xor = boolean_with(&a, &b, BooleanOp::Xor, &BooleanOptions::default()).unwrap();
+    assert_valid(&xor);
+    let set = polygons(&[
+        (
+            &[
+                (0.3, 8.3),
+                (4.3, 1.3),
+                (6.3, 4.3),
+                (7.3, 1.3),
+                (4.3, 3.3),
+                (5.3, 2.3),
+            ],
+            &[&[(6.3, 7.3), (6.3, 1.3), (9.3, 1.3), (1.3, 6.3)]],
+        ),
+        (&[(2.3, 7.3), (1.3, 8.3), (6.3, 3.3)], &[]),
+        (
+            &[(6.3, 6.3), (2.3, 3.3), (4.3, 3.3)],
+            &[&[(0.3, 5.3), (4.3, 2.3), (3.3, 5.3)]],
+        ),
+    ]);
+    assert_valid(&make_valid_per_polygon(&set, FillRule::EvenOdd).unwrap());
+}
+
 /// A sliver whose three vertices round onto one point leaves a chord over a
 /// neighbouring polygon's corner; the polygons near it are united again with it (the
 /// union where nothing moves did not see the neighbour: two polygons whose edges

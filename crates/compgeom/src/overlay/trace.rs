@@ -44,7 +44,8 @@
 //! and a few tests per component on map-like data) or the hole sweep.
 use super::boolean::{oriented_segments, FillRule};
 use super::rounding::{
-    down, failing_rings, up, without_straight_points, ExactPoints, PointIds, RoundedRings, REPAIRS,
+    down, failing_rings, straighten_all, up, without_straight_points, ExactPoints, PointIds,
+    RoundedRings, REPAIRS,
 };
 use crate::dcel::{
     compare_xy_filtered_by, compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounded,
@@ -289,6 +290,7 @@ pub(super) fn traced_boolean(
     // those again, each its shell minus its holes, and check the new ones among the
     // others (which can be found near them in turn).
     let mut settled: Vec<Polygon> = Vec::new();
+    let mut repaired = false;
     for _ in 0..REPAIRS {
         let (mut again, mut kept) = (Vec::new(), Vec::new());
         let flagged = fresh
@@ -305,12 +307,18 @@ pub(super) fn traced_boolean(
         if again.is_empty() {
             break;
         }
+        repaired = true;
         let again = MultiPolygon(again);
         let (segs, na) = oriented_segments(&again, &MultiPolygon::default(), FillRule::Positive)?;
         let united = traced(&segs, na, |w, _| w > 0, keep_collinear, true, &settled)?;
         (fresh, flags) = (united.polygons, united.context_suspect);
     }
     settled.extend(fresh.into_iter().map(|(polygon, _)| polygon));
+    if repaired && !keep_collinear {
+        // (Each union dropped the straight points no other ring of its own had; a
+        // settled polygon may have kept one for a ring united again since.)
+        straighten_all(&mut settled);
+    }
     Ok(canonical_order(settled))
 }
 
