@@ -82,6 +82,19 @@ fn straightened(ring: &[Point2], may_drop: impl Fn(Point2) -> bool) -> Option<Ve
 /// other ring (the ring's polygon was united again, and the union went straight there).
 /// O(n) expected.
 pub(in crate::overlay) fn straighten_all(polygons: &mut [Polygon]) {
+    // (Most results have no straight point at all: looked for first, without the
+    // count of uses.)
+    let straight_in = |ring: &[Point2]| {
+        let n = ring.len();
+        (0..n).any(|i| strictly_inside(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]))
+    };
+    if !polygons
+        .iter()
+        .flat_map(|p| p.rings())
+        .any(|r| straight_in(r))
+    {
+        return;
+    }
     let key = |q: Point2| (ordered_key(q.x), ordered_key(q.y));
     let mut uses: HashMap<(u64, u64), u32, RandomState> = HashMap::default();
     for q in polygons.iter().flat_map(|p| p.rings()).flatten() {
