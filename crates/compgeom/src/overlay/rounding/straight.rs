@@ -25,8 +25,9 @@ use std::collections::HashMap;
 /// Only the points that may go straight are looked at: those next to a moved one, and
 /// the `crowded` ones (where a ring that rounded away touched this one: the tracing
 /// keeps a point where rings touch, even where each goes straight). Other points and
-/// their neighbours are the exact vertices, which turn. The lowest point never lies inside a segment between two
-/// others (one of them would be lower), so the ring starts there.
+/// their neighbours are the exact vertices, which turn. The lowest point never lies
+/// inside a segment between two others (one of them would be lower), so the ring
+/// starts there.
 pub(in crate::overlay) fn without_straight_points(
     points: &[Point2],
     ids: &[PointIds],
