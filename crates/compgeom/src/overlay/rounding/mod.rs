@@ -49,7 +49,8 @@
 //! to one point, the edge between them collapsed: the point stands for both (edges
 //! leave it from the second), and the collapsed edge is tested as an edge of no length,
 //! which nothing may come near. Three vertices on one point the tracing reports, and
-//! that result is not taken as it is. A ring left with fewer than three points was
+//! that result is not taken as it is: it is united again, with the polygons near it
+//! (the check does not follow such a ring against them either). A ring left with fewer than three points was
 //! thinner than the rounding (a sliver between near-coincident edges): the tracing
 //! drops it, as a second union would, and the check decides the rings left (the exact
 //! result without a ring of it is still valid: a polygon without one of its holes, or
