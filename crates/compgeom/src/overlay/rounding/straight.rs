@@ -235,46 +235,19 @@ mod tests {
 
     #[test]
     fn turning_shared_and_folded_points_stay() {
-        let all = |_: Point2| true;
-        // A point a float off the line turns: kept.
-        let off = f64::from_bits(4.0f64.to_bits() + 1);
-        let pts = [
-            p(0.0, 0.0),
-            p(4.0, 0.0),
-            p(off, 2.0),
-            p(4.0, 4.0),
-            p(0.0, 4.0),
-        ];
-        let moved = ids(&[false, false, true, false, false]);
-        assert_eq!(
-            without_straight_points(&pts, &moved, 0, calm, all),
-            pts.to_vec()
-        );
-        // Straight but shared (`may_drop` says no): kept.
-        let pts = [
-            p(0.0, 0.0),
-            p(4.0, 0.0),
-            p(4.0, 2.0),
-            p(4.0, 4.0),
-            p(0.0, 4.0),
-        ];
-        let none = |_: Point2| false;
-        assert_eq!(
-            without_straight_points(&pts, &moved, 0, calm, none),
-            pts.to_vec()
-        );
-        // On the line but beyond its neighbour (the ring folds back there): kept.
-        let pts = [
-            p(0.0, 0.0),
-            p(4.0, 0.0),
-            p(4.0, 5.0),
-            p(4.0, 4.0),
-            p(0.0, 4.0),
-        ];
-        assert_eq!(
-            without_straight_points(&pts, &moved, 0, calm, all),
-            pts.to_vec()
-        );
+        // The right side x = 4 with a moved point in the middle: left as it is.
+        let kept_as_is = |middle: Point2, may_drop: fn(Point2) -> bool| {
+            let pts = [p(0.0, 0.0), p(4.0, 0.0), middle, p(4.0, 4.0), p(0.0, 4.0)];
+            let moved = ids(&[false, false, true, false, false]);
+            let out = without_straight_points(&pts, &moved, 0, calm, may_drop);
+            assert_eq!(out, pts.to_vec(), "{middle:?}");
+        };
+        // A point a float off the line turns.
+        kept_as_is(p(f64::from_bits(4.0f64.to_bits() + 1), 2.0), |_| true);
+        // Straight but shared (`may_drop` says no).
+        kept_as_is(p(4.0, 2.0), |_| false);
+        // On the line but beyond its neighbour (the ring folds back there).
+        kept_as_is(p(4.0, 5.0), |_| true);
     }
 
     #[test]
