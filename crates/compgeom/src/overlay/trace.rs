@@ -44,8 +44,8 @@
 //! and a few tests per component on map-like data) or the hole sweep.
 use super::boolean::{oriented_segments, FillRule};
 use super::rounding::{
-    down, failing_rings, straighten_all, up, without_straight_points, ExactPoints, PointIds,
-    RoundedRings, REPAIRS,
+    down, failing_rings, stands_for_any, straighten_all, up, without_straight_points, ExactPoints,
+    PointIds, RoundedRings, REPAIRS,
 };
 use crate::dcel::{
     compare_xy_filtered_by, compare_y_filtered, faces_left_of, side, Carrier, Flat, Rounded,
@@ -1059,11 +1059,7 @@ fn traced(
     dropped_vertices.sort_unstable();
     // Where a dropped ring touched another ring: the tracing kept the point (other
     // boundary edges met there), and that ring may go straight there, rounded or not.
-    let crowded = |id: &PointIds| {
-        !dropped_vertices.is_empty()
-            && (dropped_vertices.binary_search(&id.enter).is_ok()
-                || dropped_vertices.binary_search(&id.leave).is_ok())
-    };
+    let crowded = |id: &PointIds| stands_for_any(id, &dropped_vertices);
     let polygons = regions
         .into_iter()
         .zip(suspect.iter().copied())

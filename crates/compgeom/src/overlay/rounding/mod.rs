@@ -96,7 +96,7 @@ mod straight;
 mod strips;
 
 pub(super) use faces::{mend_faces, suspect_faces};
-pub(super) use straight::{straighten_all, without_straight_points};
+pub(super) use straight::{stands_for_any, straighten_all, without_straight_points};
 
 /// At most this many re-unions of a result whose rounding may have broken it (each
 /// checked as the first one was); the last one is returned as it is.

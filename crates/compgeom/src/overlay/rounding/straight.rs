@@ -56,6 +56,15 @@ pub(in crate::overlay) fn without_straight_points(
     straightened(&rotated, may_drop).unwrap_or(rotated)
 }
 
+/// Whether the point `id` stands for one of the arrangement vertices `sorted`
+/// (ascending): either of the two vertices of a point where an edge collapsed. The
+/// `crowded` rule of [`without_straight_points`], with `sorted` the vertices of the rings
+/// that rounded away. O(log n).
+pub(in crate::overlay) fn stands_for_any(id: &PointIds, sorted: &[u32]) -> bool {
+    !sorted.is_empty()
+        && (sorted.binary_search(&id.enter).is_ok() || sorted.binary_search(&id.leave).is_ok())
+}
+
 /// `ring`, which starts at its lowest point, without the points strictly inside the
 /// segment between the points kept before and after them where `may_drop` allows it;
 /// `None` when none is dropped or fewer than three points would be left (a flat ring,
@@ -248,6 +257,89 @@ mod tests {
         kept_as_is(p(4.0, 2.0), |_| false);
         // On the line but beyond its neighbour (the ring folds back there).
         kept_as_is(p(4.0, 5.0), |_| true);
+    }
+
+    /// A point where an edge collapsed stands for two vertices: it is crowded when
+    /// either of them was in a ring that rounded away.
+    #[test]
+    fn a_point_for_two_vertices_is_crowded_by_either() {
+        let mut merged = PointIds::of(5, true);
+        assert!(merged.merge(PointIds::of(9, true)));
+        assert!(stands_for_any(&merged, &[1, 5]));
+        assert!(stands_for_any(&merged, &[9, 12]));
+        assert!(!stands_for_any(&merged, &[6, 7, 8]));
+        assert!(!stands_for_any(&merged, &[]));
+        assert!(stands_for_any(&PointIds::of(7, false), &[7]));
+    }
+
+    /// Where dropping the straight points would leave fewer than three, the ring is
+    /// left as it is (flat: the check never passes it, and it is united again).
+    #[test]
+    fn a_ring_that_would_go_flat_is_left_as_it_is() {
+        let pts = [p(0.0, 0.0), p(2.0, 0.0), p(1.0, 0.0)];
+        let out = without_straight_points(&pts, &ids(&[false, false, true]), 0, calm, |_| true);
+        assert_eq!(out, pts.to_vec());
+        let mut polygons = [Polygon::new(
+            vec![p(0.0, 0.0), p(4.0, 0.0), p(4.0, 4.0), p(0.0, 4.0)],
+            vec![pts.to_vec()],
+        )];
+        straighten_all(&mut polygons);
+        assert_eq!(polygons[0].holes[0], pts.to_vec());
+    }
+
+    /// Where the float filter says "turns", the exact orientation is not collinear
+    /// and has the sign of the float determinant the filter bounded, at every scale
+    /// from the subnormals to near overflow, on triples within a few floats of
+    /// collinear; and it does decide ordinary turns (else it would only cost time).
+    #[test]
+    fn clearly_turns_is_sound_at_every_scale() {
+        let float_sign = |p0: Point2, q: Point2, r: Point2| {
+            let d = (q.x - p0.x) * (r.y - p0.y) - (q.y - p0.y) * (r.x - p0.x);
+            if d > 0.0 {
+                Orientation::CounterClockwise
+            } else {
+                Orientation::Clockwise
+            }
+        };
+        let mut unit = crate::testing::units(0x57_7a19);
+        let mut below = crate::testing::below(0x57_7a1a);
+        let (mut near, mut decided) = (0, 0);
+        for exp in (-1074..1000).step_by(7) {
+            let scale = 2f64.powi(exp);
+            for _ in 0..40 {
+                let mut v = || (unit() - 0.5) * scale;
+                let (p0, r, off) = (p(v(), v()), p(v(), v()), p(v(), v()));
+                // A float point on the segment, rounded, then moved a float or none
+                // per axis.
+                let t = unit();
+                let step = |x: f64, k: u64| match k {
+                    0 => x,
+                    1 => f64::from_bits(x.to_bits() + 1),
+                    _ => f64::from_bits(x.to_bits().saturating_sub(1)),
+                };
+                let on = p(p0.x + t * (r.x - p0.x), p0.y + t * (r.y - p0.y));
+                let q = p(step(on.x, below(3)), step(on.y, below(3)));
+                // Three points of a line through the origin, one far smaller than the
+                // others: their differences are rounded too.
+                let small = 2f64.powi(-(below(60) as i32) - 20);
+                let q2 = p(step(p0.x * small, below(3)), step(p0.y * small, below(3)));
+                let r2 = p(-p0.x * (1.0 + t), -p0.y * (1.0 + t));
+                for (a, b, c) in [(p0, q, r), (p0, q2, r2), (p0, off, r)] {
+                    if clearly_turns(a, b, c) {
+                        let exact = orient2d(a, b, c);
+                        assert_ne!(exact, Orientation::Collinear, "{a:?} {b:?} {c:?}");
+                        assert_eq!(exact, float_sign(a, b, c), "{a:?} {b:?} {c:?}");
+                        if b != off {
+                            near += 1;
+                        } else {
+                            decided += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(near > 100, "only {near} near-collinear triples decided");
+        assert!(decided > 5_000, "the filter decided only {decided} turns");
     }
 
     #[test]
