@@ -5,9 +5,10 @@
 mod common;
 use common::cases_dir;
 use compgeom::io::{
-    detect_format, format_f64, read_off, read_points, read_points3, read_polygons,
-    read_polygons_as_written, read_segments, read_text, ring_orientation, write_off, write_points3,
-    write_segments, write_shape, Format, OpenRing, Polyhedron, Shape,
+    detect_format, format_f64, read_off, read_points, read_points3, read_polygon_features,
+    read_polygon_layer, read_polygons, read_polygons_as_written, read_segments, read_text,
+    ring_orientation, write_off, write_points3, write_segments, write_shape, Format, OpenRing,
+    Polyhedron, Shape,
 };
 use compgeom::{Error, MultiPolygon, Orientation, Point2, Point3, Polygon, Segment2};
 use num_rational::BigRational;
@@ -47,6 +48,57 @@ fn same_bits(a: &[Point2], b: &[Point2]) -> bool {
 }
 
 // ---------------------------------------------------------------- formats
+
+/// A polygon layer carries each Feature's properties from the same parse: one per
+/// Feature in order (null where absent, also for a Feature without geometry), a single
+/// Feature's, none for a bare geometry or WKT; polygons and features as
+/// `read_polygon_features` gives them; bad input the same error.
+#[test]
+fn polygon_layers_carry_feature_properties() {
+    let square = "[[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]]";
+    let fc = format!(
+        r#"{{"type": "FeatureCollection", "features": [
+  {{"type": "Feature", "properties": {{"id": 7}}, "geometry": {{"type": "MultiPolygon",
+    "coordinates": [[{square}], [{square}]]}}}},
+  {{"type": "Feature", "geometry": null}},
+  {{"type": "Feature", "properties": {{"id": 9}}, "geometry": {{"type": "Polygon",
+    "coordinates": [{square}]}}}}]}}"#
+    );
+    let layer = read_polygon_layer(&fc, Format::GeoJson, "in").unwrap();
+    let (polygons, features) = read_polygon_features(&fc, Format::GeoJson, "in").unwrap();
+    assert_eq!((&layer.polygons, &layer.features), (&polygons, &features));
+    assert_eq!(layer.features, vec![0, 0, 2]);
+    let ids: Vec<String> = layer
+        .properties
+        .iter()
+        .map(|v| v["id"].to_string())
+        .collect();
+    assert_eq!(ids, ["7", "null", "9"]);
+    let one = format!(
+        r#"{{"type": "Feature", "properties": {{"id": 3}}, "geometry": {{"type": "Polygon",
+    "coordinates": [{square}]}}}}"#
+    );
+    let layer = read_polygon_layer(&one, Format::GeoJson, "in").unwrap();
+    assert_eq!(layer.properties.len(), 1);
+    assert_eq!(layer.properties[0]["id"], 3);
+    let bare = format!(r#"{{"type": "Polygon", "coordinates": [{square}]}}"#);
+    assert!(read_polygon_layer(&bare, Format::GeoJson, "in")
+        .unwrap()
+        .properties
+        .is_empty());
+    let wkt = read_polygon_layer("POLYGON ((0 0, 1 0, 0 1, 0 0))", Format::Wkt, "in").unwrap();
+    assert_eq!((wkt.features, wkt.properties.len()), (vec![0], 0));
+    let bad = r#"{"type": "Feature", "properties": {}, "geometry": {"type": "Polygon",
+    "coordinates": [[[0, 0], [1, 0], [0, 0]]]}}"#;
+    assert_eq!(
+        read_polygon_layer(bad, Format::GeoJson, "in")
+            .unwrap_err()
+            .to_string(),
+        read_polygon_features(bad, Format::GeoJson, "in")
+            .unwrap_err()
+            .to_string()
+    );
+}
 
 #[test]
 fn format_names_and_extensions() {

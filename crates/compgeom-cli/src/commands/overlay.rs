@@ -8,10 +8,10 @@ use crate::error::CliError;
 use crate::output;
 use clap::Args;
 use compgeom::dcel::{Dcel, FaceId, PolygonLabel};
-use compgeom::io::{read_polygon_features, to_geojson_value, Format, Shape};
+use compgeom::io::{read_polygon_layer, to_geojson_value, PolygonLayer, Shape};
 use compgeom::overlay::{overlay_polygons, rounding_suspects};
 use compgeom::render::{Layer, Picture, Style};
-use compgeom::{MultiPolygon, Polygon};
+use compgeom::Polygon;
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
@@ -68,7 +68,7 @@ pub struct OverlayArgs {
 pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
     let a = InputLayer::read(&args.input)?;
     let b = InputLayer::read(&other_input(&args.input, &args.b))?;
-    let d = overlay_polygons(&a.polygons, &b.polygons)?;
+    let d = overlay_polygons(&a.0.polygons, &b.0.polygons)?;
     // With --verify: the structure's invariants, and the faces near which rounding may
     // have made edges meet (the overlay mended what it could; listed, not an error).
     let suspects = if args.output.verify {
@@ -220,56 +220,26 @@ pub fn overlay_picture<E>(
     pic
 }
 
-/// A polygon layer: its polygons, each one's input feature, and the features' GeoJSON
-/// properties (none for other formats).
-struct InputLayer {
-    polygons: MultiPolygon,
-    features: Vec<usize>,
-    properties: Vec<Value>,
-}
+/// A polygon layer read from an input: its polygons, each one's input feature, and the
+/// features' GeoJSON properties (none for other formats).
+struct InputLayer(PolygonLayer);
 
 impl InputLayer {
     fn read(input: &InputArgs) -> Result<InputLayer, CliError> {
         let src = input.read()?;
-        let (polygons, features) = read_polygon_features(&src.text, src.format, &src.name)?;
-        let properties = match src.format {
-            Format::GeoJson | Format::Json => feature_properties(&src.text),
-            _ => Vec::new(),
-        };
-        Ok(InputLayer {
-            polygons,
-            features,
-            properties,
-        })
+        Ok(InputLayer(read_polygon_layer(
+            &src.text, src.format, &src.name,
+        )?))
     }
 
     /// The feature of polygon `p`.
     fn feature(&self, p: Option<&usize>) -> Option<usize> {
-        p.map(|&p| self.features[p])
+        p.map(|&p| self.0.features[p])
     }
 
     /// The properties of feature `f` (null where it has none).
     fn properties(&self, f: Option<usize>) -> Value {
-        f.and_then(|f| self.properties.get(f).cloned())
+        f.and_then(|f| self.0.properties.get(f).cloned())
             .unwrap_or(Value::Null)
-    }
-}
-
-/// The `properties` of each Feature of a GeoJSON text (a FeatureCollection's in order,
-/// or a single Feature's); empty for anything else. The text has been read as polygons
-/// already, so it is valid JSON.
-fn feature_properties(text: &str) -> Vec<Value> {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let Ok(mut doc) = serde_json::from_str::<Value>(text) else {
-        return Vec::new();
-    };
-    let properties = |f: &mut Value| f.get_mut("properties").map_or(Value::Null, Value::take);
-    match doc.get("type").and_then(Value::as_str) {
-        Some("FeatureCollection") => match doc.get_mut("features") {
-            Some(Value::Array(features)) => features.iter_mut().map(properties).collect(),
-            _ => Vec::new(),
-        },
-        Some("Feature") => vec![properties(&mut doc)],
-        _ => Vec::new(),
     }
 }

@@ -149,41 +149,51 @@ fn flatten(
 
 /// Every geometry of a GeoJSON text (or bare coordinate array), flattened into parts.
 pub(crate) fn read(text: &str, source: &str) -> Result<Vec<Part>> {
+    Ok(read_with_properties(text, source)?.0)
+}
+
+/// [`read`], with the `properties` of each Feature (null where it has none): a
+/// FeatureCollection's in order, or a single Feature's; none for anything else. One
+/// parse of the text.
+pub(crate) fn read_with_properties(text: &str, source: &str) -> Result<(Vec<Part>, Vec<Value>)> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let trimmed = text.trim_start();
     if trimmed.is_empty() {
-        return Ok(Vec::new());
+        return Ok((Vec::new(), Vec::new()));
     }
     if trimmed.starts_with('[') {
         let value: Value = serde_json::from_str(text).map_err(|e| json_error(&e, source))?;
-        return bare_arrays(&value, source);
+        return Ok((bare_arrays(&value, source)?, Vec::new()));
     }
     let doc: GeoJson = match serde_json::from_str(text) {
         Ok(doc) => doc,
         Err(e) => without_empty_polygons(text, &e, source)?,
     };
-    let mut parts = Vec::new();
+    let (mut parts, mut properties) = (Vec::new(), Vec::new());
     // The line of the opening brace.
     let leading = &text[..text.len() - trimmed.len()];
     let first_line = Some(1 + leading.matches('\n').count());
-    match &doc {
-        GeoJson::Geometry(g) => flatten(g, "geometry", first_line, None, &mut parts),
+    let properties_of = |f: geojson::Feature| f.properties.map_or(Value::Null, Value::Object);
+    match doc {
+        GeoJson::Geometry(g) => flatten(&g, "geometry", first_line, None, &mut parts),
         GeoJson::Feature(f) => {
             if let Some(g) = &f.geometry {
                 flatten(g, "feature 1", first_line, Some(0), &mut parts);
             }
+            properties.push(properties_of(f));
         }
         GeoJson::FeatureCollection(fc) => {
             let lines = feature_lines(text);
-            for (i, f) in fc.features.iter().enumerate() {
+            for (i, f) in fc.features.into_iter().enumerate() {
                 if let Some(g) = &f.geometry {
                     let what = format!("feature {}", i + 1);
                     flatten(g, &what, lines.get(i).copied(), Some(i), &mut parts);
                 }
+                properties.push(properties_of(f));
             }
         }
     }
-    Ok(parts)
+    Ok((parts, properties))
 }
 
 /// The document `text`, which failed to parse with `error`, with the empty polygons of
