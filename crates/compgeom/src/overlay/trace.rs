@@ -977,26 +977,36 @@ fn traced(
     for &k in &three_on_one {
         suspect[k] = true;
     }
+    // (The boxes of the regions' shells and of the context polygons near this result,
+    // for the two rules below.)
+    let (shell_boxes, near_boxes): (Vec<Option<[f64; 4]>>, Vec<[f64; 4]>) =
+        if three_on_one.is_empty() && holes_gone.is_empty() {
+            (Vec::new(), Vec::new())
+        } else {
+            let shell_box =
+                |s: usize| box_of(&rounded.points[rounded.starts[s]..rounded.starts[s + 1]]);
+            (
+                regions
+                    .iter()
+                    .map(|(shell, _)| shell.map(shell_box))
+                    .collect(),
+                near.iter().map(|&c| box_of(&context[c].exterior)).collect(),
+            )
+        };
     // Nor does it follow such a ring against its neighbours: rounding may have carried
     // it into a polygon near it (a chord from the point of a sliver to a far vertex,
     // over a polygon's corner), which the next union, where nothing moves, would not
     // see. The polygons near it, this result's and the context's, are united with it.
     if !three_on_one.is_empty() {
-        let shell_box = |k: usize| {
-            regions[k]
-                .0
-                .map(|s| box_of(&rounded.points[rounded.starts[s]..rounded.starts[s + 1]]))
-        };
-        let boxes: Vec<Option<[f64; 4]>> = (0..regions.len()).map(shell_box).collect();
         for &k in &three_on_one {
-            let Some(b) = boxes[k] else { continue };
-            for (j, other) in boxes.iter().enumerate() {
+            let Some(b) = shell_boxes[k] else { continue };
+            for (j, other) in shell_boxes.iter().enumerate() {
                 if other.is_some_and(|o| boxes_near(&b, &o)) {
                     suspect[j] = true;
                 }
             }
-            for &c in &near {
-                if boxes_near(&b, &box_of(&context[c].exterior)) {
+            for (&c, other) in near.iter().zip(&near_boxes) {
+                if boxes_near(&b, other) {
                     context_suspect[c] = true;
                 }
             }
@@ -1009,21 +1019,13 @@ fn traced(
         let within = |b: &[f64; 4], c: [f64; 4]| {
             b[0] <= c[0] && c[1] <= b[1] && b[2] <= c[2] && c[3] <= b[3]
         };
-        let shells: Vec<Option<[f64; 4]>> = regions
-            .iter()
-            .map(|(shell, _)| {
-                shell.map(|s| box_of(&rounded.points[rounded.starts[s]..rounded.starts[s + 1]]))
-            })
-            .collect();
-        let near_shells: Vec<[f64; 4]> =
-            near.iter().map(|&c| box_of(&context[c].exterior)).collect();
         for &(k, b) in &holes_gone {
-            for (j, shell) in shells.iter().enumerate() {
+            for (j, shell) in shell_boxes.iter().enumerate() {
                 if j != k && shell.is_some_and(|s| within(&b, s)) {
                     (suspect[j], suspect[k]) = (true, true);
                 }
             }
-            for (&c, &shell) in near.iter().zip(&near_shells) {
+            for (&c, &shell) in near.iter().zip(&near_boxes) {
                 if within(&b, shell) {
                     (context_suspect[c], suspect[k]) = (true, true);
                 }
