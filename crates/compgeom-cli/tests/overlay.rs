@@ -114,6 +114,18 @@ fn output_format_from_the_file_extension() {
         ))
         .stderr(predicates::str::contains("faces.csv"));
     assert!(!csv.exists());
+    // Before any input is read (or found missing).
+    compgeom()
+        .arg("overlay")
+        .arg(d.path().join("missing.geojson"))
+        .arg(&b)
+        .arg("-o")
+        .arg(&csv)
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains(
+            "overlay writes json or geojson, not csv",
+        ));
     // `validate` writes its report as JSON only, whatever the name asks.
     for format in ["wkt", "geojson"] {
         compgeom()
@@ -416,6 +428,12 @@ fn open_rings_are_bad_input_and_nothing_is_written() {
             vec!["make-valid".as_ref(), open.as_os_str()],
         ];
         for args in runs {
+            // (overlay writes JSON: a WKT output would be the first error.)
+            let out = if args[0] == "overlay" {
+                out.with_extension("json")
+            } else {
+                out.clone()
+            };
             compgeom()
                 .args(&args)
                 .arg("-o")

@@ -5,7 +5,7 @@
 use crate::cli::{InputArgs, OutputArgs, OutputFormat};
 use crate::commands::boolean::other_input;
 use crate::error::CliError;
-use crate::output;
+use crate::output::{self, object};
 use clap::Args;
 use compgeom::dcel::{Dcel, FaceId, PolygonLabel};
 use compgeom::io::{read_polygon_layer, to_geojson_value, PolygonLayer, Shape};
@@ -66,6 +66,12 @@ pub struct OverlayArgs {
 
 /// Run `compgeom overlay`.
 pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
+    // (An output format the command does not write is an error before any work.)
+    let geojson = match args.output.format() {
+        OutputFormat::Json => false,
+        OutputFormat::Geojson => true,
+        _ => return Err(args.output.unsupported("overlay", "json or geojson")),
+    };
     let a = InputLayer::read(&args.input)?;
     let b = InputLayer::read(&other_input(&args.input, &args.b))?;
     let d = overlay_polygons(&a.0.polygons, &b.0.polygons)?;
@@ -84,42 +90,51 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
             suspects.iter().map(|f| f.0).collect::<Vec<_>>()
         );
     }
+    // The faces as the format lists them: GeoJSON Features of the bounded faces with
+    // both layers' attributes, or JSON records of all faces.
     let mut faces = Vec::new();
-    let mut features = Vec::new();
     for f in d.face_ids() {
+        if geojson && f == FaceId::UNBOUNDED {
+            continue;
+        }
         let (la, lb) = &d.face(f).data;
         let (fa, fb) = (a.feature(la.first()), b.feature(lb.first()));
         let polygon = match d.face_polygon(f) {
             Some(p) => to_geojson_value(&Shape::Polygon(p))?,
             None => Value::Null,
         };
-        if f != FaceId::UNBOUNDED {
-            features.push(json!({
-                "type": "Feature",
-                "properties": {
-                    "a": fa,
-                    "b": fb,
-                    "a_properties": a.properties(fa),
-                    "b_properties": b.properties(fb),
-                },
-                "geometry": polygon.clone(),
-            }));
-        }
-        faces.push(json!({"polygon": polygon, "a": fa, "b": fb}));
+        faces.push(if geojson {
+            let properties = object([
+                ("a", json!(fa)),
+                ("b", json!(fb)),
+                ("a_properties", a.properties(fa)),
+                ("b_properties", b.properties(fb)),
+            ]);
+            object([
+                ("type", json!("Feature")),
+                ("properties", properties),
+                ("geometry", polygon),
+            ])
+        } else {
+            object([("polygon", polygon), ("a", json!(fa)), ("b", json!(fb))])
+        });
     }
-    let value = match args.output.format() {
-        OutputFormat::Json => {
-            let mut v =
-                json!({"faces": faces, "vertices": d.vertex_count(), "edges": d.edge_count()});
-            if args.output.verify {
-                v["verified"] = json!(true);
-                v["rounding_suspect_faces"] =
-                    json!(suspects.iter().map(|f| f.0).collect::<Vec<_>>());
-            }
-            v
+    let value = if geojson {
+        object([
+            ("type", json!("FeatureCollection")),
+            ("features", Value::Array(faces)),
+        ])
+    } else {
+        let mut v = object([
+            ("faces", Value::Array(faces)),
+            ("vertices", json!(d.vertex_count())),
+            ("edges", json!(d.edge_count())),
+        ]);
+        if args.output.verify {
+            v["verified"] = json!(true);
+            v["rounding_suspect_faces"] = json!(suspects.iter().map(|f| f.0).collect::<Vec<_>>());
         }
-        OutputFormat::Geojson => json!({"type": "FeatureCollection", "features": features}),
-        _ => return Err(args.output.unsupported("overlay", "json or geojson")),
+        v
     };
     if let Some(svg) = &args.output.svg {
         let label =
