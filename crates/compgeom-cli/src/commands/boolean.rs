@@ -277,13 +277,13 @@ pub fn run_make_valid(args: &MakeValidArgs) -> Result<(), CliError> {
     };
     let shape = Shape::MultiPolygon(result.clone());
     let text = match args.output.format().geometry_format() {
-        None => serde_json::to_string(&serde_json::json!({
-            "operation": "make-valid",
-            "fill_rule": args.fill_rule.name(),
-            "per_polygon": args.per_polygon,
-            "result": io::to_geojson_value(&shape)?,
-            "polygons": result.0.len(),
-        }))
+        None => serde_json::to_string(&output::object([
+            ("operation", serde_json::json!("make-valid")),
+            ("fill_rule", serde_json::json!(args.fill_rule.name())),
+            ("per_polygon", serde_json::json!(args.per_polygon)),
+            ("result", io::to_geojson_value(&shape)?),
+            ("polygons", serde_json::json!(result.0.len())),
+        ]))
         .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?,
         Some(format) => write_shape(&shape, format)?,
     };
