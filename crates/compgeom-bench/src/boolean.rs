@@ -1338,18 +1338,19 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 /// dissolve (`union_all`), for instruction counts (`valgrind --tool=callgrind`). The dissolve also takes
 /// `BOOLEAN_ONE=all` (the three alternated, one call each per round, as the table
 /// does) and prints each contender's median and best call ([`disturbed_rounds`]).
-/// `BOOLEAN_ONE=pairs` with the JTS or n-gon pairs prints every pair's best call of the
-/// three instead ([`per_pair`]); `BOOLEAN_PAIR=text` keeps the JTS pairs whose names
+/// `BOOLEAN_ONE=pairs` with the JTS or n-gon pairs prints every pair's best of
+/// `BOOLEAN_REPS` (default 50) calls of the three instead ([`per_pair`]); `BOOLEAN_PAIR=text` keeps the JTS pairs whose names
 /// contain it.
 fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
     let n: usize = std::env::var("BOOLEAN_N")
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(100_000);
+    // (One call by default; `pairs` times the best of 50 per pair, warm.)
     let reps: usize = std::env::var("BOOLEAN_REPS")
         .ok()
         .and_then(|s| s.parse().ok())
-        .unwrap_or(1);
+        .unwrap_or(if who == "pairs" { 50 } else { 1 });
     let squares = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "squares");
     if squares {
         let sq = random_squares(rng, n);
