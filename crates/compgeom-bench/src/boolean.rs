@@ -834,6 +834,34 @@
 //! 1.37); dissolve 1.20 / 1.11 (1.18 / 1.07). Validity: ours 0 invalid everywhere,
 //! i_overlay 3 / 2 / 6 invalid on the JTS union / difference / xor and its dissolve
 //! invalid, as before.
+//!
+//! Session 49: no change to the boolean path's speed; where the JTS xor's excess comes
+//! from, measured (a throwaway build counting per call; callgrind per round of 52). The
+//! xor's results have 5 045 points (intersection 1 858, union 3 911), 500 of them moved
+//! (256, 254), 1 274 near pairs (233, 329), 140 failing before the nudge and 36 after
+//! (22 → 4, 30 → 2), and 18 results united again, 366 points in all (1 and 1): the xor
+//! keeps every sliver between near-coincident edges of A and B, which the JTS pairs are
+//! made of, and slivers are where rounding breaks things. Per round the check costs the
+//! xor 4.08 M instructions (near pairs 1.92 M, first decisions 0.75 M, about 590 a pair,
+//! the nudge 1.38 M) and its re-unions 1.2 M, of 16.9 M (geo 12.2 M): without any of it
+//! the xor would be at 11.6 M, below geo, so the rest of the pipeline is not what keeps
+//! this row above 1; only a check that costs a tenth of this one would. The intersection
+//! (10.84 M against geo's 10.19 M), union (12.32 M / 11.28 M) and difference (11.28 M /
+//! 10.67 M) are 6–9% above geo in instructions, most of it the cost of a small call:
+//! two squares cost 33.9 k instructions a call against geo's 24.1 k (the noding 13 k,
+//! the check 3.6 k, 23 allocations about 3.5 k, the scratch arrays about 4 k), and the
+//! 52 calls' share of that difference is 0.49 M of the intersection's 0.65 M. Per pair,
+//! warm (`BOOLEAN_ONE=pairs`, best of 50 calls, µs, summed over the 52 pairs): xor 1 139
+//! against i_overlay's 752 and geo's 821; the largest excesses pg-4538 (685 points) 158
+//! against 96, misc-4#1 81 against 53, isochrone#4 49 against 23, pg-2055 (11 points,
+//! a degenerate hole) 17 against 1.2. (`BOOLEAN_ONE=pairs` took a single cold call per
+//! pair unless `BOOLEAN_REPS` was set, which made small pairs look 10× slower; it now
+//! takes 50.) Table, load about 2.5 (a test run had just ended), ratio to i_overlay /
+//! geo, alternating (in a row): stars 0.53–0.82 / 0.50–0.81; squares 0.76 / 0.67 (0.70 /
+//! 0.67); water 0.72–0.93 / 0.72–0.94 (0.73–0.97 / 0.68–0.89); JTS intersection 1.04 /
+//! 1.03 (1.06 / 1.02), union 1.08 / 1.08 (1.09 / 1.06), difference 1.06 / 1.00 (1.07 /
+//! 1.03), xor 1.47 / 1.41 (1.52 / 1.43); dissolve 1.21 / 1.08 (1.14 / 1.05). Validity
+//! as before.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
