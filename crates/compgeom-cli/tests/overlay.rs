@@ -101,31 +101,22 @@ fn output_format_from_the_file_extension() {
     let v: Value = serde_json::from_str(&fs::read_to_string(&faces).unwrap()).unwrap();
     assert_eq!(v["type"], "FeatureCollection", "{v}");
     let csv = d.path().join("faces.csv");
-    compgeom()
-        .arg("overlay")
-        .arg(&a)
-        .arg(&b)
-        .arg("-o")
-        .arg(&csv)
-        .assert()
-        .code(2)
-        .stderr(predicates::str::contains(
-            "overlay writes json or geojson, not csv",
-        ))
-        .stderr(predicates::str::contains("faces.csv"));
-    assert!(!csv.exists());
-    // Before any input is read (or found missing).
-    compgeom()
-        .arg("overlay")
-        .arg(d.path().join("missing.geojson"))
-        .arg(&b)
-        .arg("-o")
-        .arg(&csv)
-        .assert()
-        .code(2)
-        .stderr(predicates::str::contains(
-            "overlay writes json or geojson, not csv",
-        ));
+    // The format is reported before any input is read (or found missing).
+    for first in [a.clone(), d.path().join("missing.geojson")] {
+        compgeom()
+            .arg("overlay")
+            .arg(&first)
+            .arg(&b)
+            .arg("-o")
+            .arg(&csv)
+            .assert()
+            .code(2)
+            .stderr(predicates::str::contains(
+                "overlay writes json or geojson, not csv",
+            ))
+            .stderr(predicates::str::contains("faces.csv"));
+        assert!(!csv.exists());
+    }
     // `validate` writes its report as JSON only, whatever the name asks.
     for format in ["wkt", "geojson"] {
         compgeom()

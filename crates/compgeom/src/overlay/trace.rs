@@ -1066,13 +1066,18 @@ fn traced(
     // Where a dropped ring touched another ring: the tracing kept the point (other
     // boundary edges met there), and that ring may go straight there, rounded or not.
     let crowded = |id: &PointIds| stands_for_any(id, &dropped_vertices);
+    // Ring k's points and where its lowest point (x, then y) is among them.
+    let from_lowest = |k: usize| {
+        let pts = &rounded.points[rounded.starts[k]..rounded.starts[k + 1]];
+        let lowest = (0..pts.len())
+            .min_by(|&i, &j| compare_xy(pts[i], pts[j]))
+            .unwrap_or(0);
+        (pts, lowest)
+    };
     #[cfg(test)]
     let undropped = {
         let ring = |k: usize| {
-            let pts = &rounded.points[rounded.starts[k]..rounded.starts[k + 1]];
-            let lowest = (0..pts.len())
-                .min_by(|&i, &j| compare_xy(pts[i], pts[j]))
-                .unwrap_or(0);
+            let (pts, lowest) = from_lowest(k);
             [&pts[lowest..], &pts[..lowest]].concat()
         };
         regions
@@ -1093,15 +1098,12 @@ fn traced(
             // Unless collinear vertices are kept, without the points rounding left
             // straight between their neighbours where no other ring passes.
             let ring = |k: usize| {
-                let (s, e) = (rounded.starts[k], rounded.starts[k + 1]);
-                let pts = &rounded.points[s..e];
-                let lowest = (0..pts.len())
-                    .min_by(|&i, &j| compare_xy(pts[i], pts[j]))
-                    .unwrap_or(0);
+                let (pts, lowest) = from_lowest(k);
                 if keep_collinear {
                     return [&pts[lowest..], &pts[..lowest]].concat();
                 }
-                without_straight_points(pts, &rounded.ids[s..e], lowest, crowded, |q| {
+                let ids = &rounded.ids[rounded.starts[k]..rounded.starts[k + 1]];
+                without_straight_points(pts, ids, lowest, crowded, |q| {
                     let uses = point_uses.get_or_init(|| own_point_uses(&rounded, own_rings));
                     let key = (okey(q.x), okey(q.y));
                     uses[&key] == 1 && !context_points.contains(&key)
