@@ -67,15 +67,3 @@ pub fn with_newline(mut text: String) -> String {
     }
     text
 }
-
-/// A JSON object of `entries` (written with its keys sorted, as `json!` writes them),
-/// taking their values as they are (`json!` with a `Value` variable copies the whole
-/// tree: on an overlay's tens of thousands of faces, a quarter of the command's time).
-pub fn object<const N: usize>(entries: [(&str, serde_json::Value); N]) -> serde_json::Value {
-    serde_json::Value::Object(
-        entries
-            .into_iter()
-            .map(|(k, v)| (k.to_string(), v))
-            .collect(),
-    )
-}

@@ -957,6 +957,74 @@ fn write_shape_layouts() {
     }
 }
 
+/// `GeoJsonGeometry` serializes as the GeoJSON text `write_shape` writes, read into a
+/// serde_json value and printed: every kind of shape, rings of either orientation, flat
+/// and empty rings, and coordinates whose text is an integer (small, large, beyond
+/// `u64`, negative zero), in scientific form, subnormal or extreme.
+#[test]
+fn geojson_geometry_serializes_as_the_written_text_reads() {
+    let numbers = [
+        0.0,
+        -0.0,
+        3.0,
+        -7.0,
+        100.0,
+        1000.0,
+        0.1,
+        -2.5,
+        1.5e-5,
+        0.00015,
+        1e15,
+        9007199254740993.0,
+        2f64.powi(60),
+        -(2f64.powi(62)),
+        2f64.powi(63),
+        2f64.powi(64),
+        1e20,
+        1e300,
+        -1e300,
+        5e-324,
+        f64::MIN_POSITIVE,
+        f64::MAX,
+        -f64::MAX,
+        123456789.0,
+        0.1 + 0.2,
+    ];
+    let mut shapes = vec![Shape::Empty];
+    for (k, &x) in numbers.iter().enumerate() {
+        let y = numbers[(k * 7 + 3) % numbers.len()];
+        let (a, b, c) = (p(x, y), p(y, x), p(x, x));
+        shapes.push(Shape::Point(a));
+        shapes.push(Shape::MultiPoint(vec![a, b, c]));
+        shapes.push(Shape::LineString(vec![a, b]));
+        let ring = vec![p(0.0, 0.0), a, p(x, 0.5), b];
+        let mut turned = ring.clone();
+        turned.reverse();
+        let flat = vec![p(0.0, 0.0), c, p(x / 2.0, x / 2.0)];
+        let poly = Polygon::new(ring.clone(), vec![turned.clone(), vec![], flat.clone()]);
+        shapes.push(Shape::Polygon(poly.clone()));
+        shapes.push(Shape::MultiPolygon(MultiPolygon(vec![
+            Polygon::new(turned, vec![ring]),
+            Polygon::new(vec![], vec![flat]),
+            poly,
+        ])));
+    }
+    for shape in &shapes {
+        let text = write_shape(shape, Format::GeoJson).unwrap();
+        let read: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let direct = serde_json::to_string(&compgeom::io::GeoJsonGeometry(shape)).unwrap();
+        assert_eq!(direct, read.to_string(), "{text}");
+        assert_eq!(
+            compgeom::io::to_geojson_value(shape).unwrap(),
+            read,
+            "{text}"
+        );
+    }
+    // A non-finite coordinate is an error, not a number.
+    let bad = Shape::LineString(vec![p(0.0, 1.0), p(f64::INFINITY, 0.0)]);
+    assert!(serde_json::to_string(&compgeom::io::GeoJsonGeometry(&bad)).is_err());
+}
+
 #[test]
 fn segments_round_trip_through_every_format() {
     let segs = vec![

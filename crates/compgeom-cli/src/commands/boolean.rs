@@ -6,7 +6,7 @@ use crate::cli::{InputArgs, OutputArgs, OutputFormat};
 use crate::error::CliError;
 use crate::output;
 use clap::{Args, ValueEnum};
-use compgeom::io::{self, write_shape, Shape};
+use compgeom::io::{self, write_shape, GeoJsonGeometry, Shape};
 use compgeom::overlay::{
     boolean_with, make_valid, make_valid_per_polygon, BooleanOp, BooleanOptions, FillRule,
 };
@@ -144,11 +144,22 @@ pub fn other_input(input: &InputArgs, path: &std::path::Path) -> InputArgs {
 }
 
 #[derive(Serialize)]
-struct BooleanJson {
+struct BooleanJson<'a> {
     operation: &'static str,
     fill_rule: &'static str,
-    result: serde_json::Value,
+    result: GeoJsonGeometry<'a>,
     polygons: usize,
+}
+
+/// `make-valid`'s JSON document (keys in alphabetical order, as it has always written
+/// them).
+#[derive(Serialize)]
+struct MakeValidJson<'a> {
+    fill_rule: &'static str,
+    operation: &'static str,
+    per_polygon: bool,
+    polygons: usize,
+    result: GeoJsonGeometry<'a>,
 }
 
 /// Run `compgeom boolean`.
@@ -181,7 +192,7 @@ pub fn run(args: &BooleanArgs) -> Result<(), CliError> {
         None => serde_json::to_string(&BooleanJson {
             operation: args.operation.name(),
             fill_rule: fill_rule.name(),
-            result: io::to_geojson_value(&shape)?,
+            result: GeoJsonGeometry(&shape),
             polygons: result.0.len(),
         })
         .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?,
@@ -277,13 +288,13 @@ pub fn run_make_valid(args: &MakeValidArgs) -> Result<(), CliError> {
     };
     let shape = Shape::MultiPolygon(result.clone());
     let text = match args.output.format().geometry_format() {
-        None => serde_json::to_string(&output::object([
-            ("operation", serde_json::json!("make-valid")),
-            ("fill_rule", serde_json::json!(args.fill_rule.name())),
-            ("per_polygon", serde_json::json!(args.per_polygon)),
-            ("result", io::to_geojson_value(&shape)?),
-            ("polygons", serde_json::json!(result.0.len())),
-        ]))
+        None => serde_json::to_string(&MakeValidJson {
+            fill_rule: args.fill_rule.name(),
+            operation: "make-valid",
+            per_polygon: args.per_polygon,
+            polygons: result.0.len(),
+            result: GeoJsonGeometry(&shape),
+        })
         .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?,
         Some(format) => write_shape(&shape, format)?,
     };

@@ -5,14 +5,16 @@
 use crate::cli::{InputArgs, OutputArgs, OutputFormat};
 use crate::commands::boolean::other_input;
 use crate::error::CliError;
-use crate::output::{self, object};
+use crate::output;
 use clap::Args;
 use compgeom::dcel::{Dcel, FaceId, PolygonLabel};
-use compgeom::io::{read_polygon_layer, to_geojson_value, PolygonLayer, Shape};
-use compgeom::overlay::{overlay_polygons, rounding_suspects};
+use compgeom::io::{read_polygon_layer, GeoJsonGeometry, PolygonLayer, Shape};
+use compgeom::overlay::{overlay_polygons, rounding_suspects, OverlayEdge};
 use compgeom::render::{Layer, Picture, Style};
 use compgeom::Polygon;
-use serde_json::{json, Value};
+use serde::ser::{SerializeSeq, Serializer};
+use serde::Serialize;
+use serde_json::Value;
 use std::path::PathBuf;
 
 /// `--help` text describing the JSON output.
@@ -90,61 +92,127 @@ pub fn run(args: &OverlayArgs) -> Result<(), CliError> {
             suspects.iter().map(|f| f.0).collect::<Vec<_>>()
         );
     }
-    // The faces as the format lists them: GeoJSON Features of the bounded faces with
-    // both layers' attributes, or JSON records of all faces.
-    let mut faces = Vec::new();
-    for f in d.face_ids() {
-        if geojson && f == FaceId::UNBOUNDED {
-            continue;
-        }
-        let (la, lb) = &d.face(f).data;
-        let (fa, fb) = (a.feature(la.first()), b.feature(lb.first()));
-        let polygon = match d.face_polygon(f) {
-            Some(p) => to_geojson_value(&Shape::Polygon(p))?,
-            None => Value::Null,
-        };
-        faces.push(if geojson {
-            let properties = object([
-                ("a", json!(fa)),
-                ("b", json!(fb)),
-                ("a_properties", a.properties(fa)),
-                ("b_properties", b.properties(fb)),
-            ]);
-            object([
-                ("type", json!("Feature")),
-                ("properties", properties),
-                ("geometry", polygon),
-            ])
-        } else {
-            object([("polygon", polygon), ("a", json!(fa)), ("b", json!(fb))])
-        });
-    }
-    let value = if geojson {
-        object([
-            ("type", json!("FeatureCollection")),
-            ("features", Value::Array(faces)),
-        ])
-    } else {
-        let mut v = object([
-            ("faces", Value::Array(faces)),
-            ("vertices", json!(d.vertex_count())),
-            ("edges", json!(d.edge_count())),
-        ]);
-        if args.output.verify {
-            v["verified"] = json!(true);
-            v["rounding_suspect_faces"] = json!(suspects.iter().map(|f| f.0).collect::<Vec<_>>());
-        }
-        v
+    // The document is serialized straight from the overlay, face by face (a JSON value
+    // of every face's polygon first took most of the command's memory).
+    let faces = Faces {
+        d: &d,
+        a: &a,
+        b: &b,
+        geojson,
     };
+    let text = if geojson {
+        serde_json::to_string(&FeatureCollection {
+            features: faces,
+            kind: "FeatureCollection",
+        })
+    } else {
+        let verified = args.output.verify;
+        serde_json::to_string(&OverlayJson {
+            edges: d.edge_count(),
+            faces,
+            rounding_suspect_faces: verified.then(|| suspects.iter().map(|f| f.0).collect()),
+            verified: verified.then_some(true),
+            vertices: d.vertex_count(),
+        })
+    }
+    .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?;
     if let Some(svg) = &args.output.svg {
         let label =
             |la: &PolygonLabel, lb: &PolygonLabel| (a.feature(la.first()), b.feature(lb.first()));
         let pic = overlay_picture(&d, label, ("A", "B"));
         output::write_atomic(svg, pic.to_svg_string().as_bytes())?;
     }
-    let text = serde_json::to_string(&value)
-        .map_err(|e| CliError::failure(format!("cannot encode JSON: {e}")))?;
     output::emit(args.output.output.as_deref(), &output::with_newline(text))
+}
+
+/// The `--format json` document. (Every object here has its keys in alphabetical order,
+/// as the command wrote them when it built a `serde_json::Value`.)
+#[derive(Serialize)]
+struct OverlayJson<'a> {
+    edges: usize,
+    faces: Faces<'a>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    rounding_suspect_faces: Option<Vec<usize>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    verified: Option<bool>,
+    vertices: usize,
+}
+
+/// The `--format geojson` document.
+#[derive(Serialize)]
+struct FeatureCollection<'a> {
+    features: Faces<'a>,
+    #[serde(rename = "type")]
+    kind: &'static str,
+}
+
+/// The faces of an overlay as the format lists them: JSON records of all faces, or
+/// GeoJSON Features of the bounded ones with both layers' attributes; each face's
+/// polygon made as it is written.
+struct Faces<'a> {
+    d: &'a Dcel<(), OverlayEdge, (PolygonLabel, PolygonLabel)>,
+    a: &'a InputLayer,
+    b: &'a InputLayer,
+    geojson: bool,
+}
+
+/// A face in `--format json`.
+#[derive(Serialize)]
+struct FaceRecord<'a> {
+    a: Option<usize>,
+    b: Option<usize>,
+    polygon: Option<GeoJsonGeometry<'a>>,
+}
+
+/// A bounded face in `--format geojson`.
+#[derive(Serialize)]
+struct Feature<'a> {
+    geometry: Option<GeoJsonGeometry<'a>>,
+    properties: FaceProperties<'a>,
+    #[serde(rename = "type")]
+    kind: &'static str,
+}
+
+#[derive(Serialize)]
+struct FaceProperties<'a> {
+    a: Option<usize>,
+    a_properties: &'a Value,
+    b: Option<usize>,
+    b_properties: &'a Value,
+}
+
+impl Serialize for Faces<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut seq = serializer.serialize_seq(None)?;
+        for f in self.d.face_ids() {
+            if self.geojson && f == FaceId::UNBOUNDED {
+                continue;
+            }
+            let (la, lb) = &self.d.face(f).data;
+            let (fa, fb) = (self.a.feature(la.first()), self.b.feature(lb.first()));
+            let shape = self.d.face_polygon(f).map(Shape::Polygon);
+            let polygon = shape.as_ref().map(GeoJsonGeometry);
+            if self.geojson {
+                seq.serialize_element(&Feature {
+                    geometry: polygon,
+                    properties: FaceProperties {
+                        a: fa,
+                        a_properties: self.a.properties(fa),
+                        b: fb,
+                        b_properties: self.b.properties(fb),
+                    },
+                    kind: "Feature",
+                })?;
+            } else {
+                seq.serialize_element(&FaceRecord {
+                    a: fa,
+                    b: fb,
+                    polygon,
+                })?;
+            }
+        }
+        seq.end()
+    }
 }
 
 /// A face's labels in [`overlay_picture`]: the feature (or polygon) of A and of B
@@ -253,8 +321,8 @@ impl InputLayer {
     }
 
     /// The properties of feature `f` (null where it has none).
-    fn properties(&self, f: Option<usize>) -> Value {
-        f.and_then(|f| self.0.properties.get(f).cloned())
-            .unwrap_or(Value::Null)
+    fn properties(&self, f: Option<usize>) -> &Value {
+        static NULL: Value = Value::Null;
+        f.and_then(|f| self.0.properties.get(f)).unwrap_or(&NULL)
     }
 }

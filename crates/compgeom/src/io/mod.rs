@@ -103,6 +103,7 @@
 mod csv;
 mod geo_types;
 mod geojson;
+mod geojson_value;
 mod off;
 mod orient;
 mod records;
@@ -113,6 +114,7 @@ use crate::kernel::{MultiPolygon, Point2, Point3, Polygon, Segment2};
 use crate::{Error, Result};
 use std::path::Path;
 
+pub use geojson_value::GeoJsonGeometry;
 pub use off::{read_off, read_off_with_lines, write_off, Polyhedron};
 pub use orient::ring_orientation;
 pub use write::{format_f64, write_points3, write_segments};
@@ -600,6 +602,7 @@ pub fn write_shape(shape: &Shape, format: Format) -> Result<String> {
 /// larger JSON document (the CLI's `--format json` results). The same geometry, ring
 /// orientation and numbers as [`write_shape`] with [`Format::GeoJson`]; serde_json prints
 /// the numbers back bit for bit. `Err(NonFinite)` for NaN or infinite coordinates.
+/// [`GeoJsonGeometry`] serializes the same without building the value.
 ///
 /// ```
 /// use compgeom::io::{to_geojson_value, Shape};
@@ -609,8 +612,7 @@ pub fn write_shape(shape: &Shape, format: Format) -> Result<String> {
 /// assert_eq!(v["coordinates"][1].as_f64(), Some(-2.0));
 /// ```
 pub fn to_geojson_value(shape: &Shape) -> Result<serde_json::Value> {
-    let text = write_shape(shape, Format::GeoJson)?;
-    serde_json::from_str(&text).map_err(|e| {
-        Error::Verification(format!("compgeom wrote GeoJSON that does not parse: {e}"))
-    })
+    write::ensure_finite_shape(shape)?;
+    serde_json::to_value(GeoJsonGeometry(shape))
+        .map_err(|e| Error::Verification(format!("cannot make a GeoJSON value: {e}")))
 }

@@ -243,26 +243,44 @@ fn json_positions(out: &mut String, vs: impl Iterator<Item = Point2>) {
 }
 
 /// A ring closed and turned to the orientation RFC 7946 wants (`want`), unless its area is
-/// zero, in which case it is kept as given.
-fn json_ring(out: &mut String, ring: &[Point2], want: Orientation) {
+/// zero, in which case it is kept as given; reversed, the first vertex stays first.
+fn oriented_closed(
+    ring: &[Point2],
+    want: Orientation,
+) -> impl Iterator<Item = Point2> + Clone + '_ {
     let o = ring_orientation(ring);
-    if o == Orientation::Collinear || o == want {
-        json_positions(out, closed(ring));
+    let reverse = o != Orientation::Collinear && o != want;
+    let n = ring.len();
+    // Position k of the closed ring (k = 0..=n): k mod n, or (n − k) mod n reversed.
+    (0..=n).map(move |k| ring[if reverse { (n - k) % n } else { k % n }])
+}
+
+/// The rings of a GeoJSON polygon's coordinates: the exterior counter-clockwise and the
+/// holes clockwise, each closed; empty rings (and every ring of a polygon whose exterior
+/// is empty) left out.
+pub(super) fn geojson_rings(
+    p: &Polygon,
+) -> impl Iterator<Item = impl Iterator<Item = Point2> + Clone + '_> + '_ {
+    let holes = if p.exterior.is_empty() {
+        &p.holes[..0]
     } else {
-        // Reverse, keeping the first vertex first.
-        let reversed = ring[..1].iter().chain(ring[1..].iter().rev()).copied();
-        json_positions(out, reversed.chain(ring.first().copied()));
-    }
+        &p.holes[..]
+    };
+    let exterior = std::iter::once((&p.exterior, Orientation::CounterClockwise));
+    let holes = holes.iter().map(|h| (h, Orientation::Clockwise));
+    exterior
+        .chain(holes)
+        .filter(|(ring, _)| !ring.is_empty())
+        .map(|(ring, want)| oriented_closed(ring, want))
 }
 
 fn json_polygon_rings(out: &mut String, p: &Polygon) {
     out.push('[');
-    if !p.exterior.is_empty() {
-        json_ring(out, &p.exterior, Orientation::CounterClockwise);
-        for h in p.holes.iter().filter(|h| !h.is_empty()) {
+    for (i, ring) in geojson_rings(p).enumerate() {
+        if i > 0 {
             out.push(',');
-            json_ring(out, h, Orientation::Clockwise);
         }
+        json_positions(out, ring);
     }
     out.push(']');
 }
