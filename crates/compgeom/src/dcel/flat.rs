@@ -50,6 +50,28 @@ pub(crate) struct Flat {
     pub sources: Vec<Source>,
 }
 
+/// The sources of a [`Flat`]'s edges without the rest of it ([`Flat::sources_by_edge`]).
+pub(crate) struct EdgeSources {
+    src_start: Vec<u32>,
+    sources: Vec<Source>,
+}
+
+impl EdgeSources {
+    /// The sources of edge `i`, as [`Flat::sources_of`] gives them.
+    pub(crate) fn of(&self, i: usize) -> &[Source] {
+        sources_in(&self.src_start, &self.sources, i)
+    }
+}
+
+/// Edge `i`'s sources in the lists of a [`Flat`].
+#[inline]
+fn sources_in<'a>(src_start: &[u32], sources: &'a [Source], i: usize) -> &'a [Source] {
+    if src_start.is_empty() {
+        return std::slice::from_ref(&sources[i]);
+    }
+    &sources[src_start[i] as usize..src_start[i + 1] as usize]
+}
+
 /// The vertices of a [`Flat`], each with its nearest `f64` point: exact points stored
 /// compactly (a crossing's two segments only where the vertex is one), or, when every
 /// vertex is an input point (the axis-parallel path), plain points.
@@ -555,10 +577,16 @@ impl Flat {
     /// The sources of edge `i`.
     #[inline]
     pub(crate) fn sources_of(&self, i: usize) -> &[Source] {
-        if self.src_start.is_empty() {
-            return std::slice::from_ref(&self.sources[i]);
+        sources_in(&self.src_start, &self.sources, i)
+    }
+
+    /// A copy of the edges' sources, to read after the arrangement is made into a DCEL
+    /// (a few bytes per edge).
+    pub(crate) fn sources_by_edge(&self) -> EdgeSources {
+        EdgeSources {
+            src_start: self.src_start.clone(),
+            sources: self.sources.clone(),
         }
-        &self.sources[self.src_start[i] as usize..self.src_start[i + 1] as usize]
     }
 
     /// The arrangement from the exact intersection sweep (any segments). Segments must be

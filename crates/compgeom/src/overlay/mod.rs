@@ -258,24 +258,25 @@ pub fn overlay<V1, E1, F1, V2, E2, F2>(
     let (segs2, fed2) = layer_segments(s2);
     segs.extend(segs2);
     let flat = Flat::of_segments(&segs)?;
-    let d = Dcel::linked_flat(
-        flat,
-        &segs,
-        |sources, carrier| (sources.to_vec(), carrier),
-        true,
-    );
+    // The input segments under each edge, read from a copy of the arrangement's flat
+    // lists (half-edge 2i + 1 runs those of 2i backwards): a list per half-edge in the
+    // DCEL took as much memory as the DCEL and an allocation each.
+    let edge_sources = flat.sources_by_edge();
+    let d = Dcel::linked_flat(flat, &segs, |_, _| (), true);
     let mut data = Vec::with_capacity(2 * d.edge_count());
     for g in d.half_edge_ids() {
         let (from, to) = (d.origin_point(g), d.origin_point(d.twin(g)));
-        let (sources, carrier) = &d.half_edge(g).data;
+        let backwards = g.0 & 1 == 1;
+        let sources = edge_sources.of(g.0 >> 1);
         let find = |in1: bool, which: &str| -> Result<Option<HalfEdgeId>> {
             let mut any = false;
             for s in sources.iter().filter(|s| (s.segment < n1) == in1) {
                 any = true;
+                let forward = s.forward != backwards;
                 let found = if in1 {
-                    locate(s1, &fed1[s.segment], s.forward, from, to)
+                    locate(s1, &fed1[s.segment], forward, from, to)
                 } else {
-                    locate(s2, &fed2[s.segment - n1], s.forward, from, to)
+                    locate(s2, &fed2[s.segment - n1], forward, from, to)
                 };
                 if found.is_some() {
                     return Ok(found);
@@ -292,7 +293,7 @@ pub fn overlay<V1, E1, F1, V2, E2, F2>(
         data.push(OverlayEdge {
             s1: find(true, "S1")?,
             s2: find(false, "S2")?,
-            carrier: *carrier,
+            carrier: d.carrier(g),
         });
     }
     let d = d.map_edge_data(data);
