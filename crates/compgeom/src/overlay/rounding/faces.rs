@@ -54,18 +54,26 @@ fn checked<V, E, F>(d: &Dcel<V, E, F>, mend: bool) -> (Vec<FaceId>, Vec<(usize, 
     // what comes near its edges is found: the faces on their other sides may be
     // checked ones.
     let mut collapsed: Vec<FaceId> = Vec::new();
+    // The rounded point of the origin of half-edge h and what the check knows of it.
+    let point_of = |h| {
+        let v = d.half_edge(h).origin;
+        let vertex = d.vertex(v);
+        let id = PointIds::of(v.0 as u32, rounded_away(&vertex.point, vertex.approx));
+        (vertex.approx, id)
+    };
+    // One cycle's points and their ids (reused from cycle to cycle).
+    let (mut pts, mut ids): (Vec<Point2>, Vec<PointIds>) = (Vec::new(), Vec::new());
     for f in d.face_ids() {
         for start in d.face_cycles(f) {
             let mut ok = true;
-            let (mut pts, mut ids): (Vec<Point2>, Vec<PointIds>) = (Vec::new(), Vec::new());
+            pts.clear();
+            ids.clear();
             for h in d.cycle(start) {
-                let v = d.half_edge(h).origin;
-                let vertex = d.vertex(v);
-                let id = PointIds::of(v.0 as u32, rounded_away(&vertex.point, vertex.approx));
+                let (q, id) = point_of(h);
                 match ids.last_mut() {
-                    Some(last) if pts.last() == Some(&vertex.approx) => ok &= last.merge(id),
+                    Some(last) if pts.last() == Some(&q) => ok &= last.merge(id),
                     _ => {
-                        pts.push(vertex.approx);
+                        pts.push(q);
                         ids.push(id);
                     }
                 }
@@ -78,16 +86,7 @@ fn checked<V, E, F>(d: &Dcel<V, E, F>, mend: bool) -> (Vec<FaceId>, Vec<(usize, 
             }
             if !ok || pts.len() < 3 {
                 collapsed.push(f);
-                (pts, ids) = d
-                    .cycle(start)
-                    .map(|h| {
-                        let v = d.half_edge(h).origin;
-                        let vertex = d.vertex(v);
-                        let id =
-                            PointIds::of(v.0 as u32, rounded_away(&vertex.point, vertex.approx));
-                        (vertex.approx, id)
-                    })
-                    .unzip();
+                (pts, ids) = d.cycle(start).map(point_of).unzip();
             }
             r.points.extend_from_slice(&pts);
             r.ids.extend_from_slice(&ids);

@@ -4,8 +4,9 @@ use super::Box2;
 use crate::kernel::steps::Steps;
 
 /// A uniform grid over the boxes of the moved items (about two cells per item), each
-/// item listed in the cells its box overlaps; an item over more than [`WIDE_CELLS`]
-/// cells is listed once, in `wide`, and met by every query.
+/// item listed in the cells its box overlaps, except where that would make more than
+/// [`ENTRIES_PER_ITEM`] entries per item: then the items over the most cells are listed
+/// once, in `wide`, and met by every query.
 pub(super) struct Grid {
     xs: Steps,
     ys: Steps,
@@ -60,8 +61,33 @@ fn prescale(lo: f64, hi: f64) -> f64 {
     }
 }
 
-/// An item's box over more cells than this is `wide`.
-const WIDE_CELLS: usize = 64;
+/// At most this many cell entries per item on average: beyond it, the items over the
+/// most cells are `wide`, as few as bring the others within it. (Listed, an item costs
+/// an entry per cell under it, once; wide, a visit by every query. Dense results have
+/// small cells: edges of an overlay of 2 × 10⁴ random squares spanned up to 399 cells,
+/// 6 per item on average, and with every item over 64 cells wide, 26 706 of them were
+/// met by each of 1.6 M queries.)
+const ENTRIES_PER_ITEM: usize = 16;
+
+/// A query over more cells than the items plus this many visits every item instead.
+const ALL_ITEMS_BEYOND: usize = 64;
+
+/// The most cells an item may be listed in when items are over `cells[k]` cells each, in
+/// all more than `budget` entries: the largest count such that the items over at most
+/// that many cells fit in the budget.
+fn most_cells_listed(mut cells: Vec<usize>, budget: usize) -> usize {
+    cells.sort_unstable();
+    let sorted = cells;
+    let (mut most, mut total) = (0, 0);
+    for run in sorted.chunk_by(|a, b| a == b) {
+        total += run[0] * run.len();
+        if total > budget {
+            break;
+        }
+        most = run[0];
+    }
+    most
+}
 
 impl Grid {
     pub(super) fn new(boxes: &[Box2]) -> Grid {
@@ -142,15 +168,26 @@ impl Grid {
     fn fill(&mut self, boxes: &[Box2]) {
         let nx = self.nx;
         let mut starts = vec![0u32; nx * self.ny + 1];
-        // Each box's cells, found once for both passes (`None`: wide).
-        let spans: Vec<Option<[u32; 4]>> = boxes
+        // Each box's cells (half-open), found once for both passes (`None`: wide).
+        let mut total = 0;
+        let mut spans: Vec<Option<[u32; 4]>> = boxes
             .iter()
             .map(|b| {
                 let (x0, x1, y0, y1) = self.range(b);
-                let wide = (x1 - x0 + 1) * (y1 - y0 + 1) > WIDE_CELLS;
-                (!wide).then_some([x0 as u32, x1 as u32 + 1, y0 as u32, y1 as u32 + 1])
+                total += (x1 - x0 + 1) * (y1 - y0 + 1);
+                Some([x0 as u32, x1 as u32 + 1, y0 as u32, y1 as u32 + 1])
             })
             .collect();
+        let budget = ENTRIES_PER_ITEM * boxes.len();
+        if total > budget {
+            let size = |s: &[u32; 4]| (s[1] - s[0]) as usize * (s[3] - s[2]) as usize;
+            let most = most_cells_listed(spans.iter().flatten().map(size).collect(), budget);
+            for span in &mut spans {
+                if span.is_some_and(|s| size(&s) > most) {
+                    *span = None;
+                }
+            }
+        }
         // (Half-open ranges: an inclusive range checks for its end at every step.)
         let cells = |[x0, x1, y0, y1]: [u32; 4]| {
             (y0 as usize..y1 as usize)
@@ -200,7 +237,7 @@ impl Grid {
             return;
         }
         let (x0, x1, y0, y1) = self.range(b);
-        if (x1 - x0 + 1) * (y1 - y0 + 1) > self.count + WIDE_CELLS {
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > self.count + ALL_ITEMS_BEYOND {
             (0..self.count).for_each(f);
             return;
         }
@@ -304,5 +341,106 @@ mod tests {
                 assert_eq!(got, want, "round {round}, query {q}");
             }
         }
+    }
+
+    /// Boxes several cells across (dense short edges: cells are small) are listed in
+    /// their cells, not met by every query, while the entries stay within the budget;
+    /// past it the boxes over the most cells are wide, as few as needed. Either way
+    /// each query is visited by every box that overlaps it, exactly once.
+    #[test]
+    fn boxes_over_many_cells_are_wide_only_past_the_budget() {
+        let mut below = crate::testing::below(0x9_12d6);
+        // (Per round: the boxes' side, and how many long diagonal boxes among 2 000.)
+        for (round, (side, long)) in [(40, 0), (120, 0), (40, 50), (40, 400), (400, 0)]
+            .into_iter()
+            .enumerate()
+        {
+            let count = 2000;
+            let boxes: Vec<Box2> = (0..count)
+                .map(|k| {
+                    let (x, y) = (below(10_000) as f64, below(10_000) as f64);
+                    let s = if k < long {
+                        5000.0
+                    } else {
+                        (1 + below(side)) as f64
+                    };
+                    Box2 {
+                        x0: x,
+                        x1: x + s,
+                        y0: y,
+                        y1: y + s,
+                    }
+                })
+                .collect();
+            let grid = Grid::new(&boxes);
+            let sizes: Vec<usize> = boxes
+                .iter()
+                .map(|b| {
+                    let (x0, x1, y0, y1) = grid.range(b);
+                    (x1 - x0 + 1) * (y1 - y0 + 1)
+                })
+                .collect();
+            let total: usize = sizes.iter().sum();
+            let entries = grid.items.len();
+            assert!(
+                entries <= ENTRIES_PER_ITEM * count,
+                "round {round}: {entries}"
+            );
+            if total <= ENTRIES_PER_ITEM * count {
+                assert!(
+                    grid.wide.is_empty(),
+                    "round {round}: {} wide",
+                    grid.wide.len()
+                );
+            } else {
+                // The wide ones are the largest (items of one size alike), and listing
+                // those of the smallest wide size too would break the budget.
+                let listed_most = (0..count)
+                    .filter(|k| !grid.wide.contains(&(*k as u32)))
+                    .map(|k| sizes[k])
+                    .max()
+                    .unwrap_or(0);
+                let smallest_wide = grid.wide.iter().map(|&k| sizes[k as usize]).min();
+                let smallest_wide = smallest_wide.expect("some are wide");
+                assert!(smallest_wide > listed_most, "round {round}");
+                let alike = grid
+                    .wide
+                    .iter()
+                    .filter(|&&k| sizes[k as usize] == smallest_wide)
+                    .count();
+                assert!(
+                    entries + alike * smallest_wide > ENTRIES_PER_ITEM * count,
+                    "round {round}"
+                );
+            }
+            // (Rounds 2 and 3: 50 boxes over more than 64 cells each are listed, 400 over
+            // half the extent are past the budget.)
+            let over_64 = sizes.iter().filter(|&&c| c > 64).count();
+            assert!(
+                (round != 2 || (over_64 >= 50 && grid.wide.is_empty()))
+                    && (round != 3 || !grid.wide.is_empty()),
+                "round {round}: {over_64} over 64 cells, {} wide",
+                grid.wide.len()
+            );
+            let mut stamp = vec![usize::MAX; count];
+            for (q, b) in boxes.iter().enumerate().step_by(5) {
+                let mut got = Vec::new();
+                grid.visit(b, q, &mut stamp, |k| {
+                    if boxes[k].overlaps(b) {
+                        got.push(k);
+                    }
+                });
+                got.sort_unstable();
+                let want: Vec<usize> = (0..count).filter(|&k| boxes[k].overlaps(b)).collect();
+                assert_eq!(got, want, "round {round}, query {q}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_budget_lists_the_smallest_items() {
+        assert_eq!(most_cells_listed(vec![1, 1, 2, 9, 3], 7), 3);
+        assert_eq!(most_cells_listed(vec![5, 5, 1], 10), 1);
+        assert_eq!(most_cells_listed(vec![4, 4], 3), 0);
     }
 }
