@@ -1098,7 +1098,8 @@ pub fn run(quick: bool) -> Result<(), String> {
         }
     }
     if wanted("squares") {
-        squares_row(&mut rng, quick, runs)?;
+        squares_row(&mut rng, quick, runs, false)?;
+        squares_row(&mut rng, quick, runs, true)?;
     }
     if wanted("maps") {
         real_map_rows(runs)?;
@@ -1106,10 +1107,12 @@ pub fn run(quick: bool) -> Result<(), String> {
     Ok(())
 }
 
-/// The union of many squares.
-fn squares_row(rng: &mut Rng, quick: bool, runs: usize) -> Result<(), String> {
+/// The union of many squares, axis-parallel or each `turned` by a random angle (then
+/// their crossings are constructed points, and the result's rounding is checked on
+/// a dense arrangement).
+fn squares_row(rng: &mut Rng, quick: bool, runs: usize, turned: bool) -> Result<(), String> {
     let count = if quick { 1_000 } else { 10_000 };
-    let squares = random_squares(rng, count);
+    let squares = random_squares(rng, count, turned);
     let ps = io_paths(&squares);
     let empty: Vec<Vec<[f64; 2]>> = Vec::new();
     let gs: Vec<geo::Polygon<f64>> = geo_poly(&squares).0;
@@ -1128,7 +1131,12 @@ fn squares_row(rng: &mut Rng, quick: bool, runs: usize) -> Result<(), String> {
         },
         || drop(black_box(geo::unary_union(gs.iter()))),
     );
-    row("square union", count, &t, (x - y).abs() / x);
+    let name = if turned {
+        "turned square union"
+    } else {
+        "square union"
+    };
+    row(name, count, &t, (x - y).abs() / x);
     Ok(())
 }
 
@@ -1358,8 +1366,9 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 }
 
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
-/// `BOOLEAN_INPUT=star|squares|water|jts|ngons|dissolve`, `BOOLEAN_REPS` calls except
-/// for the squares): run one contender on the star union, the squares input, the water
+/// `BOOLEAN_INPUT=star|squares|turned|water|jts|ngons|dissolve`, `BOOLEAN_REPS` calls except
+/// for the squares): run one contender on the star union, the squares input (`turned`:
+/// turned by random angles), the water
 /// map union, the unions of the 52 JTS pairs (the stars, the water and the pairs also
 /// another `BOOLEAN_OP`), the same
 /// operation on 52 pairs of regular `BOOLEAN_K`-gons (default 4) or the GEOS-837
@@ -1379,9 +1388,9 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(if who == "pairs" { 50 } else { 1 });
-    let squares = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "squares");
-    if squares {
-        let sq = random_squares(rng, n);
+    let input = std::env::var("BOOLEAN_INPUT").unwrap_or_default();
+    if input == "squares" || input == "turned" {
+        let sq = random_squares(rng, n, input == "turned");
         let ps = io_paths(&sq);
         let empty: Vec<Vec<[f64; 2]>> = Vec::new();
         let gs: Vec<geo::Polygon<f64>> = geo_poly(&sq).0;
@@ -1426,7 +1435,6 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         disturbed_rounds(reps, &calls);
         return Ok(());
     }
-    let input = std::env::var("BOOLEAN_INPUT").unwrap_or_default();
     if input == "jts" || input == "ngons" {
         let jts = if input == "jts" {
             let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
@@ -1580,17 +1588,24 @@ fn per_pair(
 
 /// `count` axis-parallel squares with random corners in the unit square and sides
 /// 0.005..0.025 (so they overlap in chains).
-fn random_squares(rng: &mut Rng, count: usize) -> MultiPolygon {
+fn random_squares(rng: &mut Rng, count: usize, turned: bool) -> MultiPolygon {
     MultiPolygon(
         (0..count)
             .map(|_| {
                 let (x, y, w) = (rng.unit(), rng.unit(), 0.005 + 0.02 * rng.unit());
+                // The sides' direction: (w, 0), or turned by a random angle.
+                let (dx, dy) = if turned {
+                    let a = std::f64::consts::FRAC_PI_2 * rng.unit();
+                    (w * a.cos(), w * a.sin())
+                } else {
+                    (w, 0.0)
+                };
                 Polygon::new(
                     vec![
                         Point2::new(x, y),
-                        Point2::new(x + w, y),
-                        Point2::new(x + w, y + w),
-                        Point2::new(x, y + w),
+                        Point2::new(x + dx, y + dy),
+                        Point2::new(x + dx - dy, y + dy + dx),
+                        Point2::new(x - dy, y + dx),
                     ],
                     vec![],
                 )
