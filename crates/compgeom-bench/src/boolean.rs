@@ -862,6 +862,31 @@
 //! 1.03 (1.06 / 1.02), union 1.08 / 1.08 (1.09 / 1.06), difference 1.06 / 1.00 (1.07 /
 //! 1.03), xor 1.47 / 1.41 (1.52 / 1.43); dissolve 1.21 / 1.08 (1.14 / 1.05). Validity
 //! as before.
+//!
+//! Session 50. A new row, `turned square union`: the 10⁴ squares turned by random
+//! angles, so that their crossings are constructed points and the rounding check runs on
+//! a dense arrangement (0.50–0.69 against both peers). It found nothing at 10⁴, but the
+//! same kind of input at higher density did: the check's grid (`rounding::grid`) met
+//! every item over 64 cells at every query, and on dense results cells are small (an
+//! overlay of 2 × 10⁴ turned squares: 26 706 such items, 1.6 M queries; more than 140 s).
+//! Items are now listed in all their cells unless that passes 16 entries per item
+//! (2 × 10⁴ turned squares: 6 per item): that overlay 4.8 s, `compgeom boolean union`
+//! of 4 × 10⁴ turned squares 1.51 → 0.96 s, outputs byte-identical; the table's rows
+//! are unchanged (GEOS-837 dissolve 4.770 M → 4.758 M instructions). At 3 × 10⁴ turned
+//! squares (`BOOLEAN_INPUT=turned BOOLEAN_N=30000`, one call, with the input's set-up
+//! for all three) compgeom executes 3.88 G instructions against i_overlay's 8.36 G but
+//! takes 1.09 s against 0.92 s (346 MB against 267 MB): dense arrangements are memory
+//! bound, a profile puts 15% of the time in the angular sort's direction lookups (the
+//! half-edge's source, then its segment, both random). Tried and dropped: a per-edge
+//! array of those directions, made only from 2¹⁵ edges on, cost the JTS intersection
+//! +0.7–1.5% instructions however it was written (code generation of `traced`); the
+//! point sieve on the one-by-one near-pair search, +0.4% (intersection) and +0.7% (xor);
+//! fat LTO with one codegen unit, −1.3% instructions for all three contenders alike.
+//! Table (a review's builds beside it, load about 4), ratio to i_overlay / geo,
+//! alternating (in a row): stars 0.44–0.82 / 0.45–0.81; squares 0.64 / 0.63; turned
+//! squares 0.50 / 0.50 (0.61 / 0.77); water 0.71–1.01 / 0.77–0.96; JTS intersection
+//! 1.03 / 1.02 (1.05 / 1.04), union 1.07 / 1.08 (1.08 / 1.05), difference 1.06 / 1.00
+//! (1.05 / 1.02), xor 1.43 / 1.35 (1.46 / 1.39); dissolve 1.22 / 1.13 (1.20 / 1.08).
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
