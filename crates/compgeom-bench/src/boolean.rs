@@ -1611,8 +1611,9 @@ fn per_pair(
     }
 }
 
-/// `count` axis-parallel squares with random corners in the unit square and sides
-/// 0.005..0.025 (so they overlap in chains).
+/// `count` squares with random corners in the unit square and sides 0.005..0.025 (so
+/// they overlap in chains), axis-parallel or each `turned` by a random angle below 90°
+/// about that corner.
 fn random_squares(rng: &mut Rng, count: usize, turned: bool) -> MultiPolygon {
     MultiPolygon(
         (0..count)

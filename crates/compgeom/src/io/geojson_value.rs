@@ -11,7 +11,9 @@ use serde_json::Number;
 /// with [`super::Format::GeoJson`] (the same rings, orientation and closing), keys in
 /// alphabetical order, each coordinate the number a JSON reader gets from that text
 /// (serde_json prints it back bit for bit): a [`super::to_geojson_value`] that builds
-/// nothing. A NaN or infinite coordinate is a serialization error.
+/// nothing. A NaN or infinite coordinate it writes is a serialization error (the
+/// holes of a polygon without an exterior are not written, nor checked; `write_shape`
+/// and `to_geojson_value` reject any non-finite vertex).
 ///
 /// ```
 /// use compgeom::io::{GeoJsonGeometry, Shape};

@@ -4,9 +4,10 @@ use super::Box2;
 use crate::kernel::steps::Steps;
 
 /// A uniform grid over the boxes of the moved items (about two cells per item), each
-/// item listed in the cells its box overlaps, except where that would make more than
-/// [`ENTRIES_PER_ITEM`] entries per item: then the items over the most cells are listed
-/// once, in `wide`, and met by every query.
+/// item listed in the cells its box overlaps, except items over more than
+/// [`ALWAYS_LISTED_CELLS`] cells where those would make more than [`ENTRIES_PER_ITEM`]
+/// entries per item: then the largest of them are listed once, in `wide`, and met by
+/// every query.
 pub(super) struct Grid {
     xs: Steps,
     ys: Steps,
@@ -61,30 +62,39 @@ fn prescale(lo: f64, hi: f64) -> f64 {
     }
 }
 
-/// At most this many cell entries per item on average: beyond it, the items over the
-/// most cells are `wide`, as few as bring the others within it. (Listed, an item costs
-/// an entry per cell under it, once; wide, a visit by every query. Dense results have
-/// small cells: edges of an overlay of 2 × 10⁴ random squares spanned up to 399 cells,
-/// 6 per item on average, and with every item over 64 cells wide, 26 706 of them were
-/// met by each of 1.6 M queries.)
+/// An item over at most this many cells is always listed in them.
+const ALWAYS_LISTED_CELLS: usize = 64;
+
+/// Items over more cells are listed too while the entries stay within this many per
+/// item on average; past it, the largest of them are `wide` (items of one size alike),
+/// as few as bring the others within it. (Listed, an item costs an entry per cell under
+/// it, once; wide, a visit by every query. Dense results have small cells: edges of an
+/// overlay of 2 × 10⁴ random squares spanned up to 399 cells, 6 per item on average,
+/// and with every item over 64 cells wide, 26 706 of them were met by each of 1.6 M
+/// queries.)
 const ENTRIES_PER_ITEM: usize = 16;
 
 /// A query over more cells than the items plus this many visits every item instead.
 const ALL_ITEMS_BEYOND: usize = 64;
 
-/// The most cells an item may be listed in when items are over `cells[k]` cells each, in
-/// all more than `budget` entries: the largest count such that the items over at most
-/// that many cells fit in the budget.
+/// The most cells an item is listed in, when the items are over `cells[k]` cells each:
+/// at least [`ALWAYS_LISTED_CELLS`], and beyond it the largest count such that all items
+/// over at most that many cells make at most `budget` entries (`usize::MAX` when all of
+/// them do).
 fn most_cells_listed(mut cells: Vec<usize>, budget: usize) -> usize {
+    if cells.iter().sum::<usize>() <= budget {
+        return usize::MAX;
+    }
     cells.sort_unstable();
-    let sorted = cells;
-    let (mut most, mut total) = (0, 0);
-    for run in sorted.chunk_by(|a, b| a == b) {
+    let (mut most, mut total) = (ALWAYS_LISTED_CELLS, 0);
+    for run in cells.chunk_by(|a, b| a == b) {
         total += run[0] * run.len();
-        if total > budget {
-            break;
+        if run[0] > ALWAYS_LISTED_CELLS {
+            if total > budget {
+                break;
+            }
+            most = run[0];
         }
-        most = run[0];
     }
     most
 }
@@ -344,25 +354,34 @@ mod tests {
     }
 
     /// Boxes several cells across (dense short edges: cells are small) are listed in
-    /// their cells, not met by every query, while the entries stay within the budget;
-    /// past it the boxes over the most cells are wide, as few as needed. Either way
-    /// each query is visited by every box that overlaps it, exactly once.
+    /// their cells, not met by every query: those over at most 64 cells always (equal
+    /// boxes of 25 cells each, 27 entries per item: all listed), larger ones while the
+    /// entries stay within the budget; past it the largest are wide, as few as needed.
+    /// Either way each query is visited by every box that overlaps it, exactly once.
     #[test]
     fn boxes_over_many_cells_are_wide_only_past_the_budget() {
         let mut below = crate::testing::below(0x9_12d6);
-        // (Per round: the boxes' side, and how many long diagonal boxes among 2 000.)
-        for (round, (side, long)) in [(40, 0), (120, 0), (40, 50), (40, 400), (400, 0)]
-            .into_iter()
-            .enumerate()
-        {
+        let budget = ENTRIES_PER_ITEM * 2000;
+        // Per round: the boxes' side (`Some`: all alike), how many long diagonal boxes
+        // among the 2 000, and whether some must be wide.
+        let rounds = [
+            (None, 40, 0, false),
+            (None, 120, 0, false),
+            (None, 40, 50, false),
+            (None, 40, 400, true),
+            (None, 400, 0, false),
+            (Some(700.0), 0, 0, false),
+            (Some(1000.0), 0, 0, false),
+        ];
+        for (round, &(alike, side, long, some_wide)) in rounds.iter().enumerate() {
             let count = 2000;
             let boxes: Vec<Box2> = (0..count)
                 .map(|k| {
                     let (x, y) = (below(10_000) as f64, below(10_000) as f64);
-                    let s = if k < long {
-                        5000.0
-                    } else {
-                        (1 + below(side)) as f64
+                    let s = match alike {
+                        Some(s) => s,
+                        None if k < long => 5000.0,
+                        None => (1 + below(side)) as f64,
                     };
                     Box2 {
                         x0: x,
@@ -380,48 +399,27 @@ mod tests {
                     (x1 - x0 + 1) * (y1 - y0 + 1)
                 })
                 .collect();
-            let total: usize = sizes.iter().sum();
+            let is_wide = |k: usize| grid.wide.contains(&(k as u32));
+            // Items over at most 64 cells are listed, and the entries are within the
+            // budget unless those alone pass it.
+            let small: usize = sizes.iter().filter(|&&c| c <= ALWAYS_LISTED_CELLS).sum();
             let entries = grid.items.len();
+            assert!(entries <= budget.max(small), "round {round}: {entries}");
             assert!(
-                entries <= ENTRIES_PER_ITEM * count,
-                "round {round}: {entries}"
+                grid.wide
+                    .iter()
+                    .all(|&k| sizes[k as usize] > ALWAYS_LISTED_CELLS),
+                "round {round}"
             );
-            if total <= ENTRIES_PER_ITEM * count {
-                assert!(
-                    grid.wide.is_empty(),
-                    "round {round}: {} wide",
-                    grid.wide.len()
-                );
-            } else {
+            if let Some(smallest_wide) = grid.wide.iter().map(|&k| sizes[k as usize]).min() {
                 // The wide ones are the largest (items of one size alike), and listing
                 // those of the smallest wide size too would break the budget.
-                let listed_most = (0..count)
-                    .filter(|k| !grid.wide.contains(&(*k as u32)))
-                    .map(|k| sizes[k])
-                    .max()
-                    .unwrap_or(0);
-                let smallest_wide = grid.wide.iter().map(|&k| sizes[k as usize]).min();
-                let smallest_wide = smallest_wide.expect("some are wide");
-                assert!(smallest_wide > listed_most, "round {round}");
-                let alike = grid
-                    .wide
-                    .iter()
-                    .filter(|&&k| sizes[k as usize] == smallest_wide)
-                    .count();
-                assert!(
-                    entries + alike * smallest_wide > ENTRIES_PER_ITEM * count,
-                    "round {round}"
-                );
+                let listed_most = (0..count).filter(|&k| !is_wide(k)).map(|k| sizes[k]).max();
+                assert!(listed_most < Some(smallest_wide), "round {round}");
+                let alike = (0..count).filter(|&k| sizes[k] == smallest_wide).count();
+                assert!(entries + alike * smallest_wide > budget, "round {round}");
             }
-            // (Rounds 2 and 3: 50 boxes over more than 64 cells each are listed, 400 over
-            // half the extent are past the budget.)
-            let over_64 = sizes.iter().filter(|&&c| c > 64).count();
-            assert!(
-                (round != 2 || (over_64 >= 50 && grid.wide.is_empty()))
-                    && (round != 3 || !grid.wide.is_empty()),
-                "round {round}: {over_64} over 64 cells, {} wide",
-                grid.wide.len()
-            );
+            assert_eq!(!grid.wide.is_empty(), some_wide, "round {round}");
             let mut stamp = vec![usize::MAX; count];
             for (q, b) in boxes.iter().enumerate().step_by(5) {
                 let mut got = Vec::new();
@@ -439,8 +437,14 @@ mod tests {
 
     #[test]
     fn the_budget_lists_the_smallest_items() {
-        assert_eq!(most_cells_listed(vec![1, 1, 2, 9, 3], 7), 3);
-        assert_eq!(most_cells_listed(vec![5, 5, 1], 10), 1);
-        assert_eq!(most_cells_listed(vec![4, 4], 3), 0);
+        // Within the budget: all listed.
+        assert_eq!(most_cells_listed(vec![65, 65], 200), usize::MAX);
+        // Items over at most 64 cells are listed past the budget, larger ones not.
+        assert_eq!(most_cells_listed(vec![10; 100], 100), 64);
+        assert_eq!(most_cells_listed(vec![70, 5], 10), 64);
+        // Larger ones while they fit, items of one size alike.
+        assert_eq!(most_cells_listed(vec![70, 100, 70, 5], 150), 70);
+        assert_eq!(most_cells_listed(vec![70, 100, 70, 5], 144), 64);
+        assert_eq!(most_cells_listed(vec![70, 100, 70, 5], 245), usize::MAX);
     }
 }
