@@ -242,8 +242,9 @@ fn json_positions(out: &mut String, vs: impl Iterator<Item = Point2>) {
     out.push(']');
 }
 
-/// A ring closed and turned to the orientation RFC 7946 wants (`want`), unless its area is
-/// zero, in which case it is kept as given; reversed, the first vertex stays first.
+/// A ring (not empty) closed and turned to the orientation RFC 7946 wants (`want`),
+/// unless its area is zero, in which case it is kept as given; reversed, the first
+/// vertex stays first.
 fn oriented_closed(
     ring: &[Point2],
     want: Orientation,
