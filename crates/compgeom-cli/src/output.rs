@@ -1,5 +1,6 @@
 //! Writing results: to standard output, or atomically to a file (a temporary file beside
-//! the target, renamed into place, so a reader never sees a half-written file).
+//! the target, renamed into place, so a reader never sees a half-written file; devices
+//! and pipes are written to as they are).
 
 use crate::error::CliError;
 use std::io::Write as _;
@@ -27,11 +28,21 @@ pub fn write_stdout(text: &str) -> Result<(), CliError> {
 
 /// Write `bytes` to `path` through a temporary file in the same directory, then rename it
 /// over `path`. On any error the target is untouched and the temporary file is removed.
+/// A path that exists and is neither a regular file nor a directory (`/dev/null`, a named
+/// pipe, a terminal) is written to directly: renaming over it would replace the device
+/// or the pipe itself with a file.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     let name = path.display();
     let fail = |what: &str, e: &dyn std::fmt::Display| {
         CliError::failure(format!("cannot {what} {name}: {e}"))
     };
+    if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+        return std::fs::OpenOptions::new()
+            .write(true)
+            .open(path)
+            .and_then(|mut f| f.write_all(bytes).and_then(|()| f.flush()))
+            .map_err(|e| fail("write", &e));
+    }
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),

@@ -200,6 +200,41 @@ fn output_file_is_written_whole_without_leftovers() {
     }
 }
 
+/// `-o` naming a named pipe (or `/dev/null`, a device) writes into it: the output is not
+/// renamed over it, which replaced the pipe or device itself with a regular file (run as
+/// root, `-o /dev/null` did that to the machine's `/dev/null`).
+#[cfg(unix)]
+#[test]
+fn output_to_a_pipe_goes_into_the_pipe() {
+    use std::os::unix::fs::FileTypeExt as _;
+    let (dir, path) = input("points.csv", "0,0\n1,0\n0,1\n");
+    let fifo = dir.path().join("pipe");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    if !made.is_ok_and(|s| s.success()) {
+        eprintln!("skipped: mkfifo is not available");
+        return;
+    }
+    // The reader opens the pipe (blocking until the command opens it to write) and reads
+    // to the end.
+    let reading = fifo.clone();
+    let reader = std::thread::spawn(move || fs::read_to_string(reading).unwrap());
+    compgeom()
+        .arg("hull")
+        .arg(&path)
+        .arg("-o")
+        .arg(&fifo)
+        .timeout(std::time::Duration::from_secs(60))
+        .assert()
+        .success();
+    // Checked before joining: were the pipe replaced, the reader would wait forever.
+    let still_a_pipe = fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo();
+    assert!(still_a_pipe, "the pipe was replaced by a file");
+    let text = reader.join().unwrap();
+    let v: Value = serde_json::from_str(&text).expect("valid JSON through the pipe");
+    assert!(v.get("hull").is_some_and(Value::is_array));
+    assert_eq!(files_in(dir.path()), ["pipe", "points.csv"]);
+}
+
 #[test]
 fn dash_output_means_stdout() {
     compgeom()
