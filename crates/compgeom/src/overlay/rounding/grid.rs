@@ -281,6 +281,23 @@ impl Grid {
 mod tests {
     use super::*;
 
+    /// Each `step`-th box, as a query, is visited by exactly the boxes that overlap it
+    /// (brute force), each once.
+    fn assert_visits_every_overlapping_box(grid: &Grid, boxes: &[Box2], step: usize, round: usize) {
+        let mut stamp = vec![usize::MAX; boxes.len()];
+        for (q, b) in boxes.iter().enumerate().step_by(step) {
+            let mut got = Vec::new();
+            grid.visit(b, q, &mut stamp, |k| {
+                if boxes[k].overlaps(b) {
+                    got.push(k);
+                }
+            });
+            got.sort_unstable();
+            let want: Vec<usize> = (0..boxes.len()).filter(|&k| boxes[k].overlaps(b)).collect();
+            assert_eq!(got, want, "round {round}, query {q}");
+        }
+    }
+
     /// The grid keeps about two cells per item at every scale (coordinates near 1e-300,
     /// subnormal ones, near 1e300, from near −`f64::MAX` to near `f64::MAX`, extents
     /// flat in x or in y, all boxes on one point): never more than `4 · count + 3`
@@ -338,18 +355,7 @@ mod tests {
                 grid.nx,
                 grid.ny
             );
-            let mut stamp = vec![usize::MAX; count];
-            for (q, b) in boxes.iter().enumerate().step_by(7) {
-                let mut got = Vec::new();
-                grid.visit(b, q, &mut stamp, |k| {
-                    if boxes[k].overlaps(b) {
-                        got.push(k);
-                    }
-                });
-                got.sort_unstable();
-                let want: Vec<usize> = (0..count).filter(|&k| boxes[k].overlaps(b)).collect();
-                assert_eq!(got, want, "round {round}, query {q}");
-            }
+            assert_visits_every_overlapping_box(&grid, &boxes, 7, round);
         }
     }
 
@@ -420,18 +426,7 @@ mod tests {
                 assert!(entries + alike * smallest_wide > budget, "round {round}");
             }
             assert_eq!(!grid.wide.is_empty(), some_wide, "round {round}");
-            let mut stamp = vec![usize::MAX; count];
-            for (q, b) in boxes.iter().enumerate().step_by(5) {
-                let mut got = Vec::new();
-                grid.visit(b, q, &mut stamp, |k| {
-                    if boxes[k].overlaps(b) {
-                        got.push(k);
-                    }
-                });
-                got.sort_unstable();
-                let want: Vec<usize> = (0..count).filter(|&k| boxes[k].overlaps(b)).collect();
-                assert_eq!(got, want, "round {round}, query {q}");
-            }
+            assert_visits_every_overlapping_box(&grid, &boxes, 5, round);
         }
     }
 
