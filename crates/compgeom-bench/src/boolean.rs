@@ -1394,7 +1394,8 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
 /// `BOOLEAN_INPUT=star|squares|turned|water|jts|ngons|dissolve`, `BOOLEAN_REPS` calls except
 /// for the squares): run one contender on the star union, the squares input (`turned`:
-/// turned by random angles), the water
+/// turned by random angles; `BOOLEAN_SPREAD=1`: over a larger square, at the density of
+/// 10⁴ in the unit square; the call's time on stderr), the water
 /// map union, the unions of the 52 JTS pairs (the stars, the water and the pairs also
 /// another `BOOLEAN_OP`), the same
 /// operation on 52 pairs of regular `BOOLEAN_K`-gons (default 4) or the GEOS-837
@@ -1420,6 +1421,8 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         let ps = io_paths(&sq);
         let empty: Vec<Vec<[f64; 2]>> = Vec::new();
         let gs: Vec<geo::Polygon<f64>> = geo_poly(&sq).0;
+        // (The call's own time on stderr: the process's includes making the input.)
+        let _timer = CallTimer(std::time::Instant::now());
         match who {
             "ours" => drop(black_box(union_all(&sq).map_err(|e| e.to_string())?)),
             "io" => drop(black_box(ps.overlay(
@@ -1612,14 +1615,34 @@ fn per_pair(
     }
 }
 
-/// `count` squares with random corners in the unit square and sides 0.005..0.025 (so
-/// they overlap in chains), axis-parallel or each `turned` by a random angle below 90°
+/// Prints the time since it was made when dropped.
+struct CallTimer(std::time::Instant);
+
+impl Drop for CallTimer {
+    fn drop(&mut self) {
+        eprintln!("call {:.3} s", self.0.elapsed().as_secs_f64());
+    }
+}
+
+/// `count` squares with random corners in the unit square (see `BOOLEAN_SPREAD` below)
+/// and sides 0.005..0.025 (so they overlap in chains), axis-parallel or each `turned` by a random angle below 90°
 /// about that corner.
 fn random_squares(rng: &mut Rng, count: usize, turned: bool) -> MultiPolygon {
+    // `BOOLEAN_SPREAD=1`: over a square of side sqrt(count / 10⁴), at the density of
+    // 10⁴ squares in the unit square (how cost grows with n, not with the density).
+    let side = if std::env::var("BOOLEAN_SPREAD").is_ok_and(|s| s == "1") {
+        (count as f64 / 1e4).sqrt()
+    } else {
+        1.0
+    };
     MultiPolygon(
         (0..count)
             .map(|_| {
-                let (x, y, w) = (rng.unit(), rng.unit(), 0.005 + 0.02 * rng.unit());
+                let (x, y, w) = (
+                    side * rng.unit(),
+                    side * rng.unit(),
+                    0.005 + 0.02 * rng.unit(),
+                );
                 // The sides' direction: (w, 0), or turned by a random angle.
                 let (dx, dy) = if turned {
                     let a = std::f64::consts::FRAC_PI_2 * rng.unit();

@@ -51,6 +51,7 @@
 //!
 //! Cost: O((n + k) log n) for n input edges and k intersection points, plus the
 //! hole-linking sweep (see [`crate::dcel`]).
+use super::locality;
 #[cfg(test)]
 use super::result::faces_to_polygons;
 use crate::dcel::{polygon_segments, push_ring_segments, Carrier, Dcel, Flat};
@@ -150,9 +151,20 @@ pub(super) fn oriented_segments(
 }
 
 /// Append the segments of `p`'s rings; for [`FillRule::Positive`] each exterior turned
-/// counter-clockwise and each hole clockwise first, by the exact sign of its area.
+/// counter-clockwise and each hole clockwise first, by the exact sign of its area. With
+/// many polygons, those of each polygon together, the polygons in locality order
+/// ([`locality`]; errors still name the first bad polygon in the given order).
 fn push_oriented(p: &MultiPolygon, rule: FillRule, segs: &mut Vec<Segment2>) -> Result<()> {
+    let from = segs.len();
+    let reorder = p.0.len() >= locality::REORDER_FROM && {
+        let points: usize = p.0.iter().flat_map(|q| q.rings()).map(Vec::len).sum();
+        points >= locality::REORDER_FROM_SEGMENTS
+    };
+    let mut starts = Vec::with_capacity(if reorder { p.0.len() + 1 } else { 0 });
     for (pi, poly) in p.0.iter().enumerate() {
+        if reorder {
+            starts.push(segs.len() - from);
+        }
         for (ri, ring) in poly.rings().enumerate() {
             let reversed = rule == FillRule::Positive && {
                 let o = ring_orientation(ring);
@@ -161,6 +173,10 @@ fn push_oriented(p: &MultiPolygon, rule: FillRule, segs: &mut Vec<Segment2>) -> 
             };
             push_ring_segments(pi, ri, ring, reversed, segs)?;
         }
+    }
+    if reorder {
+        starts.push(segs.len() - from);
+        locality::reorder_blocks(&mut segs[from..], &starts);
     }
     Ok(())
 }

@@ -73,6 +73,7 @@
 //! [`faces_to_polygons`] on a subdivision of your own rounds without a check.
 //!
 mod boolean;
+mod locality;
 mod result;
 mod rounding;
 mod trace;
