@@ -289,6 +289,41 @@ fn sweep_first(a: Point2, b: Point2) -> bool {
     a.y > b.y || (a.y == b.y && a.x < b.x)
 }
 
+/// Sorted keys with every [`SAMPLE_EVERY`]th of them beside, for binary searches that
+/// touch few cache lines: one in the sample (small enough to stay in the caches), one
+/// in a block of keys. The axis-parallel sweep searches the horizontal sides' keys for
+/// each vertical side, at random; on 4 × 10⁶ sides (`union_all` of 10⁶ squares) the
+/// plain searches' cache misses were a seventh of the call.
+struct SampledKeys<'a> {
+    keys: &'a [u64],
+    sample: Vec<u64>,
+}
+
+/// See [`SampledKeys`].
+const SAMPLE_EVERY: usize = 64;
+
+impl<'a> SampledKeys<'a> {
+    fn new(keys: &'a [u64]) -> Self {
+        SampledKeys {
+            keys,
+            sample: keys.iter().step_by(SAMPLE_EVERY).copied().collect(),
+        }
+    }
+
+    /// `keys.partition_point(below)`, for `below` true up to some key and false after.
+    fn partition_point(&self, below: impl Fn(u64) -> bool) -> usize {
+        // The blocks whose first key is below: the point is past the first key of the
+        // last of them, and not past the first key of the next.
+        let blocks = self.sample.partition_point(|&k| below(k));
+        if blocks == 0 {
+            return 0;
+        }
+        let from = (blocks - 1) * SAMPLE_EVERY;
+        let to = (blocks * SAMPLE_EVERY).min(self.keys.len());
+        from + self.keys[from..to].partition_point(|&k| below(k))
+    }
+}
+
 /// A set of numbers below a bound, as bits, with one summary bit per word of bits
 /// (set iff the word is not zero), so that listing the members in a range skips empty
 /// stretches 4096 numbers at a time: O(range / 4096 + words touched + members).
@@ -806,6 +841,7 @@ impl Flat {
         let contacts: Vec<(u32, u32)> = {
             let horizontals = &segs[..first_vertical_seg];
             let hy: Vec<u64> = horizontals.iter().map(|s| okey(s.across)).collect();
+            let by_y = SampledKeys::new(&hy);
             let mut enter: Vec<(u64, u32)> = Vec::with_capacity(horizontals.len());
             let mut leave: Vec<(u64, u32)> = Vec::with_capacity(horizontals.len());
             for (h, s) in horizontals.iter().enumerate() {
@@ -828,8 +864,10 @@ impl Flat {
                     li += 1;
                 }
                 let (lo, hi) = (okey(s.lo), okey(s.hi));
-                let a = hy.partition_point(|&y| y < lo);
-                let b = a + hy[a..].partition_point(|&y| y <= hi);
+                let (a, b) = (
+                    by_y.partition_point(|y| y < lo),
+                    by_y.partition_point(|y| y <= hi),
+                );
                 active.for_each_in(a, b, |h| contacts.push((h as u32, v as u32)));
             }
             contacts
@@ -1077,6 +1115,35 @@ impl ExactPointKey {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn sampled_keys_search_as_the_slice_does() {
+        // Sizes around the block size, keys with long runs of duplicates, every bound
+        // from below the first key to above the last.
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+            seed >> 33
+        };
+        for n in [0, 1, 2, 63, 64, 65, 127, 128, 129, 200, 640, 1000] {
+            for spread in [3, 50, 1 << 20] {
+                let mut keys: Vec<u64> = (0..n).map(|_| next() % spread).collect();
+                keys.sort_unstable();
+                let sampled = SampledKeys::new(&keys);
+                for bound in 0..=spread.min(60) + 1 {
+                    let bound = if spread > 60 { bound * (spread / 60) } else { bound };
+                    for strict in [true, false] {
+                        let below = |k: u64| if strict { k < bound } else { k <= bound };
+                        assert_eq!(
+                            sampled.partition_point(below),
+                            keys.partition_point(|&k| below(k)),
+                            "n {n}, spread {spread}, bound {bound}, strict {strict}"
+                        );
+                    }
+                }
+            }
+        }
+    }
     use crate::kernel::{on_segment, segment_intersection, SegmentIntersection};
     use proptest::prelude::*;
 
