@@ -888,6 +888,29 @@
 //! squares 0.50 / 0.50 (0.61 / 0.77); water 0.71–1.01 / 0.77–0.96; JTS intersection
 //! 1.03 / 1.02 (1.05 / 1.04), union 1.07 / 1.08 (1.08 / 1.05), difference 1.06 / 1.00
 //! (1.05 / 1.02), xor 1.43 / 1.35 (1.46 / 1.39); dissolve 1.22 / 1.13 (1.20 / 1.08).
+//!
+//! Session 51: how cost grows with n at constant density (`BOOLEAN_SPREAD=1`: the
+//! squares over a square of side sqrt(n / 10⁴); one call, its own time on stderr, s,
+//! compgeom / i_overlay / geo). Turned squares at the session's start: 10⁵ 0.95 / 1.39
+//! / 1.32 (process times), 10⁶ 28.0 / 15.6 / 16.7: ours grew 22× for 10× n, the peers
+//! 11×. A profile: a third of the time the kernel clearing freshly faulted pages, a
+//! quarter the tracing's walks around faces (`next`, `cyc`: a cache and TLB miss per
+//! step), because the arrangement numbers edges in the order of the segments and the
+//! squares came in random order; the same squares listed in Z-order took 13.4 s. The
+//! boolean operations now put the polygons of a large input (64 polygons and 2¹⁴
+//! points or more) in Z-order themselves (`overlay::locality`): 10⁶ turned squares
+//! 14.6–17.9 s (noisy: page faults cost 4–8 s of system time from run to run), the
+//! 10⁴ turned squares row 61.6 → 51.5 ms. That reorder made the GEOS-837 dissolve 66%
+//! dearer through a bad sample (its rings are hashed into vertices only when a sample
+//! of 32 segments shows short rings; 2 of 32 were ring starts in the new order against
+//! 18% of all segments): ring starts are now counted in full (JTS rows and dissolve
+//! within ±0.4% instructions), and inputs below 2¹⁴ points keep their order. Axis-
+//! parallel squares, 10⁵: 0.60 / 0.50 / 0.49; 10⁶: 15.4–17.9 / 5.7–6.0 (user time
+//! 10.1 s, peak 3.42 GB against i_overlay's 2.32 GB): a seventh of the samples were
+//! the sweep's binary searches over 2 × 10⁶ horizontal keys (cache misses); searched
+//! through a sample of every 64th key now, 12.7 s (user 8.3 s). Still 2.2× i_overlay
+//! there, and 1.2× at 10⁵: memory (page faults) and the tracing's walks, which follow
+//! the lines' order (horizontals by y, verticals by x) rather than the plane's.
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};

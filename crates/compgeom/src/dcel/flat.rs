@@ -1131,7 +1131,11 @@ mod tests {
                 keys.sort_unstable();
                 let sampled = SampledKeys::new(&keys);
                 for bound in 0..=spread.min(60) + 1 {
-                    let bound = if spread > 60 { bound * (spread / 60) } else { bound };
+                    let bound = if spread > 60 {
+                        bound * (spread / 60)
+                    } else {
+                        bound
+                    };
                     for strict in [true, false] {
                         let below = |k: u64| if strict { k < bound } else { k <= bound };
                         assert_eq!(
