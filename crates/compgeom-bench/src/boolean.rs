@@ -1418,7 +1418,7 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 /// `BOOLEAN_INPUT=star|squares|turned|water|jts|ngons|dissolve`, `BOOLEAN_REPS` calls except
 /// for the squares): run one contender on the star union, the squares input (`turned`:
 /// turned by random angles; `BOOLEAN_SPREAD=1`: over a larger square, at the density of
-/// 10⁴ in the unit square; the call's time on stderr), the water
+/// 10⁴ in the unit square; either way the call's own time on stderr), the water
 /// map union, the unions of the 52 JTS pairs (the stars, the water and the pairs also
 /// another `BOOLEAN_OP`), the same
 /// operation on 52 pairs of regular `BOOLEAN_K`-gons (default 4) or the GEOS-837

@@ -748,7 +748,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(8))]
 
     /// Large inputs are reordered in space before the arrangement is built; the output
-    /// is right (valid; membership against exact windings) and the same, bit for bit, in
+    /// is right (valid; membership against exact windings) and the same (`==`) in
     /// whatever order the polygons come.
     #[test]
     fn many_polygons_in_any_order_give_the_same_result(

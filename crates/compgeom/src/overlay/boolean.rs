@@ -135,7 +135,8 @@ pub struct BooleanEdge {
 
 /// The segments of the polygon sets `a` and `b`, each oriented for the fill rule, in one
 /// vector, and the number from `a`: [`crate::dcel::polygon_segments`] of each (of each with its rings
-/// turned, for [`FillRule::Positive`]), without copying rings or listing owners.
+/// turned, for [`FillRule::Positive`]), without copying rings or listing owners; the
+/// polygons of a large set in Z-order (see [`push_oriented`]).
 pub(super) fn oriented_segments(
     a: &MultiPolygon,
     b: &MultiPolygon,
@@ -152,13 +153,14 @@ pub(super) fn oriented_segments(
 
 /// Append the segments of `p`'s rings; for [`FillRule::Positive`] each exterior turned
 /// counter-clockwise and each hole clockwise first, by the exact sign of its area. With
-/// many polygons, those of each polygon together, the polygons in locality order
-/// ([`locality`]; errors still name the first bad polygon in the given order).
+/// [`locality::REORDER_FROM`] polygons and [`locality::REORDER_FROM_POINTS`] points or
+/// more, the polygons in Z-order, each one's segments together ([`locality`]; errors
+/// still name the first bad polygon in the given order: they are found while pushing).
 fn push_oriented(p: &MultiPolygon, rule: FillRule, segs: &mut Vec<Segment2>) -> Result<()> {
     let from = segs.len();
     let reorder = p.0.len() >= locality::REORDER_FROM && {
         let points: usize = p.0.iter().flat_map(|q| q.rings()).map(Vec::len).sum();
-        points >= locality::REORDER_FROM_SEGMENTS
+        points >= locality::REORDER_FROM_POINTS
     };
     let mut starts = Vec::with_capacity(if reorder { p.0.len() + 1 } else { 0 });
     for (pi, poly) in p.0.iter().enumerate() {
@@ -431,6 +433,72 @@ mod tests {
         let mut segs = one(a)?;
         segs.extend(one(b)?);
         Ok(segs)
+    }
+
+    /// Large inputs' polygons go in Z-order before the arrangement is built
+    /// ([`locality`]): every operation gives the same result as from the segments in the
+    /// given order, and as from each input's segments in reverse order.
+    #[test]
+    fn reordering_large_inputs_changes_no_result() {
+        // 80 quadrilaterals per input with float corners within one of random centres
+        // in a square of side 8 (they overlap and cross), each side cut into 64 pieces
+        // (2¹⁴ points or more).
+        let mut seed = 11u64;
+        let mut unit = || {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut set = || {
+            let polygons = (0..80)
+                .map(|_| {
+                    let (cx, cy) = (8.0 * unit(), 8.0 * unit());
+                    let corners: Vec<Point2> = (0..4)
+                        .map(|_| Point2::new(cx + 2.0 * unit() - 1.0, cy + 2.0 * unit() - 1.0))
+                        .collect();
+                    let ring = (0..4)
+                        .flat_map(|i| {
+                            let (a, b) = (corners[i], corners[(i + 1) % 4]);
+                            (0..64).map(move |k| {
+                                let t = f64::from(k) / 64.0;
+                                Point2::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y))
+                            })
+                        })
+                        .collect();
+                    crate::Polygon::new(ring, vec![])
+                })
+                .collect();
+            MultiPolygon(polygons)
+        };
+        let (a, b) = (set(), set());
+        for rule in [FillRule::EvenOdd, FillRule::Positive] {
+            let (segs, na) = oriented_segments(&a, &b, rule).unwrap();
+            let given = by_copies(&a, &b, rule).unwrap();
+            assert_eq!(
+                na,
+                by_copies(&a, &MultiPolygon::default(), rule).unwrap().len()
+            );
+            assert_ne!(&segs[..], &given[..], "reordered");
+            let mut reversed = given.clone();
+            reversed[..na].reverse();
+            reversed[na..].reverse();
+            for op in [
+                BooleanOp::Intersection,
+                BooleanOp::Union,
+                BooleanOp::Difference,
+                BooleanOp::Xor,
+            ] {
+                let result = |segs: &[Segment2]| {
+                    let inside = |wa, wb| op.apply(rule.inside(wa), rule.inside(wb));
+                    super::super::trace::traced_boolean(segs, na, inside, false).unwrap()
+                };
+                let r = result(&segs);
+                assert!(!r.0.is_empty());
+                assert_eq!(r, result(&given), "{op:?} {rule:?}: given order");
+                assert_eq!(r, result(&reversed), "{op:?} {rule:?}: reversed");
+            }
+        }
     }
 
     /// Rings on a coarse grid (repeated and collinear points, closed or open, too few
