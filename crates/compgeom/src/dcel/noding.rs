@@ -412,7 +412,7 @@ impl Found {
     /// are sorted), which keeps the parallel scan deterministic. Each record is copied
     /// once, into arrays of the total size (merged two by two, the larger part's records
     /// were copied again at every level, into arrays grown by doubling: at 10⁶ turned
-    /// squares an eighth of the call's page faults).
+    /// squares 2.00 M → 1.91 M page faults for the whole call).
     fn concat(mut parts: Vec<Found>) -> Found {
         if parts.len() <= 1 {
             return parts.pop().unwrap_or_default();
