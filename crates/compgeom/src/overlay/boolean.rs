@@ -144,24 +144,27 @@ pub(super) fn oriented_segments(
 ) -> Result<(Scratch<Segment2>, usize)> {
     let points =
         |p: &MultiPolygon| -> usize { p.0.iter().flat_map(|q| q.rings()).map(Vec::len).sum() };
-    let mut segs = scratch::with_capacity(points(a) + points(b));
-    push_oriented(a, rule, &mut segs)?;
+    let (points_a, points_b) = (points(a), points(b));
+    let mut segs = scratch::with_capacity(points_a + points_b);
+    push_oriented(a, points_a, rule, &mut segs)?;
     let na = segs.len();
-    push_oriented(b, rule, &mut segs)?;
+    push_oriented(b, points_b, rule, &mut segs)?;
     Ok((segs, na))
 }
 
-/// Append the segments of `p`'s rings; for [`FillRule::Positive`] each exterior turned
+/// Append the segments of `p`'s rings (`points` points in all); for [`FillRule::Positive`] each exterior turned
 /// counter-clockwise and each hole clockwise first, by the exact sign of its area. With
 /// [`locality::REORDER_FROM`] polygons and [`locality::REORDER_FROM_POINTS`] points or
 /// more, the polygons in Z-order, each one's segments together ([`locality`]; errors
 /// still name the first bad polygon in the given order: they are found while pushing).
-fn push_oriented(p: &MultiPolygon, rule: FillRule, segs: &mut Vec<Segment2>) -> Result<()> {
+fn push_oriented(
+    p: &MultiPolygon,
+    points: usize,
+    rule: FillRule,
+    segs: &mut Vec<Segment2>,
+) -> Result<()> {
     let from = segs.len();
-    let reorder = p.0.len() >= locality::REORDER_FROM && {
-        let points: usize = p.0.iter().flat_map(|q| q.rings()).map(Vec::len).sum();
-        points >= locality::REORDER_FROM_POINTS
-    };
+    let reorder = p.0.len() >= locality::REORDER_FROM && points >= locality::REORDER_FROM_POINTS;
     let mut starts = Vec::with_capacity(if reorder { p.0.len() + 1 } else { 0 });
     for (pi, poly) in p.0.iter().enumerate() {
         if reorder {
