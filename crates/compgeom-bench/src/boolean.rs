@@ -1655,7 +1655,8 @@ impl Drop for CallTimer {
 }
 
 /// `count` squares with random corners in the unit square (see `BOOLEAN_SPREAD` below)
-/// and sides 0.005..0.025 (so they overlap in chains), axis-parallel or each `turned` by a random angle below 90°
+/// and sides 0.005..0.025 (so they overlap in chains), axis-parallel or each `turned`
+/// by a random angle below 90°
 /// about that corner.
 fn random_squares(rng: &mut Rng, count: usize, turned: bool) -> MultiPolygon {
     // `BOOLEAN_SPREAD=1`: over a square of side sqrt(count / 10⁴), at the density of

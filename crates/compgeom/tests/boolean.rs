@@ -154,15 +154,27 @@ fn check(a: &MultiPolygon, b: &MultiPolygon, samples: &[Point2]) {
             (got - want).abs() <= 1e-9 * (1.0 + want.abs()),
             "{op:?}: area {got} vs exact {want}"
         );
-        for &p in samples {
-            if on_boundary(a, p) || on_boundary(b, p) {
-                continue;
-            }
-            let expect = op.apply(in_even_odd(a, p), in_even_odd(b, p));
-            let n = containing(&out, p);
-            assert!(n <= 1, "{op:?}: {p:?} in {n} output polygons");
-            assert_eq!(n == 1, expect, "{op:?}: membership of {p:?}");
+        assert_membership(a, b, op, &out, samples);
+    }
+}
+
+/// Each sample point off the rings of `a` and `b` is in one polygon of `out` when the
+/// exact even-odd windings of `a` and `b` put it in `op(a, b)`, else in none.
+fn assert_membership(
+    a: &MultiPolygon,
+    b: &MultiPolygon,
+    op: BooleanOp,
+    out: &MultiPolygon,
+    samples: &[Point2],
+) {
+    for &p in samples {
+        if on_boundary(a, p) || on_boundary(b, p) {
+            continue;
         }
+        let expect = op.apply(in_even_odd(a, p), in_even_odd(b, p));
+        let n = containing(out, p);
+        assert!(n <= 1, "{op:?}: {p:?} in {n} output polygons");
+        assert_eq!(n == 1, expect, "{op:?}: membership of {p:?}");
     }
 }
 
@@ -764,13 +776,7 @@ proptest! {
             // Valid, and each sample point (off the inputs' rings) in it as the exact
             // even-odd windings of the inputs say.
             assert_valid(&r);
-            for &p in &samples {
-                if !on_boundary(&a, p) && !on_boundary(&b, p) {
-                    let expect = op.apply(in_even_odd(&a, p), in_even_odd(&b, p));
-                    let n = containing(&r, p);
-                    prop_assert!(n <= 1 && (n == 1) == expect, "{:?}: {:?} in {}", op, p, n);
-                }
-            }
+            assert_membership(&a, &b, op, &r, &samples);
             prop_assert_eq!(&r, &boolean(&pa, &pb, op).unwrap(), "{:?}", op);
         }
         let all = MultiPolygon(a.0.iter().chain(&b.0).cloned().collect());
