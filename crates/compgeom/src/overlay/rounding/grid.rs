@@ -1,13 +1,14 @@
-//! A uniform grid over boxes, for the rounding check's search for near pairs.
+//! A uniform grid over boxes and long segments, for the rounding check's search for
+//! near pairs.
 
 use super::Box2;
 use crate::kernel::steps::Steps;
+use crate::kernel::Point2;
 
-/// A uniform grid over the boxes of the moved items (about two cells per item), each
-/// item listed in the cells its box overlaps, except items over more than
-/// [`ALWAYS_LISTED_CELLS`] cells where those would make more than [`ENTRIES_PER_ITEM`]
-/// entries per item: then the largest of them are listed once, in `wide`, and met by
-/// every query.
+/// A uniform grid over the moved items (about two cells per item), each listed in the
+/// cells its footprint overlaps: a box, or for a [`Line`] across many cells the cells
+/// along it (its box would be most of the grid for a long diagonal edge: listed in all
+/// of it, or met by every query, the search was quadratic on many long edges).
 pub(super) struct Grid {
     xs: Steps,
     ys: Steps,
@@ -19,8 +20,16 @@ pub(super) struct Grid {
     extent: Box2,
     starts: Vec<u32>,
     items: Vec<u32>,
-    wide: Vec<u32>,
     count: usize,
+}
+
+/// A segment widened by `pad` per axis (the points within `pad.0` of it in x and
+/// `pad.1` in y): the footprint of an item whose box is `Box2::around(a, b, pad)`.
+#[derive(Clone, Copy)]
+pub(super) struct Line {
+    pub(super) a: Point2,
+    pub(super) b: Point2,
+    pub(super) pad: (f64, f64),
 }
 
 /// Columns and rows for `count` items over an extent whose width is `ratio` times its
@@ -62,45 +71,37 @@ fn prescale(lo: f64, hi: f64) -> f64 {
     }
 }
 
-/// An item over at most this many cells is always listed in them.
-const ALWAYS_LISTED_CELLS: usize = 64;
+/// A segment whose box spans more than this many cells along both axes is listed (and
+/// looked up) along its length, not by its box.
+const LINE_FROM_CELLS: usize = 2;
 
-/// Items over more cells are listed too while the entries stay within this many per
-/// item on average; past it, the largest of them are `wide` (items of one size alike),
-/// as few as bring the others within it. (Listed, an item costs an entry per cell under
-/// it, once; wide, a visit by every query. Dense results have small cells: edges of an
-/// overlay of 2 × 10⁴ random squares spanned up to 399 cells, 6 per item on average,
-/// and with every item over 64 cells wide, 26 706 of them were met by each of 1.6 M
-/// queries.)
-const ENTRIES_PER_ITEM: usize = 16;
+/// At most this many entries per item (and [`MOST_ENTRIES_BEYOND`]): where the
+/// footprints cover more cells (many long edges, each across the grid), the grid is
+/// made coarser, so that the memory stays linear; queries then meet more items per
+/// cell, but no item is met by every query.
+const MOST_ENTRIES_PER_ITEM: usize = 64;
+const MOST_ENTRIES_BEYOND: usize = 1 << 24;
+
+/// The relative error bound of the points [`Grid::line_ranges`] computes along a
+/// segment (a few float gaps; 2⁻⁴⁸), and its absolute term (for subnormal coordinates).
+const REL_ALONG: (f64, f64) = (1.0 / (1u64 << 48) as f64, f64::MIN_POSITIVE);
 
 /// A query over more cells than the items plus this many visits every item instead.
 const ALL_ITEMS_BEYOND: usize = 64;
 
-/// The most cells an item is listed in, when the items are over `cells[k]` cells each:
-/// at least [`ALWAYS_LISTED_CELLS`], and beyond it the largest count such that all items
-/// over at most that many cells make at most `budget` entries (`usize::MAX` when all of
-/// them do).
-fn most_cells_listed(mut cells: Vec<usize>, budget: usize) -> usize {
-    if cells.iter().sum::<usize>() <= budget {
-        return usize::MAX;
-    }
-    cells.sort_unstable();
-    let (mut most, mut total) = (ALWAYS_LISTED_CELLS, 0);
-    for run in cells.chunk_by(|a, b| a == b) {
-        total += run[0] * run.len();
-        if run[0] > ALWAYS_LISTED_CELLS {
-            if total > budget {
-                break;
-            }
-            most = run[0];
-        }
-    }
-    most
-}
-
 impl Grid {
-    pub(super) fn new(boxes: &[Box2]) -> Grid {
+    /// The grid of the items with boxes `boxes`, the first `lines.len()` of them
+    /// segments (`boxes[k]` holds `Box2::around(lines[k].a, lines[k].b, lines[k].pad)`).
+    pub(super) fn new(boxes: &[Box2], lines: &[Line]) -> Grid {
+        Grid::at_most(
+            boxes,
+            lines,
+            MOST_ENTRIES_PER_ITEM * boxes.len() + MOST_ENTRIES_BEYOND,
+        )
+    }
+
+    /// [`Grid::new`] with at most `most` entries (unless in one cell).
+    fn at_most(boxes: &[Box2], lines: &[Line], most: usize) -> Grid {
         let mut extent = Box2 {
             x0: f64::INFINITY,
             x1: f64::NEG_INFINITY,
@@ -138,7 +139,7 @@ impl Grid {
         let (x0, y0) = (ex0 * sx, ey0 * sy);
         let (w, h) = (ex1 * sx - x0, ey1 * sy - y0);
         // (The ratio of the true sides, w / sx over h / sy.)
-        let (nx, ny) = cells_for(w / h * (sy / sx), count);
+        let (mut nx, mut ny) = cells_for(w / h * (sy / sx), count);
         // (A zero side gives steps that put everything in one: still monotone, so still
         // right, and the one cell that side needs.)
         let steps = |lo: f64, len: f64, n: usize| {
@@ -146,21 +147,28 @@ impl Grid {
             let per_unit = if per_unit.is_finite() { per_unit } else { 0.0 };
             Steps::per_unit(lo, per_unit, n as u32)
         };
-        let mut grid = Grid {
-            xs: steps(x0, w, nx),
-            ys: steps(y0, h, ny),
-            sx,
-            sy,
-            nx,
-            ny,
-            extent,
-            starts: Vec::new(),
-            items: Vec::new(),
-            wide: Vec::new(),
-            count,
-        };
-        grid.fill(boxes);
-        grid
+        loop {
+            let mut grid = Grid {
+                xs: steps(x0, w, nx),
+                ys: steps(y0, h, ny),
+                sx,
+                sy,
+                nx,
+                ny,
+                extent,
+                starts: Vec::new(),
+                items: Vec::new(),
+                count,
+            };
+            // (One cell holds each item once, whatever the bound.)
+            let most = if nx * ny == 1 { usize::MAX } else { most };
+            if grid.fill(boxes, lines, most) {
+                return grid;
+            }
+            // Too many entries: half as many cells per axis, a quarter in all (long
+            // footprints then cover about half as many).
+            (nx, ny) = (nx.div_ceil(2), ny.div_ceil(2));
+        }
     }
 
     /// The cell range of a box, clamped to the grid (monotone in the box's bounds, so
@@ -175,66 +183,146 @@ impl Grid {
         )
     }
 
-    fn fill(&mut self, boxes: &[Box2]) {
+    /// Whether the segment `a b` widened by `pad` is listed or looked up along its
+    /// length ([`Grid::line_ranges`] cuts it into pieces).
+    pub(super) fn is_long(&self, a: Point2, b: Point2, pad: (f64, f64)) -> bool {
+        let (x0, x1, y0, y1) = self.range(&Box2::around(a, b, pad));
+        (x1 - x0).min(y1 - y0) >= LINE_FROM_CELLS
+    }
+
+    /// Calls `f` with cell ranges (as [`Grid::range`] gives them) that together hold
+    /// every cell the segment `a b` widened by `pad` meets: its box's for a short one,
+    /// else those of the boxes of pieces of it, one or two cells long each.
+    ///
+    /// The pieces end at the points computed at `k / m` of the way (`a` and `b` exactly
+    /// at the ends), within [`REL_ALONG`] of the exact ones per axis; so each exact piece
+    /// lies in the box of the computed ends widened by that, and the widened segment in
+    /// the union of those boxes widened by `pad` too.
+    fn line_ranges(
+        &self,
+        a: Point2,
+        b: Point2,
+        pad: (f64, f64),
+        mut f: impl FnMut((usize, usize, usize, usize)),
+    ) {
+        let whole = self.range(&Box2::around(a, b, pad));
+        let (x0, x1, y0, y1) = whole;
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        if (x1 - x0).min(y1 - y0) < LINE_FROM_CELLS || !(dx.is_finite() && dy.is_finite()) {
+            f(whole);
+            return;
+        }
+        let m = (x1 - x0).max(y1 - y0) + 1;
+        let (rel, abs) = REL_ALONG;
+        let pad = (
+            pad.0 + (a.x.abs() + b.x.abs()) * rel + abs,
+            pad.1 + (a.y.abs() + b.y.abs()) * rel + abs,
+        );
+        let mut p = a;
+        for k in 1..=m {
+            let q = if k == m {
+                b
+            } else {
+                let t = k as f64 / m as f64;
+                Point2::new(a.x + dx * t, a.y + dy * t)
+            };
+            f(self.range(&Box2::around(p, q, pad)));
+            p = q;
+        }
+    }
+
+    /// Calls `f(cell)` once for each cell of item `item`'s footprint; `last[cell]` marks
+    /// the item last listed there (items come in increasing order).
+    fn cells_of(
+        &self,
+        item: usize,
+        b: &Box2,
+        lines: &[Line],
+        last: &mut [u32],
+        mut f: impl FnMut(usize),
+    ) {
         let nx = self.nx;
-        let mut starts = vec![0u32; nx * self.ny + 1];
-        // Each box's cells (half-open), found once for both passes (`None`: wide).
-        let mut total = 0;
-        let mut spans: Vec<Option<[u32; 4]>> = boxes
-            .iter()
-            .map(|b| {
-                let (x0, x1, y0, y1) = self.range(b);
-                total += (x1 - x0 + 1) * (y1 - y0 + 1);
-                Some([x0 as u32, x1 as u32 + 1, y0 as u32, y1 as u32 + 1])
-            })
-            .collect();
-        let budget = ENTRIES_PER_ITEM * boxes.len();
-        if total > budget {
-            let size = |s: &[u32; 4]| (s[1] - s[0]) as usize * (s[3] - s[2]) as usize;
-            let most = most_cells_listed(spans.iter().flatten().map(size).collect(), budget);
-            for span in &mut spans {
-                if span.is_some_and(|s| size(&s) > most) {
-                    *span = None;
+        let mut each = |(x0, x1, y0, y1): (usize, usize, usize, usize)| {
+            for y in y0..y1 + 1 {
+                for x in x0..x1 + 1 {
+                    let cell = y * nx + x;
+                    if last[cell] != item as u32 {
+                        last[cell] = item as u32;
+                        f(cell);
+                    }
                 }
             }
-        }
-        // (Half-open ranges: an inclusive range checks for its end at every step.)
-        let cells = |[x0, x1, y0, y1]: [u32; 4]| {
-            (y0 as usize..y1 as usize)
-                .flat_map(move |y| (x0 as usize..x1 as usize).map(move |x| y * nx + x))
         };
-        for span in spans.iter().flatten() {
-            for cell in cells(*span) {
+        match lines.get(item) {
+            Some(l) => self.line_ranges(l.a, l.b, l.pad, each),
+            None => each(self.range(b)),
+        }
+    }
+
+    /// Lists each item in the cells of its footprint; false (and nothing listed) when
+    /// that would make more than `most` entries.
+    fn fill(&mut self, boxes: &[Box2], lines: &[Line], most: usize) -> bool {
+        let cells = self.nx * self.ny;
+        let mut starts = vec![0u32; cells + 1];
+        let mut last = vec![u32::MAX; cells];
+        let mut total = 0;
+        for (item, b) in boxes.iter().enumerate() {
+            self.cells_of(item, b, lines, &mut last, |cell| {
                 starts[cell + 1] += 1;
+                total += 1;
+            });
+            if total > most {
+                return false;
             }
         }
         for k in 1..starts.len() {
             starts[k] += starts[k - 1];
         }
         let mut at = starts.clone();
-        let mut items = vec![0u32; starts[starts.len() - 1] as usize];
-        let mut wide_items = Vec::new();
-        for (item, span) in spans.iter().enumerate() {
-            let Some(span) = span else {
-                wide_items.push(item as u32);
-                continue;
-            };
-            for cell in cells(*span) {
+        let mut items = vec![0u32; total];
+        last.fill(u32::MAX);
+        for (item, b) in boxes.iter().enumerate() {
+            self.cells_of(item, b, lines, &mut last, |cell| {
                 let slot = &mut at[cell];
                 items[*slot as usize] = item as u32;
                 *slot += 1;
-            }
+            });
         }
         self.starts = starts;
         self.items = items;
-        self.wide = wide_items;
+        true
     }
 
-    /// Calls `f` once for each item whose cells box `b` overlaps (and for each wide
-    /// item), or for every item when `b` covers more cells than there are items;
-    /// `stamp[item] == query` marks an item already met by this query. (Inlined: called
-    /// for every point and edge of a result; as a call it cost the GEOS-837 dissolve
-    /// about 1%.)
+    /// Calls `f` for each item `stamp` does not mark for `query` in the cells of
+    /// `(x0, x1, y0, y1)`, marking it.
+    #[inline(always)]
+    fn visit_cells(
+        &self,
+        (x0, x1, y0, y1): (usize, usize, usize, usize),
+        query: usize,
+        stamp: &mut [usize],
+        f: &mut impl FnMut(usize),
+    ) {
+        for y in y0..y1 + 1 {
+            for x in x0..x1 + 1 {
+                let cell = y * self.nx + x;
+                let list = &self.items[self.starts[cell] as usize..self.starts[cell + 1] as usize];
+                for &item in list {
+                    let item = item as usize;
+                    if stamp[item] != query {
+                        stamp[item] = query;
+                        f(item);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Calls `f` once for each item listed in a cell that box `b` overlaps (every item
+    /// whose footprint meets `b`, and others), or for every item when `b` covers more
+    /// cells than there are items; `stamp[item] == query` marks an item already met by
+    /// this query. (Inlined: called for every point and edge of a result; as a call it
+    /// cost the GEOS-837 dissolve about 1%.)
     #[inline(always)]
     pub(super) fn visit(
         &self,
@@ -251,9 +339,6 @@ impl Grid {
             (0..self.count).for_each(f);
             return;
         }
-        for &item in &self.wide {
-            f(item as usize);
-        }
         if x0 == x1 && y0 == y1 {
             // (One cell: each item once, no marks needed.)
             let cell = y0 * self.nx + x0;
@@ -261,39 +346,75 @@ impl Grid {
             list.iter().for_each(|&item| f(item as usize));
             return;
         }
-        for y in y0..y1 + 1 {
-            for x in x0..x1 + 1 {
-                let cell = y * self.nx + x;
-                let list = &self.items[self.starts[cell] as usize..self.starts[cell + 1] as usize];
-                for &item in list {
-                    let item = item as usize;
-                    if stamp[item] != query {
-                        stamp[item] = query;
-                        f(item);
-                    }
-                }
-            }
+        self.visit_cells((x0, x1, y0, y1), query, stamp, &mut f);
+    }
+
+    /// [`Grid::visit`] for the segment `a b` (whose box is `b`): along it where it is
+    /// long, so that every item whose footprint meets the segment is met, not every one
+    /// in its box.
+    pub(super) fn visit_segment(
+        &self,
+        a: Point2,
+        b: Point2,
+        bx: &Box2,
+        query: usize,
+        stamp: &mut [usize],
+        mut f: impl FnMut(usize),
+    ) {
+        if !self.is_long(a, b, (0.0, 0.0)) {
+            self.visit(bx, query, stamp, f);
+            return;
         }
+        if !bx.overlaps(&self.extent) {
+            return;
+        }
+        self.line_ranges(a, b, (0.0, 0.0), |range| {
+            self.visit_cells(range, query, stamp, &mut f);
+        });
     }
 }
 
 #[cfg(test)]
 mod tests {
+    use super::super::{fat_segment_meets_box, segment_meets_box};
     use super::*;
 
     /// Each `step`-th box, as a query, is visited by exactly the boxes that overlap it
     /// (brute force), each once.
     fn assert_visits_every_overlapping_box(grid: &Grid, boxes: &[Box2], step: usize, round: usize) {
+        assert_visits_every_footprint(grid, boxes, &[], boxes, step, round);
+    }
+
+    /// Each `step`-th query box is visited by every item whose footprint meets it
+    /// (brute force: boxes overlap, and the widened segment meets the query for a
+    /// line), each once.
+    fn assert_visits_every_footprint(
+        grid: &Grid,
+        boxes: &[Box2],
+        lines: &[Line],
+        queries: &[Box2],
+        step: usize,
+        round: usize,
+    ) {
+        let meets = |k: usize, q: &Box2| {
+            boxes[k].overlaps(q)
+                && lines
+                    .get(k)
+                    .map_or(true, |l| fat_segment_meets_box(l.a, l.b, l.pad, q))
+        };
         let mut stamp = vec![usize::MAX; boxes.len()];
-        for (q, b) in boxes.iter().enumerate().step_by(step) {
+        for (q, b) in queries.iter().enumerate().step_by(step) {
             let mut got = Vec::new();
+            let mut seen = vec![false; boxes.len()];
             grid.visit(b, q, &mut stamp, |k| {
-                if boxes[k].overlaps(b) {
+                assert!(!seen[k], "round {round}, query {q}: {k} twice");
+                seen[k] = true;
+                if meets(k, b) {
                     got.push(k);
                 }
             });
             got.sort_unstable();
-            let want: Vec<usize> = (0..boxes.len()).filter(|&k| boxes[k].overlaps(b)).collect();
+            let want: Vec<usize> = (0..boxes.len()).filter(|&k| meets(k, b)).collect();
             assert_eq!(got, want, "round {round}, query {q}");
         }
     }
@@ -344,7 +465,7 @@ mod tests {
                 boxes[0].x1 = f64::INFINITY;
                 boxes[1].y0 = f64::NEG_INFINITY;
             }
-            let grid = Grid::new(&boxes);
+            let grid = Grid::new(&boxes, &[]);
             let cells = grid.nx * grid.ny;
             // (The boxes are about 1/300 of the extent per side: a few in a cell.)
             let fullest = grid.starts.windows(2).map(|w| w[1] - w[0]).max();
@@ -359,87 +480,157 @@ mod tests {
         }
     }
 
-    /// Boxes several cells across (dense short edges: cells are small) are listed in
-    /// their cells, not met by every query: those over at most 64 cells always (equal
-    /// boxes of 25 cells each, 27 entries per item: all listed), larger ones while the
-    /// entries stay within the budget; past it the largest are wide, as few as needed.
-    /// Either way each query is visited by every box that overlaps it, exactly once.
+    /// Random segments: long ones at every angle (axis-parallel, steep, flat), short
+    /// ones and points, widened by pads from nothing to a few units.
+    fn random_lines(below: &mut impl FnMut(u64) -> u64, count: usize) -> Vec<Line> {
+        (0..count)
+            .map(|k| {
+                let a = Point2::new(below(10_000) as f64, below(10_000) as f64);
+                let len = match k % 4 {
+                    0 => 0,
+                    1 => 30,
+                    _ => 9_000,
+                };
+                let (dx, dy) = match k % 7 {
+                    0 => (below(len + 1) as f64, 0.0),
+                    1 => (0.0, below(len + 1) as f64),
+                    2 => (below(len + 1) as f64, below(8) as f64),
+                    _ => (
+                        below(2 * len + 1) as f64 - len as f64,
+                        below(2 * len + 1) as f64 - len as f64,
+                    ),
+                };
+                let pad = (below(4) as f64 * 0.75, below(4) as f64 * 0.5);
+                Line {
+                    a,
+                    b: Point2::new(a.x + dx, a.y + dy),
+                    pad,
+                }
+            })
+            .collect()
+    }
+
+    /// Long segments are listed along their length, not in every cell of their boxes
+    /// (long diagonal edges over most of the grid once made it quadratic), and each
+    /// query meets every item whose footprint meets it, once: point-sized queries,
+    /// larger boxes, and segments looked up along their length ([`Grid::visit_segment`],
+    /// against items that are boxes, as the search uses it).
     #[test]
-    fn boxes_over_many_cells_are_wide_only_past_the_budget() {
-        let mut below = crate::testing::below(0x9_12d6);
-        let budget = ENTRIES_PER_ITEM * 2000;
-        // Per round: the boxes' side (`Some`: all alike), how many long diagonal boxes
-        // among the 2 000, and whether some must be wide.
-        let rounds = [
-            (None, 40, 0, false),
-            (None, 120, 0, false),
-            (None, 40, 50, false),
-            (None, 40, 400, true),
-            (None, 400, 0, false),
-            (Some(700.0), 0, 0, false),
-            (Some(1000.0), 0, 0, false),
-        ];
-        for (round, &(alike, side, long, some_wide)) in rounds.iter().enumerate() {
-            let count = 2000;
-            let boxes: Vec<Box2> = (0..count)
-                .map(|k| {
-                    let (x, y) = (below(10_000) as f64, below(10_000) as f64);
-                    let s = match alike {
-                        Some(s) => s,
-                        None if k < long => 5000.0,
-                        None => (1 + below(side)) as f64,
-                    };
+    fn long_segments_are_listed_along_their_length() {
+        let mut below = crate::testing::below(0x9_12d7);
+        for round in 0..4 {
+            let lines = random_lines(&mut below, 600);
+            let mut boxes: Vec<Box2> = lines
+                .iter()
+                .map(|l| Box2::around(l.a, l.b, l.pad))
+                .collect();
+            // (And small boxes, as the moved points are.)
+            for _ in 0..600 {
+                let (x, y) = (below(10_000) as f64, below(10_000) as f64);
+                let s = below(20) as f64;
+                boxes.push(Box2 {
+                    x0: x,
+                    x1: x + s,
+                    y0: y,
+                    y1: y + s,
+                });
+            }
+            let grid = Grid::new(&boxes, &lines);
+            // Entries: a few per cell along each long footprint, where its box holds
+            // hundreds of cells.
+            let mut entries = vec![0; boxes.len()];
+            for &k in &grid.items {
+                entries[k as usize] += 1;
+            }
+            let mut long = 0;
+            for (k, b) in boxes.iter().enumerate() {
+                let (x0, x1, y0, y1) = grid.range(b);
+                let (w, h) = (x1 - x0 + 1, y1 - y0 + 1);
+                if w.min(h) >= 10 {
+                    long += 1;
+                    assert!(
+                        entries[k] <= 4 * (w + h) && 3 * entries[k] < w * h,
+                        "round {round}: item {k} in {} cells, over {w} x {h}",
+                        entries[k]
+                    );
+                }
+            }
+            assert!(long >= 20, "round {round}: {long} long items");
+            let mut queries: Vec<Box2> = (0..3000)
+                .map(|_| {
+                    let (x, y) = (below(10_400) as f64 - 200.0, below(10_400) as f64 - 200.0);
+                    let s = [0.0, 0.5, 3.0, 40.0][below(4) as usize];
                     Box2 {
                         x0: x,
                         x1: x + s,
                         y0: y,
-                        y1: y + s,
+                        y1: y + s * 0.5,
                     }
                 })
                 .collect();
-            let grid = Grid::new(&boxes);
-            let sizes: Vec<usize> = boxes
-                .iter()
-                .map(|b| {
-                    let (x0, x1, y0, y1) = grid.range(b);
-                    (x1 - x0 + 1) * (y1 - y0 + 1)
-                })
-                .collect();
-            let is_wide = |k: usize| grid.wide.contains(&(k as u32));
-            // Items over at most 64 cells are listed, and the entries are within the
-            // budget unless those alone pass it.
-            let small: usize = sizes.iter().filter(|&&c| c <= ALWAYS_LISTED_CELLS).sum();
-            let entries = grid.items.len();
-            assert!(entries <= budget.max(small), "round {round}: {entries}");
-            assert!(
-                grid.wide
-                    .iter()
-                    .all(|&k| sizes[k as usize] > ALWAYS_LISTED_CELLS),
-                "round {round}"
-            );
-            if let Some(smallest_wide) = grid.wide.iter().map(|&k| sizes[k as usize]).min() {
-                // The wide ones are the largest (items of one size alike), and listing
-                // those of the smallest wide size too would break the budget.
-                let listed_most = (0..count).filter(|&k| !is_wide(k)).map(|k| sizes[k]).max();
-                assert!(listed_most < Some(smallest_wide), "round {round}");
-                let alike = (0..count).filter(|&k| sizes[k] == smallest_wide).count();
-                assert!(entries + alike * smallest_wide > budget, "round {round}");
+            queries.extend_from_slice(&boxes);
+            assert_visits_every_footprint(&grid, &boxes, &lines, &queries, 1, round);
+            // Segments as queries, against the items that are boxes.
+            let mut stamp = vec![usize::MAX; boxes.len()];
+            for (q, s) in random_lines(&mut below, 400).iter().enumerate() {
+                let bx = Box2::around(s.a, s.b, (0.0, 0.0));
+                let mut got = Vec::new();
+                grid.visit_segment(s.a, s.b, &bx, q, &mut stamp, |k| {
+                    if k >= lines.len() && segment_meets_box(s.a, s.b, &boxes[k]) {
+                        got.push(k);
+                    }
+                });
+                got.sort_unstable();
+                let want: Vec<usize> = (lines.len()..boxes.len())
+                    .filter(|&k| segment_meets_box(s.a, s.b, &boxes[k]))
+                    .collect();
+                assert_eq!(got, want, "round {round}, segment {q}");
             }
-            assert_eq!(!grid.wide.is_empty(), some_wide, "round {round}");
-            assert_visits_every_overlapping_box(&grid, &boxes, 5, round);
         }
     }
 
+    /// Where the footprints would make more entries than allowed (many long edges
+    /// across the grid), the grid is made coarser until they fit; every query still
+    /// meets every item whose footprint meets it.
     #[test]
-    fn the_budget_lists_the_smallest_items() {
-        // Within the budget: all listed.
-        assert_eq!(most_cells_listed(vec![65, 65], 200), usize::MAX);
-        // Items over at most 64 cells are listed past the budget, larger ones not.
-        assert_eq!(most_cells_listed(vec![10; 100], 100), 64);
-        assert_eq!(most_cells_listed(vec![70, 5], 10), 64);
-        // Larger ones while they fit, items of one size alike.
-        assert_eq!(most_cells_listed(vec![70, 100, 70, 5], 150), 70);
-        assert_eq!(most_cells_listed(vec![70, 100, 70, 5], 144), 64);
-        assert_eq!(most_cells_listed(vec![70, 100, 70, 5], 245), usize::MAX);
+    fn too_many_entries_make_the_grid_coarser() {
+        let mut below = crate::testing::below(0x9_12d8);
+        // Long horizontal edges, one above the other, across the extent.
+        let lines: Vec<Line> = (0..2000)
+            .map(|k| Line {
+                a: Point2::new(below(100) as f64, 5.0 * k as f64),
+                b: Point2::new(
+                    9_900.0 + below(100) as f64,
+                    5.0 * k as f64 + below(3) as f64,
+                ),
+                pad: (0.5, 0.5),
+            })
+            .collect();
+        let boxes: Vec<Box2> = lines
+            .iter()
+            .map(|l| Box2::around(l.a, l.b, l.pad))
+            .collect();
+        let fine = Grid::at_most(&boxes, &lines, usize::MAX);
+        let most = fine.items.len() / 5;
+        let coarse = Grid::at_most(&boxes, &lines, most);
+        assert!(coarse.items.len() <= most, "{} entries", coarse.items.len());
+        assert!(coarse.nx * coarse.ny < fine.nx * fine.ny);
+        let queries: Vec<Box2> = (0..4000)
+            .map(|_| {
+                let (x, y) = (below(10_000) as f64, below(10_000) as f64);
+                Box2 {
+                    x0: x,
+                    x1: x + 1.0,
+                    y0: y,
+                    y1: y + 1.0,
+                }
+            })
+            .collect();
+        for (round, grid) in [fine, coarse].iter().enumerate() {
+            assert_visits_every_footprint(grid, &boxes, &lines, &queries, 1, round);
+        }
+        // At most one cell: every item, whatever the bound.
+        let one = Grid::at_most(&boxes, &lines, 0);
+        assert_eq!((one.nx, one.ny, one.items.len()), (1, 1, boxes.len()));
     }
 }
