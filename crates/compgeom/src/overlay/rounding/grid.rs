@@ -20,8 +20,13 @@ pub(super) struct Grid {
     extent: Box2,
     starts: Vec<u32>,
     items: Vec<u32>,
+    /// Per segment item, whether it is listed along its length.
+    long: Vec<bool>,
     count: usize,
 }
+
+/// Inclusive cell ranges `(x0, x1, y0, y1)`.
+type Span = (usize, usize, usize, usize);
 
 /// A segment widened by `pad` per axis (the points within `pad.0` of it in x and
 /// `pad.1` in y): the footprint of an item whose box is `Box2::around(a, b, pad)`.
@@ -158,6 +163,7 @@ impl Grid {
                 extent,
                 starts: Vec::new(),
                 items: Vec::new(),
+                long: Vec::new(),
                 count,
             };
             // (One cell holds each item once, whatever the bound.)
@@ -173,7 +179,7 @@ impl Grid {
 
     /// The cell range of a box, clamped to the grid (monotone in the box's bounds, so
     /// boxes that overlap share a cell).
-    fn range(&self, b: &Box2) -> (usize, usize, usize, usize) {
+    fn range(&self, b: &Box2) -> Span {
         let (xs, ys, sx, sy) = (&self.xs, &self.ys, self.sx, self.sy);
         (
             xs.index(b.x0 * sx),
@@ -183,35 +189,35 @@ impl Grid {
         )
     }
 
-    /// Whether the segment `a b` widened by `pad` is listed or looked up along its
-    /// length ([`Grid::line_ranges`] cuts it into pieces).
-    pub(super) fn is_long(&self, a: Point2, b: Point2, pad: (f64, f64)) -> bool {
-        let (x0, x1, y0, y1) = self.range(&Box2::around(a, b, pad));
+    /// Whether a segment whose box spans the cells `span` (as [`Grid::range`] gives
+    /// them) is listed or looked up along its length ([`Grid::line_ranges`]).
+    fn span_is_long((x0, x1, y0, y1): Span) -> bool {
         (x1 - x0).min(y1 - y0) >= LINE_FROM_CELLS
     }
 
+    /// Whether item `k` (a segment) is listed along its length: its box holds many cells
+    /// it does not meet.
+    pub(super) fn is_long(&self, k: usize) -> bool {
+        self.long.get(k).is_some_and(|&l| l)
+    }
+
     /// Calls `f` with cell ranges (as [`Grid::range`] gives them) that together hold
-    /// every cell the segment `a b` widened by `pad` meets: its box's for a short one,
-    /// else those of the boxes of pieces of it, one or two cells long each.
+    /// every cell the segment `a b` widened by `pad` meets, where its box spans `whole`
+    /// (long, [`Grid::span_is_long`]): those of the boxes of pieces of it, one or two
+    /// cells long each (its box's where the segment's sides overflow).
     ///
     /// The pieces end at the points computed at `k / m` of the way (`a` and `b` exactly
     /// at the ends), within [`REL_ALONG`] of the exact ones per axis; so each exact piece
     /// lies in the box of the computed ends widened by that, and the widened segment in
     /// the union of those boxes widened by `pad` too.
-    fn line_ranges(
-        &self,
-        a: Point2,
-        b: Point2,
-        pad: (f64, f64),
-        mut f: impl FnMut((usize, usize, usize, usize)),
-    ) {
-        let whole = self.range(&Box2::around(a, b, pad));
-        let (x0, x1, y0, y1) = whole;
+    fn line_ranges(&self, l: &Line, whole: Span, mut f: impl FnMut(Span)) {
+        let Line { a, b, pad } = *l;
         let (dx, dy) = (b.x - a.x, b.y - a.y);
-        if (x1 - x0).min(y1 - y0) < LINE_FROM_CELLS || !(dx.is_finite() && dy.is_finite()) {
+        if !(dx.is_finite() && dy.is_finite()) {
             f(whole);
             return;
         }
+        let (x0, x1, y0, y1) = whole;
         let m = (x1 - x0).max(y1 - y0) + 1;
         let (rel, abs) = REL_ALONG;
         let pad = (
@@ -231,43 +237,53 @@ impl Grid {
         }
     }
 
-    /// Calls `f(cell)` once for each cell of item `item`'s footprint; `last[cell]` marks
-    /// the item last listed there (items come in increasing order).
+    /// Calls `f(cell)` once for each cell of item `k`'s footprint, whose box spans
+    /// `span`; `last[cell]` marks the long item last listed there (items come in
+    /// increasing order; a box's cells are distinct, a line's pieces share some).
     fn cells_of(
         &self,
-        item: usize,
-        b: &Box2,
+        k: usize,
+        span: Span,
         lines: &[Line],
         last: &mut [u32],
         mut f: impl FnMut(usize),
     ) {
         let nx = self.nx;
-        let mut each = |(x0, x1, y0, y1): (usize, usize, usize, usize)| {
+        if !self.is_long(k) {
+            let (x0, x1, y0, y1) = span;
+            for y in y0..y1 + 1 {
+                for x in x0..x1 + 1 {
+                    f(y * nx + x);
+                }
+            }
+            return;
+        }
+        self.line_ranges(&lines[k], span, |(x0, x1, y0, y1)| {
             for y in y0..y1 + 1 {
                 for x in x0..x1 + 1 {
                     let cell = y * nx + x;
-                    if last[cell] != item as u32 {
-                        last[cell] = item as u32;
+                    if last[cell] != k as u32 {
+                        last[cell] = k as u32;
                         f(cell);
                     }
                 }
             }
-        };
-        match lines.get(item) {
-            Some(l) => self.line_ranges(l.a, l.b, l.pad, each),
-            None => each(self.range(b)),
-        }
+        });
     }
 
     /// Lists each item in the cells of its footprint; false (and nothing listed) when
     /// that would make more than `most` entries.
     fn fill(&mut self, boxes: &[Box2], lines: &[Line], most: usize) -> bool {
+        let spans: Vec<Span> = boxes.iter().map(|b| self.range(b)).collect();
+        self.long = (0..lines.len())
+            .map(|k| Grid::span_is_long(spans[k]))
+            .collect();
         let cells = self.nx * self.ny;
         let mut starts = vec![0u32; cells + 1];
-        let mut last = vec![u32::MAX; cells];
+        let mut last = vec![u32::MAX; if self.long.contains(&true) { cells } else { 0 }];
         let mut total = 0;
-        for (item, b) in boxes.iter().enumerate() {
-            self.cells_of(item, b, lines, &mut last, |cell| {
+        for (k, &span) in spans.iter().enumerate() {
+            self.cells_of(k, span, lines, &mut last, |cell| {
                 starts[cell + 1] += 1;
                 total += 1;
             });
@@ -281,10 +297,10 @@ impl Grid {
         let mut at = starts.clone();
         let mut items = vec![0u32; total];
         last.fill(u32::MAX);
-        for (item, b) in boxes.iter().enumerate() {
-            self.cells_of(item, b, lines, &mut last, |cell| {
+        for (k, &span) in spans.iter().enumerate() {
+            self.cells_of(k, span, lines, &mut last, |cell| {
                 let slot = &mut at[cell];
-                items[*slot as usize] = item as u32;
+                items[*slot as usize] = k as u32;
                 *slot += 1;
             });
         }
@@ -298,7 +314,7 @@ impl Grid {
     #[inline(always)]
     fn visit_cells(
         &self,
-        (x0, x1, y0, y1): (usize, usize, usize, usize),
+        (x0, x1, y0, y1): Span,
         query: usize,
         stamp: &mut [usize],
         f: &mut impl FnMut(usize),
@@ -349,9 +365,11 @@ impl Grid {
         self.visit_cells((x0, x1, y0, y1), query, stamp, &mut f);
     }
 
-    /// [`Grid::visit`] for the segment `a b` (whose box is `b`): along it where it is
-    /// long, so that every item whose footprint meets the segment is met, not every one
-    /// in its box.
+    /// [`Grid::visit`] for the segment `a b` (whose box is `bx`), along it where it is
+    /// long: every item whose footprint meets the segment is met (and others), not
+    /// every one in its box. `f(item, long)` says whether it was looked up along its
+    /// length.
+    #[inline(always)]
     pub(super) fn visit_segment(
         &self,
         a: Point2,
@@ -359,17 +377,23 @@ impl Grid {
         bx: &Box2,
         query: usize,
         stamp: &mut [usize],
-        mut f: impl FnMut(usize),
+        mut f: impl FnMut(usize, bool),
     ) {
-        if !self.is_long(a, b, (0.0, 0.0)) {
-            self.visit(bx, query, stamp, f);
-            return;
-        }
         if !bx.overlaps(&self.extent) {
             return;
         }
-        self.line_ranges(a, b, (0.0, 0.0), |range| {
-            self.visit_cells(range, query, stamp, &mut f);
+        let span = self.range(bx);
+        if !Grid::span_is_long(span) {
+            self.visit(bx, query, stamp, |k| f(k, false));
+            return;
+        }
+        let line = Line {
+            a,
+            b,
+            pad: (0.0, 0.0),
+        };
+        self.line_ranges(&line, span, |range| {
+            self.visit_cells(range, query, stamp, &mut |k| f(k, true));
         });
     }
 }
@@ -575,7 +599,7 @@ mod tests {
             for (q, s) in random_lines(&mut below, 400).iter().enumerate() {
                 let bx = Box2::around(s.a, s.b, (0.0, 0.0));
                 let mut got = Vec::new();
-                grid.visit_segment(s.a, s.b, &bx, q, &mut stamp, |k| {
+                grid.visit_segment(s.a, s.b, &bx, q, &mut stamp, |k, _| {
                     if k >= lines.len() && segment_meets_box(s.a, s.b, &boxes[k]) {
                         got.push(k);
                     }

@@ -570,10 +570,6 @@ fn near_pairs_on_grid(
     let grid = Grid::new(boxes, &lines);
     // A long edge is listed along its length, and its box holds many points that are
     // nowhere near it: those it is tested against exactly before they make a pair.
-    let long: Vec<bool> = lines
-        .iter()
-        .map(|l| grid.is_long(l.a, l.b, l.pad))
-        .collect();
     // Each point against the moved edges near it, then each unmoved edge (query
     // `points + i` for the one from point i) against the moved points near it; `stamp` as in
     // [`Grid::visit`].
@@ -593,7 +589,7 @@ fn near_pairs_on_grid(
                 let b = precise.get_or_insert_with(|| point_box(r, x));
                 let l = &lines[item];
                 if boxes[item].overlaps(b)
-                    && (!long[item] || fat_segment_meets_box(l.a, l.b, l.pad, b))
+                    && (!grid.is_long(item) || fat_segment_meets_box(l.a, l.b, l.pad, b))
                 {
                     pairs.push((x as u32, moved_edges[item]));
                 }
@@ -605,8 +601,7 @@ fn near_pairs_on_grid(
     let edge_pairs = |i: usize, j: usize, b: &Box2, stamp: &mut [usize], pairs: &mut Vec<Pair>| {
         let e = r.ring_edge(i, j);
         let (pi, pj) = (r.points[i], r.points[j]);
-        let long = grid.is_long(pi, pj, (0.0, 0.0));
-        grid.visit_segment(pi, pj, b, points + i, stamp, |item| {
+        grid.visit_segment(pi, pj, b, points + i, stamp, |item, long| {
             if item >= moved_edges.len()
                 && boxes[item].overlaps(b)
                 && (!long || segment_meets_box(pi, pj, &boxes[item]))
