@@ -365,6 +365,38 @@ fn segment_meets_box(a: Point2, b: Point2, bx: &Box2) -> bool {
         && orient2d(a, b, rightmost) != Orientation::CounterClockwise
 }
 
+/// Whether the line through `a` and `b`, widened by `(hx, hy)`, certainly misses box
+/// `bx` (so does the widened segment), decided in floats: the line meets the box iff
+/// the centre's offset across it, `|d × (c − a)|` for `d = b − a`, is at most
+/// `reach = |d.y| rx + |d.x| ry` for half sizes `(rx, ry)`.
+///
+/// Rounding errors, u = 2⁻⁵³, every coordinate below `m` in magnitude: `d` and the half
+/// sizes are within a few u of themselves (differences of floats), the centre within
+/// `u m` plus u of itself (its sum, then the difference); so the products `p = d.x c.y`
+/// and `q = d.y c.x` are within `u m |d| + 3u (|p| + |q|)`, their difference within u
+/// more of it, `reach` within 4u of itself. The test asks for a margin of 2⁻⁴⁶ = 128u
+/// of `m (|d.x| + |d.y|) + |p| + |q| + reach` (and an absolute term for halving
+/// subnormal coordinates), and says false where it cannot tell (overflow, NaN). A cheap
+/// first test before [`fat_segment_meets_box`] for long edges, which share their
+/// cells with many points far from them.
+fn clearly_apart(a: Point2, b: Point2, (hx, hy): (f64, f64), bx: &Box2) -> bool {
+    let m = [a.x, a.y, b.x, b.y, bx.x0, bx.x1, bx.y0, bx.y1]
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let (cx, cy) = (
+        0.5 * bx.x0 + 0.5 * bx.x1 - a.x,
+        0.5 * bx.y0 + 0.5 * bx.y1 - a.y,
+    );
+    let (rx, ry) = (0.5 * (bx.x1 - bx.x0) + hx, 0.5 * (bx.y1 - bx.y0) + hy);
+    let (p, q) = (dx * cy, dy * cx);
+    let reach = dy.abs() * rx + dx.abs() * ry;
+    let along = dx.abs() + dy.abs();
+    let margin = (m * along + p.abs() + q.abs() + reach) / (1u64 << 46) as f64
+        + (along + 1.0) * f64::MIN_POSITIVE;
+    margin.is_finite() && (p - q).abs() > reach + margin
+}
+
 /// Whether segment `a b` widened by `(hx, hy)` (the points within `hx` of it in x and
 /// `hy` in y, at once) meets the closed box `bx`, exactly: whether the segment meets
 /// `bx` widened so (rounded outward).
@@ -589,7 +621,9 @@ fn near_pairs_on_grid(
                 let b = precise.get_or_insert_with(|| point_box(r, x));
                 let l = &lines[item];
                 if boxes[item].overlaps(b)
-                    && (!grid.is_long(item) || fat_segment_meets_box(l.a, l.b, l.pad, b))
+                    && (!grid.is_long(item)
+                        || !clearly_apart(l.a, l.b, l.pad, b)
+                            && fat_segment_meets_box(l.a, l.b, l.pad, b))
                 {
                     pairs.push((x as u32, moved_edges[item]));
                 }
@@ -604,7 +638,9 @@ fn near_pairs_on_grid(
         grid.visit_segment(pi, pj, b, points + i, stamp, |item, long| {
             if item >= moved_edges.len()
                 && boxes[item].overlaps(b)
-                && (!long || segment_meets_box(pi, pj, &boxes[item]))
+                && (!long
+                    || !clearly_apart(pi, pj, (0.0, 0.0), &boxes[item])
+                        && segment_meets_box(pi, pj, &boxes[item]))
             {
                 let x = moved_points[item - moved_edges.len()];
                 if !r.is_end(x, &e) {
@@ -823,9 +859,9 @@ struct ExactSides<F> {
 #[cfg(test)]
 mod tests {
     use super::{
-        apart_along_an_axis, edge_reach, failing_rings, fat_segment_meets_box, gap, meets,
-        near_pairs_by, reach_of, Box2, Edge, ExactPoints, Pair, PointIds, RoundedRings, Search,
-        Toward,
+        apart_along_an_axis, clearly_apart, edge_reach, failing_rings, fat_segment_meets_box, gap,
+        meets, near_pairs_by, reach_of, segment_meets_box, Box2, Edge, ExactPoints, Pair, PointIds,
+        RoundedRings, Search, Toward,
     };
     use crate::kernel::{orient2d, Orientation, Point2};
     use std::cmp::Ordering;
@@ -985,6 +1021,58 @@ mod tests {
         assert!(found > 20_000, "only {found} pairs");
         // (Some pairs of long edges were passed over on the grid.)
         assert!(left_out > 0);
+    }
+
+    /// The float first test never calls apart a widened segment and box that meet
+    /// (exactly), at every scale and offset (coordinates near 1e6, 1e15, 1e300 and
+    /// subnormal ones, boxes a few floats across, segments through, beside and far from
+    /// them), and does call apart most of those far from each other where the
+    /// coordinates are units apart.
+    #[test]
+    fn clearly_apart_is_never_wrong() {
+        let mut int = crate::testing::below(0xc1ea_71);
+        let (mut far, mut told) = (0, 0);
+        for round in 0..200_000 {
+            let scale: f64 = [1.0, 1e-3, 1e6, 1e15, 1e300, 1e-310][round % 6];
+            let offset = [0.0, 1.0, 1e6, -3e15][(round / 6) % 4] * scale.min(1e280);
+            // (A few units, or a few floats, apart.)
+            let spread = if int(3) == 0 { 4.0 * f64::EPSILON } else { 1.0 };
+            let mut v = || offset + (int(2001) as f64 - 1000.0) * scale * spread;
+            let (a, b) = (p(v(), v()), p(v(), v()));
+            let c = p(v(), v());
+            let w = (int(4) as f64) * scale * spread;
+            let bx = Box2::around(c, c, (w, w * 0.5));
+            let pad = [(0.0, 0.0), (w, w), (scale * spread, 0.0)][int(3) as usize];
+            let meets = fat_segment_meets_box(a, b, pad, &bx);
+            let apart = clearly_apart(a, b, pad, &bx);
+            assert!(
+                !(meets && apart),
+                "round {round}: {a:?} {b:?} {pad:?} {c:?} {w}"
+            );
+            // (Far: the line misses the box by more than a tenth of the segment.)
+            let line_meets = {
+                let (dx, dy) = (b.x - a.x, b.y - a.y);
+                let len = dx.abs() + dy.abs();
+                let far_out =
+                    Box2::around(c, c, (w + pad.0 + 0.1 * len, 0.5 * w + pad.1 + 0.1 * len));
+                len == 0.0
+                    || segment_meets_box(
+                        p(a.x - 10.0 * dx, a.y - 10.0 * dy),
+                        p(b.x + 10.0 * dx, b.y + 10.0 * dy),
+                        &far_out,
+                    )
+            };
+            // (Counted where the coordinates are units apart: at a few floats apart
+            // far from the origin, the margin is larger than the distances.)
+            if !line_meets && spread == 1.0 && scale < 1e300 && scale > 1e-300 {
+                far += 1;
+                told += usize::from(apart);
+            }
+        }
+        assert!(
+            far > 10_000 && told * 10 > far * 9,
+            "{told} of {far} told apart"
+        );
     }
 
     #[test]
