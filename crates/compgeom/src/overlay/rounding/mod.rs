@@ -1030,7 +1030,7 @@ mod tests {
     /// coordinates are units apart.
     #[test]
     fn clearly_apart_is_never_wrong() {
-        let mut int = crate::testing::below(0xc1ea_71);
+        let mut int = crate::testing::below(0x00c1_ea71);
         let (mut far, mut told) = (0, 0);
         for round in 0..200_000 {
             let scale: f64 = [1.0, 1e-3, 1e6, 1e15, 1e300, 1e-310][round % 6];
