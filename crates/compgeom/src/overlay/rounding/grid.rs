@@ -95,18 +95,25 @@ const REL_ALONG: (f64, f64) = (1.0 / (1u64 << 48) as f64, f64::MIN_POSITIVE);
 const ALL_ITEMS_BEYOND: usize = 64;
 
 impl Grid {
-    /// The grid of the items with boxes `boxes`, the first `lines.len()` of them
-    /// segments (`boxes[k]` holds `Box2::around(lines[k].a, lines[k].b, lines[k].pad)`).
-    pub(super) fn new(boxes: &[Box2], lines: &[Line]) -> Grid {
+    /// The grid of the items with boxes `boxes`, the first `segments` of them segments
+    /// `line_of(k)` (`boxes[k]` is `Box2::around(l.a, l.b, l.pad)` for `l = line_of(k)`;
+    /// asked only for those whose boxes span many cells).
+    pub(super) fn new(boxes: &[Box2], segments: usize, line_of: impl Fn(usize) -> Line) -> Grid {
         Grid::at_most(
             boxes,
-            lines,
+            segments,
+            line_of,
             MOST_ENTRIES_PER_ITEM * boxes.len() + MOST_ENTRIES_BEYOND,
         )
     }
 
     /// [`Grid::new`] with at most `most` entries (unless in one cell).
-    fn at_most(boxes: &[Box2], lines: &[Line], most: usize) -> Grid {
+    fn at_most(
+        boxes: &[Box2],
+        segments: usize,
+        line_of: impl Fn(usize) -> Line,
+        most: usize,
+    ) -> Grid {
         let mut extent = Box2 {
             x0: f64::INFINITY,
             x1: f64::NEG_INFINITY,
@@ -168,7 +175,7 @@ impl Grid {
             };
             // (One cell holds each item once, whatever the bound.)
             let most = if nx * ny == 1 { usize::MAX } else { most };
-            if grid.fill(boxes, lines, most) {
+            if grid.fill(boxes, segments, &line_of, most) {
                 return grid;
             }
             // Too many entries: half as many cells per axis, a quarter in all (long
@@ -244,7 +251,7 @@ impl Grid {
         &self,
         k: usize,
         span: Span,
-        lines: &[Line],
+        line_of: impl Fn(usize) -> Line,
         last: &mut [u32],
         mut f: impl FnMut(usize),
     ) {
@@ -258,7 +265,7 @@ impl Grid {
             }
             return;
         }
-        self.line_ranges(&lines[k], span, |(x0, x1, y0, y1)| {
+        self.line_ranges(&line_of(k), span, |(x0, x1, y0, y1)| {
             for y in y0..y1 + 1 {
                 for x in x0..x1 + 1 {
                     let cell = y * nx + x;
@@ -273,9 +280,15 @@ impl Grid {
 
     /// Lists each item in the cells of its footprint; false (and nothing listed) when
     /// that would make more than `most` entries.
-    fn fill(&mut self, boxes: &[Box2], lines: &[Line], most: usize) -> bool {
+    fn fill(
+        &mut self,
+        boxes: &[Box2],
+        segments: usize,
+        line_of: &impl Fn(usize) -> Line,
+        most: usize,
+    ) -> bool {
         let spans: Vec<Span> = boxes.iter().map(|b| self.range(b)).collect();
-        self.long = (0..lines.len())
+        self.long = (0..segments)
             .map(|k| Grid::span_is_long(spans[k]))
             .collect();
         let cells = self.nx * self.ny;
@@ -283,7 +296,7 @@ impl Grid {
         let mut last = vec![u32::MAX; if self.long.contains(&true) { cells } else { 0 }];
         let mut total = 0;
         for (k, &span) in spans.iter().enumerate() {
-            self.cells_of(k, span, lines, &mut last, |cell| {
+            self.cells_of(k, span, line_of, &mut last, |cell| {
                 starts[cell + 1] += 1;
                 total += 1;
             });
@@ -298,7 +311,7 @@ impl Grid {
         let mut items = vec![0u32; total];
         last.fill(u32::MAX);
         for (k, &span) in spans.iter().enumerate() {
-            self.cells_of(k, span, lines, &mut last, |cell| {
+            self.cells_of(k, span, line_of, &mut last, |cell| {
                 let slot = &mut at[cell];
                 items[*slot as usize] = k as u32;
                 *slot += 1;
@@ -340,17 +353,17 @@ impl Grid {
     /// this query. (Inlined: called for every point and edge of a result; as a call it
     /// cost the GEOS-837 dissolve about 1%.)
     #[inline(always)]
-    pub(super) fn visit(
-        &self,
-        b: &Box2,
-        query: usize,
-        stamp: &mut [usize],
-        mut f: impl FnMut(usize),
-    ) {
+    pub(super) fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize)) {
         if !b.overlaps(&self.extent) {
             return;
         }
-        let (x0, x1, y0, y1) = self.range(b);
+        self.visit_span(self.range(b), query, stamp, f);
+    }
+
+    /// [`Grid::visit`] of the cells `span`.
+    #[inline(always)]
+    fn visit_span(&self, span: Span, query: usize, stamp: &mut [usize], mut f: impl FnMut(usize)) {
+        let (x0, x1, y0, y1) = span;
         if (x1 - x0 + 1) * (y1 - y0 + 1) > self.count + ALL_ITEMS_BEYOND {
             (0..self.count).for_each(f);
             return;
@@ -384,7 +397,7 @@ impl Grid {
         }
         let span = self.range(bx);
         if !Grid::span_is_long(span) {
-            self.visit(bx, query, stamp, |k| f(k, false));
+            self.visit_span(span, query, stamp, |k| f(k, false));
             return;
         }
         let line = Line {
@@ -489,7 +502,7 @@ mod tests {
                 boxes[0].x1 = f64::INFINITY;
                 boxes[1].y0 = f64::NEG_INFINITY;
             }
-            let grid = Grid::new(&boxes, &[]);
+            let grid = Grid::new(&boxes, 0, |_| unreachable!());
             let cells = grid.nx * grid.ny;
             // (The boxes are about 1/300 of the extent per side: a few in a cell.)
             let fullest = grid.starts.windows(2).map(|w| w[1] - w[0]).max();
@@ -559,7 +572,7 @@ mod tests {
                     y1: y + s,
                 });
             }
-            let grid = Grid::new(&boxes, &lines);
+            let grid = Grid::new(&boxes, lines.len(), |k| lines[k]);
             // Entries: a few per cell along each long footprint, where its box holds
             // hundreds of cells.
             let mut entries = vec![0; boxes.len()];
@@ -634,9 +647,9 @@ mod tests {
             .iter()
             .map(|l| Box2::around(l.a, l.b, l.pad))
             .collect();
-        let fine = Grid::at_most(&boxes, &lines, usize::MAX);
+        let fine = Grid::at_most(&boxes, lines.len(), |k| lines[k], usize::MAX);
         let most = fine.items.len() / 5;
-        let coarse = Grid::at_most(&boxes, &lines, most);
+        let coarse = Grid::at_most(&boxes, lines.len(), |k| lines[k], most);
         assert!(coarse.items.len() <= most, "{} entries", coarse.items.len());
         assert!(coarse.nx * coarse.ny < fine.nx * fine.ny);
         let queries: Vec<Box2> = (0..4000)
@@ -654,7 +667,7 @@ mod tests {
             assert_visits_every_footprint(grid, &boxes, &lines, &queries, 1, round);
         }
         // At most one cell: every item, whatever the bound.
-        let one = Grid::at_most(&boxes, &lines, 0);
+        let one = Grid::at_most(&boxes, lines.len(), |k| lines[k], 0);
         assert_eq!((one.nx, one.ny, one.items.len()), (1, 1, boxes.len()));
     }
 }

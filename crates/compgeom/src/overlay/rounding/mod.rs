@@ -588,18 +588,16 @@ fn near_pairs_on_grid(
     boxes: &[Box2],
 ) -> Scratch<Pair> {
     // (The moved edges' boxes are their segments widened by four reaches: `edge_box`.)
-    let lines: Vec<Line> = moved_edges
-        .iter()
-        .map(|e| {
-            let (hx, hy) = edge_reach(r, e);
-            Line {
-                a: r.points[e.i],
-                b: r.points[e.j],
-                pad: (4.0 * hx, 4.0 * hy),
-            }
-        })
-        .collect();
-    let grid = Grid::new(boxes, &lines);
+    let line_of = |k: usize| {
+        let e = &moved_edges[k];
+        let (hx, hy) = edge_reach(r, e);
+        Line {
+            a: r.points[e.i],
+            b: r.points[e.j],
+            pad: (4.0 * hx, 4.0 * hy),
+        }
+    };
+    let grid = Grid::new(boxes, moved_edges.len(), line_of);
     // A long edge is listed along its length, and its box holds many points that are
     // nowhere near it: those it is tested against exactly before they make a pair.
     // Each point against the moved edges near it, then each unmoved edge (query
@@ -619,11 +617,12 @@ fn near_pairs_on_grid(
                 && !r.is_end(x, &moved_edges[item])
             {
                 let b = precise.get_or_insert_with(|| point_box(r, x));
-                let l = &lines[item];
                 if boxes[item].overlaps(b)
-                    && (!grid.is_long(item)
-                        || !clearly_apart(l.a, l.b, l.pad, b)
-                            && fat_segment_meets_box(l.a, l.b, l.pad, b))
+                    && (!grid.is_long(item) || {
+                        let l = line_of(item);
+                        !clearly_apart(l.a, l.b, l.pad, b)
+                            && fat_segment_meets_box(l.a, l.b, l.pad, b)
+                    })
                 {
                     pairs.push((x as u32, moved_edges[item]));
                 }
