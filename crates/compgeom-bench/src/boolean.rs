@@ -1422,7 +1422,9 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 }
 
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
-/// `BOOLEAN_INPUT=star|squares|turned|water|jts|ngons|dissolve`, `BOOLEAN_REPS` calls except
+/// `BOOLEAN_INPUT=star|squares|turned|water|jts|ngons|dissolve`, or one of the long-edge
+/// families `nested|strips|diagonal|holes` ([`long_edge_family`], `BOOLEAN_N` of them,
+/// intersected with a triangle, or `BOOLEAN_OP`; one call, timed), `BOOLEAN_REPS` calls except
 /// for the squares): run one contender on the star union, the squares input (`turned`:
 /// turned by random angles; `BOOLEAN_SPREAD=1`: over a larger square, at the density of
 /// 10⁴ in the unit square; either way the call's own time on stderr), the water
@@ -1555,6 +1557,23 @@ fn one(rng: &mut Rng, who: &str) -> Result<(), String> {
         }
         return Ok(());
     }
+    if let Some((a, b)) = long_edge_family(&input, n) {
+        // One call, its own time on stderr (the input's set-up is not timed).
+        let name = std::env::var("BOOLEAN_OP").unwrap_or_else(|_| "intersection".into());
+        let (_, op, io_op, geo_op) = *OPS
+            .iter()
+            .find(|o| o.0 == name)
+            .ok_or("BOOLEAN_OP: intersection, union, difference or xor")?;
+        let (pa, pb) = (io_paths(&a), io_paths(&b));
+        let (ga, gb) = (geo_poly(&a), geo_poly(&b));
+        let _timer = CallTimer(std::time::Instant::now());
+        match who {
+            "ours" => drop(black_box(boolean(&a, &b, op).map_err(|e| e.to_string())?)),
+            "io" => drop(black_box(pa.overlay(&pb, io_op, FillRule::EvenOdd))),
+            _ => drop(black_box(ga.boolean_op(&gb, geo_op))),
+        }
+        return Ok(());
+    }
     let water = std::env::var("BOOLEAN_INPUT").is_ok_and(|s| s == "water");
     let (a, b) = if water {
         let dir = real_maps::cases_dir().ok_or("no cases folder (COMPGEOM_CASES)")?;
@@ -1643,6 +1662,67 @@ fn per_pair(
             ours / g
         );
     }
+}
+
+/// Inputs with many long edges, against a triangle across them (how cost grows with
+/// `n` where long edges share the cells of every grid):
+/// - `nested`: `n` nested square rings (each a polygon with its hole), the triangle
+///   cutting through all of them;
+/// - `strips`: `n` long thin horizontal quadrilaterals one above the other;
+/// - `diagonal`: `n` long thin parallel diagonal quadrilaterals side by side;
+/// - `holes`: one square with about `n` square holes in rows (a field of holes) and
+///   the triangle's long side across the rows.
+fn long_edge_family(name: &str, n: usize) -> Option<(MultiPolygon, MultiPolygon)> {
+    let p = Point2::new;
+    let k = n as f64;
+    let square = |x0: f64, x1: f64| vec![p(x0, x0), p(x1, x0), p(x1, x1), p(x0, x1)];
+    let triangle = |s: f64| {
+        MultiPolygon(vec![Polygon::new(
+            vec![p(0.5, 0.3), p(s + 0.7, 0.9), p(0.8, s + 0.2)],
+            vec![],
+        )])
+    };
+    let a = match name {
+        "nested" => (0..n)
+            .map(|i| {
+                let (e, w) = (2.0 * i as f64, 4.0 * k);
+                Polygon::new(square(e, w - e), vec![square(e + 1.0, w - e - 1.0)])
+            })
+            .collect(),
+        "strips" => (0..n)
+            .map(|i| {
+                let y = 2.0 * i as f64;
+                let w = 10.0 * k;
+                Polygon::new(
+                    vec![p(0.0, y), p(w, y + 0.3), p(w, y + 1.0), p(0.0, y + 1.1)],
+                    vec![],
+                )
+            })
+            .collect(),
+        "diagonal" => (0..n)
+            .map(|i| {
+                let (x, w) = (i as f64, 10.0 * k);
+                Polygon::new(
+                    vec![p(x, 0.0), p(x + 0.5, 0.0), p(x + 0.5 + w, w), p(x + w, w)],
+                    vec![],
+                )
+            })
+            .collect(),
+        "holes" => {
+            let rows = (k.sqrt().ceil() as usize).max(1);
+            let side = 2.0 * rows as f64 + 1.0;
+            let holes = (0..rows * rows)
+                .map(|h| {
+                    let (x, y) = ((2 * (h % rows) + 1) as f64, (2 * (h / rows) + 1) as f64);
+                    vec![p(x, y), p(x, y + 1.0), p(x + 1.0, y + 1.0), p(x + 1.0, y)]
+                })
+                .collect();
+            let a = MultiPolygon(vec![Polygon::new(square(0.0, side), holes)]);
+            return Some((a, triangle(side - 1.0)));
+        }
+        _ => return None,
+    };
+    Some((MultiPolygon(a), triangle(4.0 * k)))
 }
 
 /// Prints the time since it was made when dropped.
