@@ -918,6 +918,40 @@
 //! 7.5 s); axis-parallel squares 10⁵ 0.56 / 0.49 / 0.49, 10⁶ 9.5 / 5.2 / 5.3 (peak
 //! 3.42 GB against 2.32 GB; the tracing 31% of the samples, page faults 25%, the
 //! axis-parallel build 17%).
+//!
+//! Session 52: inputs with many long edges (`BOOLEAN_INPUT=nested|strips|diagonal|holes`,
+//! [`long_edge_family`]: `BOOLEAN_N` nested square rings, thin horizontal strips or thin
+//! diagonal strips, or a square with about `BOOLEAN_N` holes in rows, each against a
+//! triangle across them). Before the session they were quadratic in three places: the
+//! rounding check's grid listed an item in every cell of its box and, past 16 entries
+//! per item, made the largest items "wide", met by every query (long edges across
+//! the grid: all of them); a long diagonal edge's box also made a pair of it with
+//! every point in that box (the pairs list alone reached 6.7 GB); and the components'
+//! nearest-edge search scanned whole strips where one long edge came last in each.
+//! Measured with the CLI on the same shapes (files, one call, 10³ → 10⁴): nested xor
+//! 0.06 → 8.53 s, strips xor 0.05 → 15.2 s, diagonal intersection 0.17 → 13.2 s (6.7
+//! GB), diagonal xor > 60 s (18.7 GB); 10⁴ → 10⁵ holes intersection 0.14 → 5.49 s. Now
+//! a long edge is listed along its length (the cells of pieces of it, each a cell or two
+//! long), tested exactly (after a float test with a stated margin) against the points
+//! in its cells before it makes a pair, and where the entries would pass 64 per item
+//! (and 2²⁴) the grid is made coarser instead of any item being met by every query; the
+//! nearest-edge search gives up past 8 entries per edge and the hole sweep answers.
+//! Outputs are byte-identical where the old build finished. One call, s, compgeom /
+//! i_overlay / geo (geo's boolean operations run i_overlay, hence the equal times), at
+//! 10³ and 10⁴: nested intersection 0.029 / 0.024 / 0.024 and 0.303 / 8.21 / 8.31, xor
+//! 0.028 / 0.025 / 0.025 and 0.425 / 8.31 / 8.41; strips intersection 0.005 / 0.022 /
+//! 0.023 and 0.087 / 0.368 / 0.355, xor 0.010 / 0.023 / 0.023 and 0.257 / 0.378 / 0.394;
+//! diagonal intersection 0.026 / 0.187 / 0.183 and 0.555 / > 100 / > 100, xor 0.172 /
+//! 0.209 / 0.200 and 3.42 / > 100 / > 100; holes (10⁴ and 10⁵) intersection 0.119 /
+//! 1.50 / 1.57 and 0.51 / 16.0 / –, xor at 10⁴ 0.097 / 1.53 / 1.56. Still superlinear:
+//! the diagonal xor (20× for 10× n: the parallel long edges share every cell of the band
+//! they cross, so each point there meets about a hundred of them) and the overlay of
+//! the diagonal strips (13–15 s at 10⁴, 0.17 s at 10³). The table's rows pay for it:
+//! instructions a round, before / after, JTS intersection 10.84 M / 10.92–10.95 M, xor
+//! 16.91 M / 17.00–17.07 M, dissolve 4.81 M / 4.86 M, water xor 129.4 M / 133.0–133.4 M
+//! (the grid's two passes now ask per item whether it is long, the queries whether they
+//! are; about half of the JTS change is code generation in the untouched noding,
+//! `Found::test_by_points` 6.7 instructions a call more with the same calls).
 
 use crate::real_maps;
 use crate::util::{alternate, median, ms, Rng};
