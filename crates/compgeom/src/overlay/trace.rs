@@ -1373,8 +1373,8 @@ fn windings_left_of_by(
 /// tests are exact (vertex heights by [`compare_y_filtered`], sides by [`side`]), filtered
 /// by the rounded points the arrangement keeps.
 ///
-/// Cost: O(V + E) for the strips plus the edges of each query's strip (the same budget
-/// as [`windings_left_of`]), instead of a sweep over every vertex; for at most
+/// Cost: O(V + E) for the strips plus the entries the queries scan, at most
+/// [`SCAN_PER_EDGE`] per edge (else `None`), instead of a sweep over every vertex; for at most
 /// [`DIRECT_FACE_QUERIES`] queries Q, O(E log Q) plus the queries in each edge's y range,
 /// without the strips.
 fn faces_left_by_strips(
@@ -1502,8 +1502,7 @@ fn faces_left_by(
         }
         return Some(found.into_iter().map(|(best, _)| half_edge(best)).collect());
     }
-    // The queries scan only a few entries each (below), so the scan budget is not the
-    // limit: pass no queries to it.
+    // The queries' scans have their own budget (below): pass no queries to the strips'.
     let strips = Strips::counted(&ranges, &[])?;
     // Each strip's entries by decreasing x_min, up to a 32-bit monotone key of it (the
     // offset from the smallest x_min, scaled to the key range; rounding and the

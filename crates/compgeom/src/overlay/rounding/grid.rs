@@ -103,7 +103,8 @@ impl Grid {
             boxes,
             segments,
             line_of,
-            MOST_ENTRIES_PER_ITEM * boxes.len() + MOST_ENTRIES_BEYOND,
+            // (Entries are counted in u32.)
+            (MOST_ENTRIES_PER_ITEM * boxes.len() + MOST_ENTRIES_BEYOND).min(u32::MAX as usize),
         )
     }
 
@@ -228,8 +229,9 @@ impl Grid {
         let m = (x1 - x0).max(y1 - y0) + 1;
         let (rel, abs) = REL_ALONG;
         let pad = (
-            pad.0 + (a.x.abs() + b.x.abs()) * rel + abs,
-            pad.1 + (a.y.abs() + b.y.abs()) * rel + abs,
+            // (Each end scaled on its own: their sum can overflow.)
+            pad.0 + a.x.abs() * rel + b.x.abs() * rel + abs,
+            pad.1 + a.y.abs() * rel + b.y.abs() * rel + abs,
         );
         let mut p = a;
         for k in 1..=m {
@@ -555,21 +557,34 @@ mod tests {
     #[test]
     fn long_segments_are_listed_along_their_length() {
         let mut below = crate::testing::below(0x9_12d7);
-        for round in 0..4 {
-            let lines = random_lines(&mut below, 600);
+        // Per round, the coordinates as units, near 1e-300, and 3e15 from the origin
+        // (where the points along a segment round to integers).
+        for (round, (offset, scale)) in [(0.0, 1.0), (0.0, 1.0), (0.0, 1e-300), (3e15, 1.0)]
+            .into_iter()
+            .enumerate()
+        {
+            let at = |q: Point2| Point2::new(offset + q.x * scale, offset + q.y * scale);
+            let lines: Vec<Line> = random_lines(&mut below, 600)
+                .iter()
+                .map(|l| Line {
+                    a: at(l.a),
+                    b: at(l.b),
+                    pad: (l.pad.0 * scale, l.pad.1 * scale),
+                })
+                .collect();
             let mut boxes: Vec<Box2> = lines
                 .iter()
                 .map(|l| Box2::around(l.a, l.b, l.pad))
                 .collect();
             // (And small boxes, as the moved points are.)
             for _ in 0..600 {
-                let (x, y) = (below(10_000) as f64, below(10_000) as f64);
-                let s = below(20) as f64;
+                let c = at(Point2::new(below(10_000) as f64, below(10_000) as f64));
+                let s = below(20) as f64 * scale;
                 boxes.push(Box2 {
-                    x0: x,
-                    x1: x + s,
-                    y0: y,
-                    y1: y + s,
+                    x0: c.x,
+                    x1: c.x + s,
+                    y0: c.y,
+                    y1: c.y + s,
                 });
             }
             let grid = Grid::new(&boxes, lines.len(), |k| lines[k]);
@@ -596,12 +611,13 @@ mod tests {
             let mut queries: Vec<Box2> = (0..3000)
                 .map(|_| {
                     let (x, y) = (below(10_400) as f64 - 200.0, below(10_400) as f64 - 200.0);
-                    let s = [0.0, 0.5, 3.0, 40.0][below(4) as usize];
+                    let c = at(Point2::new(x, y));
+                    let s = [0.0, 0.5, 3.0, 40.0][below(4) as usize] * scale;
                     Box2 {
-                        x0: x,
-                        x1: x + s,
-                        y0: y,
-                        y1: y + s * 0.5,
+                        x0: c.x,
+                        x1: c.x + s,
+                        y0: c.y,
+                        y1: c.y + s * 0.5,
                     }
                 })
                 .collect();
@@ -610,6 +626,11 @@ mod tests {
             // Segments as queries, against the items that are boxes.
             let mut stamp = vec![usize::MAX; boxes.len()];
             for (q, s) in random_lines(&mut below, 400).iter().enumerate() {
+                let s = Line {
+                    a: at(s.a),
+                    b: at(s.b),
+                    pad: (0.0, 0.0),
+                };
                 let bx = Box2::around(s.a, s.b, (0.0, 0.0));
                 let mut got = Vec::new();
                 grid.visit_segment(s.a, s.b, &bx, q, &mut stamp, |k, _| {
@@ -632,8 +653,9 @@ mod tests {
     #[test]
     fn too_many_entries_make_the_grid_coarser() {
         let mut below = crate::testing::below(0x9_12d8);
-        // Long horizontal edges, one above the other, across the extent.
-        let lines: Vec<Line> = (0..2000)
+        // Long horizontal edges, one above the other, across the extent, and long
+        // diagonal ones (listed along their length).
+        let mut lines: Vec<Line> = (0..2000)
             .map(|k| Line {
                 a: Point2::new(below(100) as f64, 5.0 * k as f64),
                 b: Point2::new(
@@ -643,6 +665,15 @@ mod tests {
                 pad: (0.5, 0.5),
             })
             .collect();
+        lines.extend((0..300).map(|_| {
+            let a = Point2::new(below(2000) as f64, below(2000) as f64);
+            let (dx, dy) = (7_000.0 + below(500) as f64, 6_000.0 + below(2000) as f64);
+            Line {
+                a,
+                b: Point2::new(a.x + dx, a.y + dy),
+                pad: (0.25, 0.75),
+            }
+        }));
         let boxes: Vec<Box2> = lines
             .iter()
             .map(|l| Box2::around(l.a, l.b, l.pad))
@@ -652,6 +683,8 @@ mod tests {
         let coarse = Grid::at_most(&boxes, lines.len(), |k| lines[k], most);
         assert!(coarse.items.len() <= most, "{} entries", coarse.items.len());
         assert!(coarse.nx * coarse.ny < fine.nx * fine.ny);
+        // (The diagonal ones are long on both grids.)
+        assert!((2000..lines.len()).all(|k| fine.is_long(k) && coarse.is_long(k)));
         let queries: Vec<Box2> = (0..4000)
             .map(|_| {
                 let (x, y) = (below(10_000) as f64, below(10_000) as f64);

@@ -464,12 +464,15 @@ pub(super) fn failing_rings(
 
 /// A point (its index in the rings' points) and an edge that may come near each other
 /// as rounding moves them, or as [`nudge`] moves their points further (by at most one
-/// float per axis: the boxes below hold that too).
+/// float per axis: a pair left out stays on its side, see `line_of` in
+/// [`near_pairs_on_grid`]).
 type Pair = (u32, Edge);
 
 /// The pairs [`passes`] has to decide: every point against the moved edges near it,
 /// every edge whose ends did not move against the moved points near it (a moved edge
-/// against a point is in the first), each pair once, with boxes that overlap.
+/// against a point is in the first), each pair once, with boxes that overlap (on the
+/// grid, a long edge only where its widened segment meets the point's box: see
+/// `line_of` in [`near_pairs_on_grid`]).
 fn near_pairs(r: &RoundedRings) -> Scratch<Pair> {
     near_pairs_by(r, Search::Auto)
 }
@@ -486,7 +489,8 @@ enum Search {
     Grid,
 }
 
-/// [`near_pairs`] by the search `how`: the same pairs either way.
+/// [`near_pairs`] by the search `how`: the same pairs either way, but for the pairs of
+/// long edges with points in their boxes and far from them, which the grid leaves out.
 fn near_pairs_by(r: &RoundedRings, how: Search) -> Scratch<Pair> {
     let point_box = |i: usize| point_box(r, i);
     let moves = |e: &Edge| r.edge_moved(e);
@@ -587,7 +591,14 @@ fn near_pairs_on_grid(
     moved_edges: &[Edge],
     boxes: &[Box2],
 ) -> Scratch<Pair> {
-    // (The moved edges' boxes are their segments widened by four reaches: `edge_box`.)
+    // A long edge's footprint: its segment widened as its box is, by four reaches. A
+    // point whose box (four of its reaches and two gaps) misses it is more than four
+    // edge reaches and four of its own from the segment; after nudges (the ends moved
+    // by up to a reach, the point by up to its own) the rounded edge is still more
+    // than two reaches from the point, and the exact edge is within half a reach of
+    // the first rounded one: the point stays strictly on its exact side, so `passes`
+    // holds for the pair, listed or not (as for the boxes, which `meets` may find
+    // touching after a nudge where the side decides).
     let line_of = |k: usize| {
         let e = &moved_edges[k];
         let (hx, hy) = edge_reach(r, e);
