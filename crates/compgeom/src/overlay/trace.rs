@@ -2259,6 +2259,22 @@ mod tests {
             super::windings_left_of(&segs, 0, &low).is_none(),
             "the winding strips should be over budget here"
         );
+        // (The components' smallest vertices: each ring's first point here.)
+        let firsts: Vec<Point2> = [a.0.clone(), b.0.clone()]
+            .concat()
+            .iter()
+            .flat_map(|p| p.rings().map(|r| r[0]).collect::<Vec<_>>())
+            .collect();
+        let flat = crate::dcel::Flat::of_segments(&segs).unwrap();
+        let seg_of = |i: usize| segs[flat.sources_of(i)[0].segment];
+        let queries: Vec<u32> = (0..flat.vertices.len() as u32)
+            .filter(|&v| firsts.contains(&flat.vertices.approx(v as usize)))
+            .collect();
+        assert_eq!(queries.len(), firsts.len());
+        assert!(
+            super::faces_left_by(&flat, seg_of, &queries, 0).is_some(),
+            "the nearest-edge search should be within its budget here"
+        );
         agree(&a, &b).unwrap();
     }
 
