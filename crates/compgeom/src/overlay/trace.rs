@@ -2200,15 +2200,9 @@ mod tests {
         let triangle = vec![f(0.5, 0.25), f(side - 0.25, 0.75), f(0.75, side - 0.5)];
         let b = MultiPolygon(vec![Polygon::new(triangle, vec![])]);
         let (segs, _) = oriented_segments(&a, &b, FillRule::EvenOdd).unwrap();
-        let flat = crate::dcel::Flat::of_segments(&segs).unwrap();
-        let seg_of = |i: usize| segs[flat.sources_of(i)[0].segment];
         // (The holes' lowest corners: the components' smallest vertices.)
-        let queries: Vec<u32> = (0..flat.vertices.len() as u32)
-            .filter(|&v| corners.contains(&flat.vertices.approx(v as usize)))
-            .collect();
-        assert_eq!(queries.len(), corners.len());
         assert!(
-            super::faces_left_by(&flat, seg_of, &queries, 0).is_none(),
+            !nearest_edges_within_budget(&segs, &corners),
             "the nearest-edge search should be over budget here"
         );
         agree(&a, &b).unwrap();
@@ -2265,17 +2259,23 @@ mod tests {
             .iter()
             .flat_map(|p| p.rings().map(|r| r[0]).collect::<Vec<_>>())
             .collect();
-        let flat = crate::dcel::Flat::of_segments(&segs).unwrap();
-        let seg_of = |i: usize| segs[flat.sources_of(i)[0].segment];
-        let queries: Vec<u32> = (0..flat.vertices.len() as u32)
-            .filter(|&v| firsts.contains(&flat.vertices.approx(v as usize)))
-            .collect();
-        assert_eq!(queries.len(), firsts.len());
         assert!(
-            super::faces_left_by(&flat, seg_of, &queries, 0).is_some(),
+            nearest_edges_within_budget(&segs, &firsts),
             "the nearest-edge search should be within its budget here"
         );
         agree(&a, &b).unwrap();
+    }
+
+    /// Whether the strips' nearest-edge search answers (within its budget) for the
+    /// vertices of the arrangement of `segs` at `points` (each point a vertex).
+    fn nearest_edges_within_budget(segs: &[Segment2], points: &[Point2]) -> bool {
+        let flat = crate::dcel::Flat::of_segments(segs).unwrap();
+        let seg_of = |i: usize| segs[flat.sources_of(i)[0].segment];
+        let queries: Vec<u32> = (0..flat.vertices.len() as u32)
+            .filter(|&v| points.contains(&flat.vertices.approx(v as usize)))
+            .collect();
+        assert_eq!(queries.len(), points.len());
+        super::faces_left_by(&flat, seg_of, &queries, 0).is_some()
     }
 
     proptest! {
