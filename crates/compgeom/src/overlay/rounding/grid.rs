@@ -87,6 +87,12 @@ const LINE_FROM_CELLS: usize = 2;
 const MOST_ENTRIES_PER_ITEM: usize = 64;
 const MOST_ENTRIES_BEYOND: usize = 1 << 24;
 
+/// The most entries a grid (or [`super::tree::Tree`]) over `count` items may list (at
+/// most `u32::MAX`: entries are counted in u32).
+pub(super) fn most_entries(count: usize) -> usize {
+    (MOST_ENTRIES_PER_ITEM * count + MOST_ENTRIES_BEYOND).min(u32::MAX as usize)
+}
+
 /// The relative error bound of the points [`Grid::line_ranges`] computes along a
 /// segment (a few float gaps; 2⁻⁴⁸), and its absolute term (for subnormal coordinates).
 const REL_ALONG: (f64, f64) = (1.0 / (1u64 << 48) as f64, f64::MIN_POSITIVE);
@@ -94,27 +100,24 @@ const REL_ALONG: (f64, f64) = (1.0 / (1u64 << 48) as f64, f64::MIN_POSITIVE);
 /// A query over more cells than the items plus this many visits every item instead.
 const ALL_ITEMS_BEYOND: usize = 64;
 
-impl Grid {
-    /// The grid of the items with boxes `boxes`, the first `segments` of them segments
-    /// `line_of(k)` (`boxes[k]` is `Box2::around(l.a, l.b, l.pad)` for `l = line_of(k)`;
-    /// asked only for those whose boxes span many cells).
-    pub(super) fn new(boxes: &[Box2], segments: usize, line_of: impl Fn(usize) -> Line) -> Grid {
-        Grid::at_most(
-            boxes,
-            segments,
-            line_of,
-            // (Entries are counted in u32.)
-            (MOST_ENTRIES_PER_ITEM * boxes.len() + MOST_ENTRIES_BEYOND).min(u32::MAX as usize),
-        )
-    }
+/// What the grids over some boxes are laid on: the boxes' extent, the powers of two
+/// the coordinates are scaled by ([`prescale`]), the scaled extent's corner and sides,
+/// and the cells a grid starts with.
+struct Frame {
+    extent: Box2,
+    sx: f64,
+    sy: f64,
+    x0: f64,
+    y0: f64,
+    w: f64,
+    h: f64,
+    nx: usize,
+    ny: usize,
+    count: usize,
+}
 
-    /// [`Grid::new`] with at most `most` entries (unless in one cell).
-    fn at_most(
-        boxes: &[Box2],
-        segments: usize,
-        line_of: impl Fn(usize) -> Line,
-        most: usize,
-    ) -> Grid {
+impl Frame {
+    fn of(boxes: &[Box2]) -> Frame {
         let mut extent = Box2 {
             x0: f64::INFINITY,
             x1: f64::NEG_INFINITY,
@@ -152,7 +155,32 @@ impl Grid {
         let (x0, y0) = (ex0 * sx, ey0 * sy);
         let (w, h) = (ex1 * sx - x0, ey1 * sy - y0);
         // (The ratio of the true sides, w / sx over h / sy.)
-        let (mut nx, mut ny) = cells_for(w / h * (sy / sx), count);
+        let (nx, ny) = cells_for(w / h * (sy / sx), count);
+        Frame {
+            extent,
+            sx,
+            sy,
+            x0,
+            y0,
+            w,
+            h,
+            nx,
+            ny,
+            count,
+        }
+    }
+
+    /// The grid of `nx` × `ny` cells over the frame, or `None` where it would list more
+    /// than `most` entries ([`Grid::fill`]).
+    fn grid(
+        &self,
+        nx: usize,
+        ny: usize,
+        boxes: &[Box2],
+        segments: usize,
+        line_of: &impl Fn(usize) -> Line,
+        most: usize,
+    ) -> Option<Grid> {
         // (A zero side gives steps that put everything in one: still monotone, so still
         // right, and the one cell that side needs.)
         let steps = |lo: f64, len: f64, n: usize| {
@@ -160,29 +188,93 @@ impl Grid {
             let per_unit = if per_unit.is_finite() { per_unit } else { 0.0 };
             Steps::per_unit(lo, per_unit, n as u32)
         };
+        let mut grid = Grid {
+            xs: steps(self.x0, self.w, nx),
+            ys: steps(self.y0, self.h, ny),
+            sx: self.sx,
+            sy: self.sy,
+            nx,
+            ny,
+            extent: self.extent,
+            starts: Vec::new(),
+            items: Vec::new(),
+            long: Vec::new(),
+            count: self.count,
+        };
+        grid.fill(boxes, segments, line_of, most).then_some(grid)
+    }
+}
+
+impl Grid {
+    /// The grid of the items with boxes `boxes`, the first `segments` of them segments
+    /// `line_of(k)` (`boxes[k]` is `Box2::around(l.a, l.b, l.pad)` for `l = line_of(k)`;
+    /// asked only for those whose boxes span many cells).
+    pub(super) fn new(boxes: &[Box2], segments: usize, line_of: impl Fn(usize) -> Line) -> Grid {
+        Grid::at_most(boxes, segments, line_of, most_entries(boxes.len()))
+    }
+
+    /// The most items any one cell lists.
+    pub(super) fn fullest_cell(&self) -> usize {
+        self.starts
+            .windows(2)
+            .map(|w| (w[1] - w[0]) as usize)
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// How many entries the cells hold in all.
+    pub(super) fn entries(&self) -> usize {
+        self.items.len()
+    }
+
+    /// How many items the cells of `points` list in all (each point's own cell; points
+    /// outside the items' extent none): about how many items a search of the points
+    /// meets.
+    pub(super) fn listed_at(&self, points: &[Point2]) -> usize {
+        let e = &self.extent;
+        points
+            .iter()
+            .filter(|p| e.x0 <= p.x && p.x <= e.x1 && e.y0 <= p.y && p.y <= e.y1)
+            .map(|p| {
+                let x = self.xs.index(p.x * self.sx);
+                let y = self.ys.index(p.y * self.sy);
+                let cell = y * self.nx + x;
+                (self.starts[cell + 1] - self.starts[cell]) as usize
+            })
+            .sum()
+    }
+
+    /// [`Grid::new`] with at most `most` entries (unless in one cell).
+    fn at_most(
+        boxes: &[Box2],
+        segments: usize,
+        line_of: impl Fn(usize) -> Line,
+        most: usize,
+    ) -> Grid {
+        let frame = Frame::of(boxes);
+        let (mut nx, mut ny) = (frame.nx, frame.ny);
         loop {
-            let mut grid = Grid {
-                xs: steps(x0, w, nx),
-                ys: steps(y0, h, ny),
-                sx,
-                sy,
-                nx,
-                ny,
-                extent,
-                starts: Vec::new(),
-                items: Vec::new(),
-                long: Vec::new(),
-                count,
-            };
             // (One cell holds each item once, whatever the bound.)
             let most = if nx * ny == 1 { usize::MAX } else { most };
-            if grid.fill(boxes, segments, &line_of, most) {
+            if let Some(grid) = frame.grid(nx, ny, boxes, segments, &line_of, most) {
                 return grid;
             }
             // Too many entries: half as many cells per axis, a quarter in all (long
             // footprints then cover about half as many).
             (nx, ny) = (nx.div_ceil(2), ny.div_ceil(2));
         }
+    }
+
+    /// The grid [`Grid::new`] tries first (about two cells per item), or `None` where it
+    /// would list more than `most` entries.
+    pub(super) fn first_at_most(
+        boxes: &[Box2],
+        segments: usize,
+        line_of: impl Fn(usize) -> Line,
+        most: usize,
+    ) -> Option<Grid> {
+        let frame = Frame::of(boxes);
+        frame.grid(frame.nx, frame.ny, boxes, segments, &line_of, most)
     }
 
     /// The cell range of a box, clamped to the grid (monotone in the box's bounds, so
@@ -414,21 +506,29 @@ impl Grid {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::super::{fat_segment_meets_box, segment_meets_box};
     use super::*;
+
+    /// A search's `visit(query box, query number, stamp, f)`.
+    pub(in super::super) type Visit<'a> =
+        dyn Fn(&Box2, usize, &mut [usize], &mut dyn FnMut(usize)) + 'a;
+
+    fn visits(grid: &Grid) -> impl Fn(&Box2, usize, &mut [usize], &mut dyn FnMut(usize)) + '_ {
+        |b, q, stamp, f| grid.visit(b, q, stamp, f)
+    }
 
     /// Each `step`-th box, as a query, is visited by exactly the boxes that overlap it
     /// (brute force), each once.
     fn assert_visits_every_overlapping_box(grid: &Grid, boxes: &[Box2], step: usize, round: usize) {
-        assert_visits_every_footprint(grid, boxes, &[], boxes, step, round);
+        assert_visits_every_footprint(&visits(grid), boxes, &[], boxes, step, round);
     }
 
     /// Each `step`-th query box is visited by every item whose footprint meets it
     /// (brute force: boxes overlap, and the widened segment meets the query for a
     /// line), each once.
-    fn assert_visits_every_footprint(
-        grid: &Grid,
+    pub(in super::super) fn assert_visits_every_footprint(
+        visit: &Visit,
         boxes: &[Box2],
         lines: &[Line],
         queries: &[Box2],
@@ -445,7 +545,7 @@ mod tests {
         for (q, b) in queries.iter().enumerate().step_by(step) {
             let mut got = Vec::new();
             let mut seen = vec![false; boxes.len()];
-            grid.visit(b, q, &mut stamp, |k| {
+            visit(b, q, &mut stamp, &mut |k| {
                 assert!(!seen[k], "round {round}, query {q}: {k} twice");
                 seen[k] = true;
                 if meets(k, b) {
@@ -521,7 +621,10 @@ mod tests {
 
     /// Random segments: long ones at every angle (axis-parallel, steep, flat), short
     /// ones and points, widened by pads from nothing to a few units.
-    fn random_lines(below: &mut impl FnMut(u64) -> u64, count: usize) -> Vec<Line> {
+    pub(in super::super) fn random_lines(
+        below: &mut impl FnMut(u64) -> u64,
+        count: usize,
+    ) -> Vec<Line> {
         (0..count)
             .map(|k| {
                 let a = Point2::new(below(10_000) as f64, below(10_000) as f64);
@@ -622,7 +725,7 @@ mod tests {
                 })
                 .collect();
             queries.extend_from_slice(&boxes);
-            assert_visits_every_footprint(&grid, &boxes, &lines, &queries, 1, round);
+            assert_visits_every_footprint(&visits(&grid), &boxes, &lines, &queries, 1, round);
             // Segments as queries, against the items that are boxes.
             let mut stamp = vec![usize::MAX; boxes.len()];
             for (q, s) in random_lines(&mut below, 400).iter().enumerate() {
@@ -697,7 +800,7 @@ mod tests {
             })
             .collect();
         for (round, grid) in [fine, coarse].iter().enumerate() {
-            assert_visits_every_footprint(grid, &boxes, &lines, &queries, 1, round);
+            assert_visits_every_footprint(&visits(grid), &boxes, &lines, &queries, 1, round);
         }
         // At most one cell: every item, whatever the bound.
         let one = Grid::at_most(&boxes, lines.len(), |k| lines[k], 0);

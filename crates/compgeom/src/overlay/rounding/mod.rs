@@ -87,6 +87,7 @@ use mend::nudge;
 use sieve::Sieve;
 use std::cmp::Ordering;
 use strips::Strips;
+use tree::Tree;
 
 mod faces;
 mod grid;
@@ -94,6 +95,7 @@ mod mend;
 mod sieve;
 mod straight;
 mod strips;
+mod tree;
 
 pub(super) use faces::{mend_faces, suspect_faces};
 pub(super) use straight::{stands_for_any, straighten_all, without_straight_points};
@@ -487,6 +489,9 @@ enum Search {
     OneByOne,
     /// On a grid.
     Grid,
+    /// On a quadtree over the points ([`Tree`]; on the grid where it would list the
+    /// items too many times).
+    Tree,
 }
 
 /// [`near_pairs`] by the search `how`: the same pairs either way, but for the pairs of
@@ -521,12 +526,12 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Scratch<Pair> {
     let one_by_one = match how {
         Search::Auto => queries * boxes.len() <= BRUTE_FORCE_TESTS,
         Search::OneByOne => true,
-        Search::Grid => false,
+        Search::Grid | Search::Tree => false,
     };
     if one_by_one {
         near_pairs_one_by_one(r, &moved_points, &moved_edges, &boxes)
     } else {
-        near_pairs_on_grid(r, &moved_points, &moved_edges, &boxes)
+        near_pairs_on_grid(r, &moved_points, &moved_edges, &boxes, how)
     }
 }
 
@@ -583,13 +588,15 @@ fn near_pairs_one_by_one(
     pairs
 }
 
-/// [`near_pairs_by`] on a grid of the moved items' boxes; arguments as in
+/// [`near_pairs_by`] on a grid of the moved items' boxes, or where the grid crowds (or
+/// `how` asks for it) on a quadtree over the points ([`Index`]); other arguments as in
 /// [`near_pairs_one_by_one`].
 fn near_pairs_on_grid(
     r: &RoundedRings,
     moved_points: &[usize],
     moved_edges: &[Edge],
     boxes: &[Box2],
+    how: Search,
 ) -> Scratch<Pair> {
     // A long edge's footprint: its segment widened as its box is, by four reaches. A
     // point whose box (four of its reaches and two gaps) misses it is more than four
@@ -608,7 +615,24 @@ fn near_pairs_on_grid(
             pad: (4.0 * hx, 4.0 * hy),
         }
     };
-    let grid = Grid::new(boxes, moved_edges.len(), line_of);
+    match Index::new(r, boxes, moved_edges.len(), line_of, how) {
+        Index::Grid(grid) => near_pairs_in(r, moved_points, moved_edges, boxes, &grid, line_of),
+        Index::Tree(tree) => near_pairs_in(r, moved_points, moved_edges, boxes, &tree, line_of),
+    }
+}
+
+/// [`near_pairs_on_grid`] with the moved items looked up in `grid` (each search its
+/// own copy: a choice per query cost the water map's search 2%); `line_of(k)` is moved
+/// edge `k`'s footprint.
+#[inline(always)]
+fn near_pairs_in(
+    r: &RoundedRings,
+    moved_points: &[usize],
+    moved_edges: &[Edge],
+    boxes: &[Box2],
+    grid: &impl ItemIndex,
+    line_of: impl Fn(usize) -> Line,
+) -> Scratch<Pair> {
     // A long edge is listed along its length, and its box holds many points that are
     // nowhere near it: those it is tested against exactly before they make a pair.
     // Each point against the moved edges near it, then each unmoved edge (query
@@ -676,6 +700,134 @@ fn near_pairs_on_grid(
         }
     });
     pairs
+}
+
+/// Where [`near_pairs_on_grid`] looks the moved items up: the grid, or where the points
+/// of its cells meet too many items there ([`CROWDED`]) or the items would be listed
+/// in too many of its cells ([`FIRST_GRID_ENTRIES`]), a quadtree over the points (and
+/// where that lists too many entries, a coarser grid).
+enum Index {
+    Grid(Grid),
+    Tree(Tree),
+}
+
+/// Where the points of a result meet more than this many items per point and item on
+/// average in their cells of the grid (looked at only where some cell holds more than
+/// [`CROWDED_CELL`] items), the search takes a quadtree over the points instead: 10⁴
+/// long strips across a triangle gathered about 600 long edges and as many points in
+/// the cells along the triangle's sides (3.2 s for their symmetric difference).
+const CROWDED: usize = 32;
+const CROWDED_CELL: usize = 64;
+
+/// The grid is looked at for crowding only where it lists more than this many entries
+/// per item (long items across many cells; the crowding seen so far was of long edges,
+/// and the look over every cell and point is then left out of the common case).
+const CROWDED_ENTRIES: usize = 4;
+
+/// The first grid lists at most this many entries per item (with two cells per item,
+/// that many cells per item on average); past it the quadtree is tried before a coarser
+/// grid (each grid tried costs up to its bound).
+const FIRST_GRID_ENTRIES: usize = 16;
+
+impl Index {
+    fn new(
+        r: &RoundedRings,
+        boxes: &[Box2],
+        segments: usize,
+        line_of: impl Fn(usize) -> Line + Copy,
+        how: Search,
+    ) -> Index {
+        let count = boxes.len();
+        if how == Search::Auto {
+            // The first grid, unless it crowds or lists too many entries (long edges
+            // across many of its cells: where there are few, it is mostly kept).
+            let first = Grid::first_at_most(boxes, segments, line_of, FIRST_GRID_ENTRIES * count);
+            if let Some(grid) = first {
+                let crowded = grid.entries() > CROWDED_ENTRIES * count
+                    && grid.fullest_cell() > CROWDED_CELL
+                    && grid.listed_at(&r.points) > CROWDED * (r.points.len() + count);
+                if !crowded {
+                    return Index::Grid(grid);
+                }
+            }
+        }
+        if how != Search::Grid {
+            let most = grid::most_entries(count);
+            if let Some(tree) = Tree::new(&r.points, boxes, segments, line_of, most) {
+                return Index::Tree(tree);
+            }
+        }
+        // (A grid made coarser until it lists few enough entries.)
+        Index::Grid(Grid::new(boxes, segments, line_of))
+    }
+}
+
+/// What the search for near pairs asks of where the moved items are listed ([`Grid`]
+/// or [`Tree`]): every item whose footprint meets a query's is met, once per query.
+trait ItemIndex {
+    /// Whether item `k` is a segment the search tests exactly against a point's box.
+    fn is_long(&self, k: usize) -> bool;
+    /// Calls `f` once for each item whose footprint may meet box `b` ([`Grid::visit`]).
+    fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize));
+    /// The same for segment `a b` with box `bx`; `f(item, long)`, with `long` where the
+    /// search is to test the segment against the item's box exactly.
+    fn visit_segment(
+        &self,
+        a: Point2,
+        b: Point2,
+        bx: &Box2,
+        query: usize,
+        stamp: &mut [usize],
+        f: impl FnMut(usize, bool),
+    );
+}
+
+impl ItemIndex for Grid {
+    fn is_long(&self, k: usize) -> bool {
+        Grid::is_long(self, k)
+    }
+
+    #[inline(always)]
+    fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize)) {
+        Grid::visit(self, b, query, stamp, f)
+    }
+
+    #[inline(always)]
+    fn visit_segment(
+        &self,
+        a: Point2,
+        b: Point2,
+        bx: &Box2,
+        query: usize,
+        stamp: &mut [usize],
+        f: impl FnMut(usize, bool),
+    ) {
+        Grid::visit_segment(self, a, b, bx, query, stamp, f)
+    }
+}
+
+impl ItemIndex for Tree {
+    fn is_long(&self, k: usize) -> bool {
+        Tree::is_long(self, k)
+    }
+
+    #[inline(always)]
+    fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize)) {
+        Tree::visit(self, b, query, stamp, f)
+    }
+
+    #[inline(always)]
+    fn visit_segment(
+        &self,
+        a: Point2,
+        b: Point2,
+        bx: &Box2,
+        query: usize,
+        stamp: &mut [usize],
+        f: impl FnMut(usize, bool),
+    ) {
+        Tree::visit_segment(self, a, b, bx, query, stamp, f)
+    }
 }
 
 /// Calls `f(k)` for each box `boxes[k]` that overlaps `b`, in order. The tests of 64
@@ -870,8 +1022,8 @@ struct ExactSides<F> {
 mod tests {
     use super::{
         apart_along_an_axis, clearly_apart, edge_reach, failing_rings, fat_segment_meets_box, gap,
-        meets, near_pairs_by, reach_of, segment_meets_box, Box2, Edge, ExactPoints, Pair, PointIds,
-        RoundedRings, Search, Toward,
+        meets, near_pairs_by, point_box, reach_of, segment_meets_box, Box2, Edge, ExactPoints,
+        Index, Line, Pair, PointIds, RoundedRings, Search, Toward,
     };
     use crate::kernel::{orient2d, Orientation, Point2};
     use std::cmp::Ordering;
@@ -948,10 +1100,10 @@ mod tests {
         pairs
     }
 
-    /// The near pairs, found one by one or on the grid, are pairs whose boxes overlap,
-    /// once, and among them every pair whose edge (widened) meets the point's box (on
-    /// the grid, long edges are listed along their length: pairs in their boxes but far
-    /// from them are not found there): random rings on a small integer grid (shared points, collinear
+    /// The near pairs, found one by one, on the grid or on the quadtree, are pairs whose
+    /// boxes overlap, once, and among them every pair whose edge (widened) meets the
+    /// point's box (on the grid, long edges are listed along their length, and on the
+    /// tree all edges: pairs in their boxes but far from them are not found there): random rings on a small integer grid (shared points, collinear
     /// runs), around one point with coordinates a few floats apart, at ±1e300, among
     /// subnormals, near ±`f64::MAX`, and with x and y at scales from 1e-300 to 1e300 in
     /// one ring (grids of one cell, of a subnormal cell size, cells numbered past 2³²),
@@ -1014,7 +1166,7 @@ mod tests {
                 r.starts.push(r.points.len());
             }
             let (want, must) = (every_near_pair(&r, false), every_near_pair(&r, true));
-            for how in [Search::OneByOne, Search::Grid] {
+            for how in [Search::OneByOne, Search::Grid, Search::Tree] {
                 let mut got: Vec<_> = near_pairs_by(&r, how).iter().copied().map(key).collect();
                 got.sort_unstable();
                 let once = got.windows(2).all(|w| w[0] != w[1]);
@@ -1031,6 +1183,88 @@ mod tests {
         assert!(found > 20_000, "only {found} pairs");
         // (Some pairs of long edges were passed over on the grid.)
         assert!(left_out > 0);
+    }
+
+    /// Where the points and the long moved edges of a result gather in the grid's cells
+    /// (a comb of 2 000 long thin teeth whose feet moved: about 120 edges and 60 points
+    /// in a cell), the search takes the quadtree, and finds pairs whose boxes overlap,
+    /// once, among them every pair whose edge (widened) meets the point's box: points
+    /// on the teeth's sides are found, and far fewer pairs than those whose boxes
+    /// overlap (the teeth's boxes hold their neighbours' points).
+    #[test]
+    fn crowded_results_are_searched_on_the_tree() {
+        let mut r = RoundedRings {
+            starts: vec![0].into(),
+            ..RoundedRings::default()
+        };
+        let teeth: u32 = 2_000;
+        for i in 0..teeth {
+            let x = 0.05 * i as f64;
+            // (A foot at a crossing that moved, a tip that did not.)
+            r.points.push(p(x, 0.0));
+            r.ids.push(PointIds::of(2 * i, true));
+            r.points.push(p(x + 0.025, 1_000.0 + (i % 3) as f64));
+            r.ids.push(PointIds::of(2 * i + 1, false));
+        }
+        r.starts.push(r.points.len());
+        // Another ring through points within a float or so of every seventh tooth's
+        // first side (its middle, computed in floats): pairs the search must find.
+        for i in (0..teeth as usize).step_by(7) {
+            let (a, b) = (r.points[2 * i], r.points[2 * i + 1]);
+            r.points.push(p(0.5 * (a.x + b.x), 0.5 * (a.y + b.y)));
+            r.ids.push(PointIds::of(2 * teeth + i as u32, false));
+        }
+        r.starts.push(r.points.len());
+        let moved: Vec<usize> = (0..r.points.len()).filter(|&i| r.moved(i)).collect();
+        let mut edges = Vec::new();
+        r.for_each_moved_edge(&moved, |e| edges.push(e));
+        let boxes: Vec<Box2> = edges
+            .iter()
+            .map(|e| {
+                let (hx, hy) = edge_reach(&r, e);
+                Box2::around(r.points[e.i], r.points[e.j], (4.0 * hx, 4.0 * hy))
+            })
+            .chain(moved.iter().map(|&i| point_box(&r, i)))
+            .collect();
+        let line_of = |k: usize| {
+            let e = &edges[k];
+            let (hx, hy) = edge_reach(&r, e);
+            Line {
+                a: r.points[e.i],
+                b: r.points[e.j],
+                pad: (4.0 * hx, 4.0 * hy),
+            }
+        };
+        let index = Index::new(&r, &boxes, edges.len(), line_of, Search::Auto);
+        assert!(matches!(index, Index::Tree(_)), "the grid was taken");
+        let key = |(x, e): Pair| (x, e.i, e.j, e.a, e.b);
+        let sorted = |how: Search| {
+            let mut got: Vec<_> = near_pairs_by(&r, how).iter().copied().map(key).collect();
+            got.sort_unstable();
+            got
+        };
+        let (want, got) = (sorted(Search::OneByOne), sorted(Search::Auto));
+        let must: Vec<_> = want
+            .iter()
+            .copied()
+            .filter(|&(x, i, j, _, _)| {
+                let x = x as usize;
+                let e = Edge { i, j, a: 0, b: 0 };
+                let (hx, hy) = edge_reach(&r, &e);
+                let (a, b) = (r.points[i], r.points[j]);
+                fat_segment_meets_box(a, b, (4.0 * hx, 4.0 * hy), &point_box(&r, x))
+            })
+            .collect();
+        assert!(got.windows(2).all(|w| w[0] != w[1]));
+        assert!(got.iter().all(|q| want.binary_search(q).is_ok()));
+        assert!(must.iter().all(|q| got.binary_search(q).is_ok()));
+        assert!(
+            must.len() >= (teeth / 7) as usize && 4 * got.len() < want.len(),
+            "{} {} {}",
+            must.len(),
+            got.len(),
+            want.len()
+        );
     }
 
     /// The float first test never calls apart a widened segment and box that meet
