@@ -1457,7 +1457,7 @@ fn io_paths_oriented(m: &MultiPolygon) -> Vec<Vec<[f64; 2]>> {
 
 /// `BOOLEAN_ONE=ours|io|geo` (and `BOOLEAN_N`, default 1e5;
 /// `BOOLEAN_INPUT=star|squares|turned|water|jts|ngons|dissolve`, or one of the long-edge
-/// families `nested|strips|diagonal|holes` ([`long_edge_family`], `BOOLEAN_N` of them,
+/// families `nested|strips|diagonal|spikes|holes` ([`long_edge_family`], `BOOLEAN_N` of them,
 /// intersected with a triangle, or `BOOLEAN_OP`; one call, timed), `BOOLEAN_REPS` calls except
 /// for the squares): run one contender on the star union, the squares input (`turned`:
 /// turned by random angles; `BOOLEAN_SPREAD=1`: over a larger square, at the density of
@@ -1704,6 +1704,7 @@ fn per_pair(
 ///   cutting through all of them;
 /// - `strips`: `n` long thin horizontal quadrilaterals one above the other;
 /// - `diagonal`: `n` long thin parallel diagonal quadrilaterals side by side;
+/// - `spikes`: one star of `n` spikes of length 10 `n` meeting near its centre;
 /// - `holes`: one square with about `n` square holes in rows (a field of holes) and
 ///   the triangle's long side across the rows.
 fn long_edge_family(name: &str, n: usize) -> Option<(MultiPolygon, MultiPolygon)> {
@@ -1742,6 +1743,18 @@ fn long_edge_family(name: &str, n: usize) -> Option<(MultiPolygon, MultiPolygon)
                 )
             })
             .collect(),
+        "spikes" => {
+            // A star of n spikes from radius 10 n to 1, all meeting near its centre.
+            let outline = (0..2 * n)
+                .map(|i| {
+                    let a = std::f64::consts::PI * i as f64 / k;
+                    let r = if i % 2 == 0 { 10.0 * k } else { 1.0 };
+                    p(r * a.cos(), r * a.sin())
+                })
+                .collect();
+            let a = MultiPolygon(vec![Polygon::new(outline, vec![])]);
+            return Some((a, triangle(9.0 * k)));
+        }
         "holes" => {
             let rows = (k.sqrt().ceil() as usize).max(1);
             let side = 2.0 * rows as f64 + 1.0;

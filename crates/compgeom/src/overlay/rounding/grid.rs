@@ -222,11 +222,6 @@ impl Grid {
             .unwrap_or(0)
     }
 
-    /// How many entries the cells hold in all.
-    pub(super) fn entries(&self) -> usize {
-        self.items.len()
-    }
-
     /// How many items the cells of `points` list in all (each point's own cell; points
     /// outside the items' extent none): about how many items a search of the points
     /// meets.

@@ -467,14 +467,14 @@ pub(super) fn failing_rings(
 /// A point (its index in the rings' points) and an edge that may come near each other
 /// as rounding moves them, or as [`nudge`] moves their points further (by at most one
 /// float per axis: a pair left out stays on its side, see `line_of` in
-/// [`near_pairs_on_grid`]).
+/// [`near_pairs_indexed`]).
 type Pair = (u32, Edge);
 
 /// The pairs [`passes`] has to decide: every point against the moved edges near it,
 /// every edge whose ends did not move against the moved points near it (a moved edge
 /// against a point is in the first), each pair once, with boxes that overlap (on the
-/// grid, a long edge only where its widened segment meets the point's box: see
-/// `line_of` in [`near_pairs_on_grid`]).
+/// grid, a long edge only where its widened segment meets the point's box, and on the
+/// quadtree every edge so: see `line_of` in [`near_pairs_indexed`]).
 fn near_pairs(r: &RoundedRings) -> Scratch<Pair> {
     near_pairs_by(r, Search::Auto)
 }
@@ -483,7 +483,8 @@ fn near_pairs(r: &RoundedRings) -> Scratch<Pair> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(not(test), allow(dead_code))]
 enum Search {
-    /// One by one when there are few ([`BRUTE_FORCE_TESTS`]), else on a grid.
+    /// One by one when there are few ([`BRUTE_FORCE_TESTS`]), else on a grid or a
+    /// quadtree ([`Index`]).
     Auto,
     /// Each point and edge against the moved items' boxes ([`Near`]).
     OneByOne,
@@ -495,7 +496,8 @@ enum Search {
 }
 
 /// [`near_pairs`] by the search `how`: the same pairs either way, but for the pairs of
-/// long edges with points in their boxes and far from them, which the grid leaves out.
+/// edges with points in their boxes and far from them, which the grid (for long edges)
+/// and the quadtree (for all) leave out.
 fn near_pairs_by(r: &RoundedRings, how: Search) -> Scratch<Pair> {
     let point_box = |i: usize| point_box(r, i);
     let moves = |e: &Edge| r.edge_moved(e);
@@ -531,7 +533,7 @@ fn near_pairs_by(r: &RoundedRings, how: Search) -> Scratch<Pair> {
     if one_by_one {
         near_pairs_one_by_one(r, &moved_points, &moved_edges, &boxes)
     } else {
-        near_pairs_on_grid(r, &moved_points, &moved_edges, &boxes, how)
+        near_pairs_indexed(r, &moved_points, &moved_edges, &boxes, how)
     }
 }
 
@@ -591,15 +593,15 @@ fn near_pairs_one_by_one(
 /// [`near_pairs_by`] on a grid of the moved items' boxes, or where the grid crowds (or
 /// `how` asks for it) on a quadtree over the points ([`Index`]); other arguments as in
 /// [`near_pairs_one_by_one`].
-fn near_pairs_on_grid(
+fn near_pairs_indexed(
     r: &RoundedRings,
     moved_points: &[usize],
     moved_edges: &[Edge],
     boxes: &[Box2],
     how: Search,
 ) -> Scratch<Pair> {
-    // A long edge's footprint: its segment widened as its box is, by four reaches. A
-    // point whose box (four of its reaches and two gaps) misses it is more than four
+    // An edge's footprint: its segment widened as its box is, by four reaches (looked
+    // at for long edges on the grid, for every edge on the quadtree). A point whose box (four of its reaches and two gaps) misses it is more than four
     // edge reaches and four of its own from the segment; after nudges (the ends moved
     // by up to a reach, the point by up to its own) the rounded edge is still more
     // than two reaches from the point, and the exact edge is within half a reach of
@@ -621,7 +623,7 @@ fn near_pairs_on_grid(
     }
 }
 
-/// [`near_pairs_on_grid`] with the moved items looked up in `grid` (each search its
+/// [`near_pairs_indexed`] with the moved items looked up in `grid` (each search its
 /// own copy: a choice per query cost the water map's search 2%); `line_of(k)` is moved
 /// edge `k`'s footprint.
 #[inline(always)]
@@ -633,8 +635,10 @@ fn near_pairs_in(
     grid: &impl ItemIndex,
     line_of: impl Fn(usize) -> Line,
 ) -> Scratch<Pair> {
-    // A long edge is listed along its length, and its box holds many points that are
-    // nowhere near it: those it is tested against exactly before they make a pair.
+    // A long edge is listed along its length (on the quadtree, every edge where it may
+    // meet a leaf), and its box holds many points that are nowhere near it: those it is
+    // tested against exactly before they make a pair (so is an unmoved edge looked up
+    // along its length, against the moved points' boxes).
     // Each point against the moved edges near it, then each unmoved edge (query
     // `points + i` for the one from point i) against the moved points near it; `stamp` as in
     // [`Grid::visit`].
@@ -702,7 +706,7 @@ fn near_pairs_in(
     pairs
 }
 
-/// Where [`near_pairs_on_grid`] looks the moved items up: the grid, or where the points
+/// Where [`near_pairs_indexed`] looks the moved items up: the grid, or where the points
 /// of its cells meet too many items there ([`CROWDED`]) or the items would be listed
 /// in too many of its cells ([`FIRST_GRID_ENTRIES`]), a quadtree over the points (and
 /// where that lists too many entries, a coarser grid).
@@ -715,19 +719,21 @@ enum Index {
 /// average in their cells of the grid (looked at only where some cell holds more than
 /// [`CROWDED_CELL`] items), the search takes a quadtree over the points instead: 10⁴
 /// long strips across a triangle gathered about 600 long edges and as many points in
-/// the cells along the triangle's sides (3.2 s for their symmetric difference).
+/// the cells along the triangle's sides (3.2 s for their symmetric difference), and a
+/// result gathered in a corner of the extent of its moved items has most of them in a
+/// cell or two.
 const CROWDED: usize = 32;
+
+/// The grid's points are counted against its items ([`CROWDED`]) only where some cell
+/// lists more than this many items.
 const CROWDED_CELL: usize = 64;
 
-/// The grid is looked at for crowding only where it lists more than this many entries
-/// per item (long items across many cells; the crowding seen so far was of long edges,
-/// and the look over every cell and point is then left out of the common case).
-const CROWDED_ENTRIES: usize = 4;
-
-/// The first grid lists at most this many entries per item (with two cells per item,
-/// that many cells per item on average); past it the quadtree is tried before a coarser
-/// grid (each grid tried costs up to its bound).
+/// The first grid lists at most this many entries per item, and
+/// [`FIRST_GRID_SLACK`] more (with two cells per item, that many cells per item on
+/// average); past it the quadtree is tried before a coarser grid (each grid tried
+/// costs up to its bound).
 const FIRST_GRID_ENTRIES: usize = 16;
+const FIRST_GRID_SLACK: usize = 1 << 16;
 
 impl Index {
     fn new(
@@ -741,10 +747,9 @@ impl Index {
         if how == Search::Auto {
             // The first grid, unless it crowds or lists too many entries (long edges
             // across many of its cells: where there are few, it is mostly kept).
-            let first = Grid::first_at_most(boxes, segments, line_of, FIRST_GRID_ENTRIES * count);
-            if let Some(grid) = first {
-                let crowded = grid.entries() > CROWDED_ENTRIES * count
-                    && grid.fullest_cell() > CROWDED_CELL
+            let most = FIRST_GRID_ENTRIES * count + FIRST_GRID_SLACK;
+            if let Some(grid) = Grid::first_at_most(boxes, segments, line_of, most) {
+                let crowded = grid.fullest_cell() > CROWDED_CELL
                     && grid.listed_at(&r.points) > CROWDED * (r.points.len() + count);
                 if !crowded {
                     return Index::Grid(grid);
@@ -1023,7 +1028,8 @@ mod tests {
     use super::{
         apart_along_an_axis, clearly_apart, edge_reach, failing_rings, fat_segment_meets_box, gap,
         meets, near_pairs_by, point_box, reach_of, segment_meets_box, Box2, Edge, ExactPoints,
-        Index, Line, Pair, PointIds, RoundedRings, Search, Toward,
+        Grid, Index, Line, Pair, PointIds, RoundedRings, Search, Toward, FIRST_GRID_ENTRIES,
+        FIRST_GRID_SLACK,
     };
     use crate::kernel::{orient2d, Orientation, Point2};
     use std::cmp::Ordering;
@@ -1176,7 +1182,9 @@ mod tests {
                 if how == Search::OneByOne {
                     assert_eq!(got, want, "round {round}");
                 }
-                left_out += want.len() - got.len();
+                if how == Search::Grid {
+                    left_out += want.len() - got.len();
+                }
             }
             found += must.len();
         }
@@ -1185,86 +1193,116 @@ mod tests {
         assert!(left_out > 0);
     }
 
-    /// Where the points and the long moved edges of a result gather in the grid's cells
-    /// (a comb of 2 000 long thin teeth whose feet moved: about 120 edges and 60 points
-    /// in a cell), the search takes the quadtree, and finds pairs whose boxes overlap,
-    /// once, among them every pair whose edge (widened) meets the point's box: points
-    /// on the teeth's sides are found, and far fewer pairs than those whose boxes
-    /// overlap (the teeth's boxes hold their neighbours' points).
-    #[test]
-    fn crowded_results_are_searched_on_the_tree() {
+    /// A comb of `teeth` thin teeth `spacing` apart and `height` high whose feet moved
+    /// (crossings), each seventh tooth with a point of another ring within a float or so
+    /// of its first side (its middle, computed in floats: pairs the search must find),
+    /// and with `far` a moved point far from the comb (which then lies in a corner of
+    /// the moved items' extent).
+    fn comb(teeth: u32, spacing: f64, height: f64, far: bool) -> RoundedRings {
         let mut r = RoundedRings {
             starts: vec![0].into(),
             ..RoundedRings::default()
         };
-        let teeth: u32 = 2_000;
         for i in 0..teeth {
-            let x = 0.05 * i as f64;
-            // (A foot at a crossing that moved, a tip that did not.)
+            let x = spacing * i as f64;
             r.points.push(p(x, 0.0));
             r.ids.push(PointIds::of(2 * i, true));
-            r.points.push(p(x + 0.025, 1_000.0 + (i % 3) as f64));
+            r.points.push(p(x + 0.5 * spacing, height + (i % 3) as f64));
             r.ids.push(PointIds::of(2 * i + 1, false));
         }
         r.starts.push(r.points.len());
-        // Another ring through points within a float or so of every seventh tooth's
-        // first side (its middle, computed in floats): pairs the search must find.
         for i in (0..teeth as usize).step_by(7) {
             let (a, b) = (r.points[2 * i], r.points[2 * i + 1]);
             r.points.push(p(0.5 * (a.x + b.x), 0.5 * (a.y + b.y)));
             r.ids.push(PointIds::of(2 * teeth + i as u32, false));
         }
         r.starts.push(r.points.len());
-        let moved: Vec<usize> = (0..r.points.len()).filter(|&i| r.moved(i)).collect();
-        let mut edges = Vec::new();
-        r.for_each_moved_edge(&moved, |e| edges.push(e));
-        let boxes: Vec<Box2> = edges
-            .iter()
-            .map(|e| {
-                let (hx, hy) = edge_reach(&r, e);
-                Box2::around(r.points[e.i], r.points[e.j], (4.0 * hx, 4.0 * hy))
-            })
-            .chain(moved.iter().map(|&i| point_box(&r, i)))
-            .collect();
-        let line_of = |k: usize| {
-            let e = &edges[k];
-            let (hx, hy) = edge_reach(&r, e);
-            Line {
-                a: r.points[e.i],
-                b: r.points[e.j],
-                pad: (4.0 * hx, 4.0 * hy),
+        if far {
+            for (k, q) in [p(1e6, 1e6), p(1e6 + 1.0, 1e6), p(1e6, 1e6 + 1.0)]
+                .into_iter()
+                .enumerate()
+            {
+                r.points.push(q);
+                r.ids.push(PointIds::of(3 * teeth + k as u32, k == 0));
             }
-        };
-        let index = Index::new(&r, &boxes, edges.len(), line_of, Search::Auto);
-        assert!(matches!(index, Index::Tree(_)), "the grid was taken");
-        let key = |(x, e): Pair| (x, e.i, e.j, e.a, e.b);
-        let sorted = |how: Search| {
-            let mut got: Vec<_> = near_pairs_by(&r, how).iter().copied().map(key).collect();
-            got.sort_unstable();
-            got
-        };
-        let (want, got) = (sorted(Search::OneByOne), sorted(Search::Auto));
-        let must: Vec<_> = want
-            .iter()
-            .copied()
-            .filter(|&(x, i, j, _, _)| {
-                let x = x as usize;
-                let e = Edge { i, j, a: 0, b: 0 };
-                let (hx, hy) = edge_reach(&r, &e);
-                let (a, b) = (r.points[i], r.points[j]);
-                fat_segment_meets_box(a, b, (4.0 * hx, 4.0 * hy), &point_box(&r, x))
-            })
-            .collect();
-        assert!(got.windows(2).all(|w| w[0] != w[1]));
-        assert!(got.iter().all(|q| want.binary_search(q).is_ok()));
-        assert!(must.iter().all(|q| got.binary_search(q).is_ok()));
-        assert!(
-            must.len() >= (teeth / 7) as usize && 4 * got.len() < want.len(),
-            "{} {} {}",
-            must.len(),
-            got.len(),
-            want.len()
-        );
+            r.starts.push(r.points.len());
+        }
+        r
+    }
+
+    /// Where the points and the moved edges of a result gather in a few of the grid's
+    /// cells, the search takes the quadtree: long teeth close together (the first grid
+    /// would list each tooth in hundreds of cells), or short ones in a corner of the
+    /// extent (the first grid lists each in a cell or two, most of them in one); spread
+    /// out, it keeps the grid. Each way it finds pairs whose boxes overlap, once, among
+    /// them every pair whose edge (widened) meets the point's box, the points on the
+    /// teeth's sides among them.
+    #[test]
+    fn crowded_results_are_searched_on_the_tree() {
+        let teeth: u32 = 2_000;
+        let cases = [
+            (comb(teeth, 0.05, 1_000.0, false), false, true),
+            (comb(teeth, 0.05, 10.0, true), true, true),
+            (comb(teeth, 5.0, 10.0, false), true, false),
+        ];
+        for (case, (r, first_fits, tree)) in cases.iter().enumerate() {
+            let moved: Vec<usize> = (0..r.points.len()).filter(|&i| r.moved(i)).collect();
+            let mut edges = Vec::new();
+            r.for_each_moved_edge(&moved, |e| edges.push(e));
+            let boxes: Vec<Box2> = edges
+                .iter()
+                .map(|e| {
+                    let (hx, hy) = edge_reach(r, e);
+                    Box2::around(r.points[e.i], r.points[e.j], (4.0 * hx, 4.0 * hy))
+                })
+                .chain(moved.iter().map(|&i| point_box(r, i)))
+                .collect();
+            let line_of = |k: usize| {
+                let e = &edges[k];
+                let (hx, hy) = edge_reach(r, e);
+                Line {
+                    a: r.points[e.i],
+                    b: r.points[e.j],
+                    pad: (4.0 * hx, 4.0 * hy),
+                }
+            };
+            let most = FIRST_GRID_ENTRIES * boxes.len() + FIRST_GRID_SLACK;
+            let first = Grid::first_at_most(&boxes, edges.len(), line_of, most);
+            assert_eq!(first.is_some(), *first_fits, "case {case}");
+            let index = Index::new(r, &boxes, edges.len(), line_of, Search::Auto);
+            assert_eq!(matches!(index, Index::Tree(_)), *tree, "case {case}");
+            let key = |(x, e): Pair| (x, e.i, e.j, e.a, e.b);
+            let sorted = |how: Search| {
+                let mut got: Vec<_> = near_pairs_by(r, how).iter().copied().map(key).collect();
+                got.sort_unstable();
+                got
+            };
+            let (want, got) = (sorted(Search::OneByOne), sorted(Search::Auto));
+            let must: Vec<_> = want
+                .iter()
+                .copied()
+                .filter(|&(x, i, j, _, _)| {
+                    let e = Edge { i, j, a: 0, b: 0 };
+                    let (hx, hy) = edge_reach(r, &e);
+                    let (a, b) = (r.points[i], r.points[j]);
+                    fat_segment_meets_box(a, b, (4.0 * hx, 4.0 * hy), &point_box(r, x as usize))
+                })
+                .collect();
+            assert!(got.windows(2).all(|w| w[0] != w[1]), "case {case}");
+            assert!(
+                got.iter().all(|q| want.binary_search(q).is_ok()),
+                "case {case}"
+            );
+            assert!(
+                must.iter().all(|q| got.binary_search(q).is_ok()),
+                "case {case}"
+            );
+            assert!(
+                must.len() >= (teeth / 7) as usize,
+                "case {case}: {}",
+                must.len()
+            );
+        }
     }
 
     /// The float first test never calls apart a widened segment and box that meet

@@ -6,8 +6,9 @@
 //! each and the search is quadratic there: 10⁴ long strips across a triangle took
 //! seconds, nearly all of it in tests of points against the edges of their cells (a
 //! star's spikes meeting near its centre, the same). Here the cells follow the points:
-//! a node with more than [`LEAF_POINTS`] of them is cut into four at its centre, so the
-//! leaves are small where the points are dense and large where they are sparse. A
+//! a node with more than [`LEAF_POINTS`] of them is cut into four at its centre (in two
+//! where one side cannot be cut in floats), so the leaves are small where the points
+//! are dense and large where they are sparse. A
 //! moved item is listed in every leaf its footprint may meet: its box overlaps the
 //! leaf's and, for a segment, its widened segment is not clearly apart from it
 //! ([`super::clearly_apart`], a float test that never says apart where they meet).
@@ -15,7 +16,10 @@
 //! The leaves cover the items' extent (the closed quarters of a closed box make it up),
 //! so where a query's footprint meets an item's, at a point of the item's box, some
 //! leaf holds that point: the item is listed there and the query, which visits every
-//! leaf its footprint may meet, finds it.
+//! leaf its footprint may meet, finds it. (The search's exact test of a widened segment
+//! widens the point's box, rounded outward, where the tree's leaves met the segment
+//! widened by its pad: the two differ by less than a float gap, far within the margin
+//! of [`super::clearly_apart`].)
 
 use super::{clearly_apart, Box2};
 use crate::kernel::Point2;
@@ -23,8 +27,9 @@ use crate::kernel::Point2;
 /// A node with more points than this is cut into four.
 const LEAF_POINTS: usize = 8;
 
-/// Nodes are not cut below this depth (points within a few floats of each other, or
-/// equal ones, would otherwise be cut for as long as the floats allow).
+/// Nodes are not cut below this depth (points close to each other for the extent, or
+/// equal ones, would otherwise be cut for as long as the floats allow; a leaf at this
+/// depth is 2⁻⁴⁸ of the extent across).
 const MOST_DEPTH: u32 = 48;
 
 /// No node or no leaf list, in [`Node`].
@@ -51,10 +56,11 @@ pub(super) struct Tree {
 }
 
 /// The centre of `lo..=hi` where it lies strictly between them (else the side cannot be
-/// cut in floats).
+/// cut in floats); of the side between ±`f64::MAX` where it ends at an infinity (boxes
+/// widened outward from points next to `f64::MAX`), so that such a side is cut too.
 fn middle(lo: f64, hi: f64) -> Option<f64> {
-    let m = 0.5 * lo + 0.5 * hi;
-    (lo < m && m < hi && m.is_finite()).then_some(m)
+    let m = 0.5 * lo.max(-f64::MAX) + 0.5 * hi.min(f64::MAX);
+    (lo < m && m < hi).then_some(m)
 }
 
 impl Tree {
@@ -375,6 +381,38 @@ mod tests {
                 assert_eq!(got, want, "round {round}, segment {q}");
             }
         }
+    }
+
+    /// Boxes widened to infinity (from points next to ±`f64::MAX`) still let the tree cut
+    /// their extent, and queries meet every item whose box overlaps them.
+    #[test]
+    fn infinite_extents_are_cut() {
+        let mut below = crate::testing::below(0x7_4ee6);
+        let huge = |k: u64| (k as f64 - 50_150.0) * 3.5e303;
+        let mut boxes: Vec<Box2> = (0..400)
+            .map(|_| {
+                let (x, y, w, h) = (below(100_000), below(100_000), below(300), below(300));
+                Box2 {
+                    x0: huge(x),
+                    x1: huge(x + w),
+                    y0: huge(y),
+                    y1: huge(y + h),
+                }
+            })
+            .collect();
+        boxes[0].x1 = f64::INFINITY;
+        boxes[1].y0 = f64::NEG_INFINITY;
+        boxes[2].x0 = f64::NEG_INFINITY;
+        boxes[3].y1 = f64::INFINITY;
+        let points: Vec<Point2> = (0..2_000)
+            .map(|_| Point2::new(huge(below(100_300)), huge(below(100_300))))
+            .collect();
+        let tree = Tree::new(&points, &boxes, 0, |_| unreachable!(), usize::MAX).expect("no bound");
+        assert!(tree.starts.len() > 100, "{} leaves", tree.starts.len() - 1);
+        let visit = |b: &Box2, q: usize, stamp: &mut [usize], f: &mut dyn FnMut(usize)| {
+            tree.visit(b, q, stamp, f)
+        };
+        assert_visits_every_footprint(&visit, &boxes, &[], &boxes, 1, 0);
     }
 
     /// Past `most` entries there is no tree; with no items, none either.
