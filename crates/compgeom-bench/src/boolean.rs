@@ -972,7 +972,7 @@
 //! 10–13× for 10× n. i_overlay on the spikes: 0.018 s at 10³ (ours 0.017 / 0.014),
 //! more than 120 s at 10⁴ (ours 0.061 / 0.18). The table's rows (instructions a round,
 //! before / after): water xor 133.4 M / 133.1 M, JTS xor 17.06 M / 17.01 M, dissolve
-//! 4.84 M / 4.88 M (+0.9%: code generation of the search, now one copy per index; the
+//! 4.83 M / 4.88 M (+0.9%: code generation of the search, now one copy per index; the
 //! dissolve's search keeps the grid, and its time did not move: 400 calls, median 0.66 /
 //! 0.57–0.66 ms).
 
