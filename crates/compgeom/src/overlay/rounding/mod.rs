@@ -601,13 +601,14 @@ fn near_pairs_indexed(
     how: Search,
 ) -> Scratch<Pair> {
     // An edge's footprint: its segment widened as its box is, by four reaches (looked
-    // at for long edges on the grid, for every edge on the quadtree). A point whose box (four of its reaches and two gaps) misses it is more than four
-    // edge reaches and four of its own from the segment; after nudges (the ends moved
-    // by up to a reach, the point by up to its own) the rounded edge is still more
-    // than two reaches from the point, and the exact edge is within half a reach of
-    // the first rounded one: the point stays strictly on its exact side, so `passes`
-    // holds for the pair, listed or not (as for the boxes, which `meets` may find
-    // touching after a nudge where the side decides).
+    // at for long edges on the grid, for every edge on the quadtree). A point whose box
+    // (four of its reaches and two gaps) misses it is more than four edge reaches and
+    // four of its own from the segment; after nudges (the ends moved by up to a reach,
+    // the point by up to its own) the rounded edge is still more than two reaches from
+    // the point, and the exact edge is within half a reach of the first rounded one:
+    // the point stays strictly on its exact side, so `passes` holds for the pair,
+    // listed or not (as for the boxes, which `meets` may find touching after a nudge
+    // where the side decides). The length of the edge plays no part.
     let line_of = |k: usize| {
         let e = &moved_edges[k];
         let (hx, hy) = edge_reach(r, e);
@@ -1109,10 +1110,10 @@ mod tests {
     /// The near pairs, found one by one, on the grid or on the quadtree, are pairs whose
     /// boxes overlap, once, and among them every pair whose edge (widened) meets the
     /// point's box (on the grid, long edges are listed along their length, and on the
-    /// tree all edges: pairs in their boxes but far from them are not found there): random rings on a small integer grid (shared points, collinear
-    /// runs), around one point with coordinates a few floats apart, at ±1e300, among
-    /// subnormals, near ±`f64::MAX`, and with x and y at scales from 1e-300 to 1e300 in
-    /// one ring (grids of one cell, of a subnormal cell size, cells numbered past 2³²),
+    /// tree all edges: pairs in their boxes but far from them are not found there):
+    /// random rings on a small integer grid (shared points, collinear runs), around one
+    /// point with coordinates a few floats apart, at ±1e300, among subnormals, near
+    /// ±`f64::MAX`, and with x and y at scales from 1e-300 to 1e300 in one ring (grids of one cell, of a subnormal cell size, cells numbered past 2³²),
     /// sometimes with only one or two points moved, the collapsed edges included, and
     /// rings touching at shared vertices.
     #[test]

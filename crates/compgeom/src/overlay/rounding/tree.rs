@@ -8,10 +8,10 @@
 //! star's spikes meeting near its centre, the same). Here the cells follow the points:
 //! a node with more than [`LEAF_POINTS`] of them is cut into four at its centre (in two
 //! where one side cannot be cut in floats), so the leaves are small where the points
-//! are dense and large where they are sparse. A
-//! moved item is listed in every leaf its footprint may meet: its box overlaps the
-//! leaf's and, for a segment, its widened segment is not clearly apart from it
-//! ([`super::clearly_apart`], a float test that never says apart where they meet).
+//! are dense and large where they are sparse. A moved item is listed in every leaf its
+//! footprint may meet: its box overlaps the leaf's and, for a segment, its widened
+//! segment is not clearly apart from it ([`super::clearly_apart`], a float test that
+//! never says apart where they meet).
 //!
 //! The leaves cover the items' extent (the closed quarters of a closed box make it up),
 //! so where a query's footprint meets an item's, at a point of the item's box, some
@@ -24,7 +24,7 @@
 use super::{clearly_apart, Box2};
 use crate::kernel::Point2;
 
-/// A node with more points than this is cut into four.
+/// A node with more points than this is cut (into four, or two).
 const LEAF_POINTS: usize = 8;
 
 /// Nodes are not cut below this depth (points close to each other for the extent, or
@@ -67,7 +67,7 @@ impl Tree {
     /// The tree over `points` (those in the items' extent) for the items with boxes
     /// `boxes`, the first `segments` of them the segments `line_of(k)` widened by their
     /// pads (`boxes[k]` holds that footprint); `None` where the items would be listed
-    /// more than `most` times in all.
+    /// more than `most` times in all, or there are none.
     pub(super) fn new(
         points: &[Point2],
         boxes: &[Box2],
