@@ -1,7 +1,7 @@
 //! A uniform grid over boxes and long segments, for the rounding check's search for
 //! near pairs.
 
-use super::Box2;
+use super::{Box2, ItemIndex};
 use crate::kernel::steps::Steps;
 use crate::kernel::Point2;
 
@@ -290,12 +290,6 @@ impl Grid {
         (x1 - x0).min(y1 - y0) >= LINE_FROM_CELLS
     }
 
-    /// Whether item `k` (a segment) is listed along its length: its box holds many cells
-    /// it does not meet.
-    pub(super) fn is_long(&self, k: usize) -> bool {
-        self.long.get(k).is_some_and(|&l| l)
-    }
-
     /// Calls `f` with cell ranges (as [`Grid::range`] gives them) that together hold
     /// every cell the segment `a b` widened by `pad` meets, where its box spans `whole`
     /// (long, [`Grid::span_is_long`]): those of the boxes of pieces of it, one or two
@@ -436,19 +430,6 @@ impl Grid {
         }
     }
 
-    /// Calls `f` once for each item listed in a cell that box `b` overlaps (every item
-    /// whose footprint meets `b`, and others), or for every item when `b` covers more
-    /// cells than there are items; `stamp[item] == query` marks an item already met by
-    /// this query. (Inlined: called for every point and edge of a result; as a call it
-    /// cost the GEOS-837 dissolve about 1%.)
-    #[inline(always)]
-    pub(super) fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize)) {
-        if !b.overlaps(&self.extent) {
-            return;
-        }
-        self.visit_span(self.range(b), query, stamp, f);
-    }
-
     /// [`Grid::visit`] of the cells `span`.
     #[inline(always)]
     fn visit_span(&self, span: Span, query: usize, stamp: &mut [usize], mut f: impl FnMut(usize)) {
@@ -466,13 +447,34 @@ impl Grid {
         }
         self.visit_cells((x0, x1, y0, y1), query, stamp, &mut f);
     }
+}
+
+impl ItemIndex for Grid {
+    /// Whether item `k` (a segment) is listed along its length: its box holds many cells
+    /// it does not meet.
+    fn is_long(&self, k: usize) -> bool {
+        self.long.get(k).is_some_and(|&l| l)
+    }
+
+    /// Calls `f` once for each item listed in a cell that box `b` overlaps (every item
+    /// whose footprint meets `b`, and others), or for every item when `b` covers more
+    /// cells than there are items; `stamp[item] == query` marks an item already met by
+    /// this query. (Inlined: called for every point and edge of a result; as a call it
+    /// cost the GEOS-837 dissolve about 1%.)
+    #[inline(always)]
+    fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize)) {
+        if !b.overlaps(&self.extent) {
+            return;
+        }
+        self.visit_span(self.range(b), query, stamp, f);
+    }
 
     /// [`Grid::visit`] for the segment `a b` (whose box is `bx`), along it where it is
     /// long: every item whose footprint meets the segment is met (and others), not
     /// every one in its box. `f(item, long)` says whether it was looked up along its
     /// length.
     #[inline(always)]
-    pub(super) fn visit_segment(
+    fn visit_segment(
         &self,
         a: Point2,
         b: Point2,

@@ -788,54 +788,6 @@ trait ItemIndex {
     );
 }
 
-impl ItemIndex for Grid {
-    fn is_long(&self, k: usize) -> bool {
-        Grid::is_long(self, k)
-    }
-
-    #[inline(always)]
-    fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize)) {
-        Grid::visit(self, b, query, stamp, f)
-    }
-
-    #[inline(always)]
-    fn visit_segment(
-        &self,
-        a: Point2,
-        b: Point2,
-        bx: &Box2,
-        query: usize,
-        stamp: &mut [usize],
-        f: impl FnMut(usize, bool),
-    ) {
-        Grid::visit_segment(self, a, b, bx, query, stamp, f)
-    }
-}
-
-impl ItemIndex for Tree {
-    fn is_long(&self, k: usize) -> bool {
-        Tree::is_long(self, k)
-    }
-
-    #[inline(always)]
-    fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize)) {
-        Tree::visit(self, b, query, stamp, f)
-    }
-
-    #[inline(always)]
-    fn visit_segment(
-        &self,
-        a: Point2,
-        b: Point2,
-        bx: &Box2,
-        query: usize,
-        stamp: &mut [usize],
-        f: impl FnMut(usize, bool),
-    ) {
-        Tree::visit_segment(self, a, b, bx, query, stamp, f)
-    }
-}
-
 /// Calls `f(k)` for each box `boxes[k]` that overlaps `b`, in order. The tests of 64
 /// boxes at a time run without branches, into a mask (most fail, but which ones is a
 /// coin toss for the branch predictor, and one by one they were most of the search).

@@ -21,7 +21,7 @@
 //! widened by its pad: the two differ by less than a float gap, far within the margin
 //! of [`super::clearly_apart`].)
 
-use super::{clearly_apart, Box2};
+use super::{clearly_apart, Box2, ItemIndex};
 use crate::kernel::Point2;
 
 /// A node with more points than this is cut (into four, or two).
@@ -188,12 +188,6 @@ impl Tree {
         })
     }
 
-    /// Whether item `k` is a segment, listed where its widened segment may meet a leaf
-    /// (the search then tests it against a point's box exactly).
-    pub(super) fn is_long(&self, k: usize) -> bool {
-        k < self.segments
-    }
-
     /// Calls `f` for each item listed in a leaf that `meets` may meet (given the leaf's
     /// box), once per `query` (`stamp` as in [`super::grid::Grid::visit`]).
     #[inline(always)]
@@ -230,16 +224,24 @@ impl Tree {
             }
         }
     }
+}
+
+impl ItemIndex for Tree {
+    /// Whether item `k` is a segment, listed where its widened segment may meet a leaf
+    /// (the search then tests it against a point's box exactly).
+    fn is_long(&self, k: usize) -> bool {
+        k < self.segments
+    }
 
     /// Calls `f` once for each item listed in a leaf box `b` overlaps: every item whose
     /// footprint meets `b`, and others (as [`super::grid::Grid::visit`]).
-    pub(super) fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize)) {
+    fn visit(&self, b: &Box2, query: usize, stamp: &mut [usize], f: impl FnMut(usize)) {
         self.visit_by(|leaf| leaf.overlaps(b), query, stamp, f);
     }
 
     /// [`Tree::visit`] for the segment `a b` (whose box is `bx`): the leaves it may meet.
     /// `f(item, true)`: the search tests the segment against the item exactly.
-    pub(super) fn visit_segment(
+    fn visit_segment(
         &self,
         a: Point2,
         b: Point2,
